@@ -1,0 +1,111 @@
+// The clip model: a skeleton and per-joint key tracks. Plain data, no file
+// format in it; readers fill it, interpolators and metrics consume it.
+//
+// A joint's local transform at time t is  T(translation(t)) · R(rotation(t)),
+// where rotation(t) is the joint's FULL local rotation in its parent's frame (for
+// FBX this already contains pre-/post-rotations and the rest orientation; for BVH
+// it is the product of the rotation channels). translation(t) is the joint's
+// translation track where it has one, else its rest offset.
+#pragma once
+
+#include "rotinterp/core/result.h"
+#include "rotinterp/core/rotation.h"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace rotinterp {
+
+// Rotation keys of one joint.
+// Invariants (checked by validate()):
+//  1. times.size() == keys.size() ≥ 1;
+//  2. times are finite and strictly increasing;
+//  3. keys are finite unit quaternions (|q| − 1 < 1e-9);
+//  4. sign continuity: keys[k].dot(keys[k−1]) ≥ 0 — interpolators may rely on it.
+struct RotationTrack {
+  std::vector<double> times;  // seconds
+  std::vector<Quat> keys;
+
+  Status validate() const;
+  // Normalizes every key and flips signs so that invariant 4 holds.
+  void make_sign_continuous();
+};
+
+// Translation keys of one joint. Invariants: sizes equal ≥ 1, times finite and
+// strictly increasing, keys finite.
+struct TranslationTrack {
+  std::vector<double> times;  // seconds
+  std::vector<Vec3> keys;     // clip units
+
+  Status validate() const;
+};
+
+// BVH channel kinds, as in a CHANNELS line.
+enum class Channel : std::uint8_t { Xposition, Yposition, Zposition, Xrotation, Yrotation, Zrotation };
+const char* channel_name(Channel c);  // "Xposition", …
+
+struct Joint {
+  std::string name;
+  int parent = -1;                       // index into Skeleton::joints, −1 for a root
+  Vec3 offset = Vec3::Zero();            // rest translation in the parent's frame
+  Quat rest_rotation = Quat::Identity(); // rest local rotation (identity for BVH)
+  std::vector<Channel> channels;         // BVH channel layout; empty for other sources
+};
+
+// A BVH "End Site": a leaf point with an offset from its joint and no channels.
+struct EndSite {
+  int parent = -1;  // joint index
+  Vec3 offset = Vec3::Zero();
+  std::string name;  // e.g. "EndSite_LeftHand"; informational
+};
+
+// Invariants (checked by validate()):
+//  1. at least one joint; names non-empty and unique;
+//  2. parent < own index (parents come first; depth-first order for BVH);
+//  3. offsets finite, rest rotations finite unit quaternions;
+//  4. End Site parents are valid joint indices.
+struct Skeleton {
+  std::vector<Joint> joints;
+  std::vector<EndSite> end_sites;
+
+  int find(std::string_view name) const;  // joint index or −1
+  Status validate() const;
+};
+
+struct Clip {
+  std::string name;           // animation name (or the file's stem)
+  Skeleton skeleton;
+  // One track per joint (same order as skeleton.joints). A joint without keys in
+  // the source has a single key: its rest rotation.
+  std::vector<RotationTrack> rotations;
+  // One entry per joint; empty where the joint has no translation keys.
+  std::vector<std::optional<TranslationTrack>> translations;
+  double frame_time = 0.0;    // seconds per frame of the source (BVH Frame Time), 0 if none
+  double unit_scale = 1.0;    // metres per clip unit where the source says so (FBX cm → 0.01)
+  std::string source_format;  // "bvh", "fbx", … (informational)
+
+  // Invariants: skeleton valid; one rotation and one translation entry per joint;
+  // every track valid.
+  Status validate() const;
+  // Earliest and latest key time over all tracks.
+  double start_time() const;
+  double end_time() const;
+  // Frames of a uniformly sampled source: round((end − start)/frame_time) + 1, or
+  // the largest key count if frame_time is 0.
+  std::size_t frame_count() const;
+};
+
+// Forward kinematics: world rotation and position of every joint, given local
+// rotations and translations (one per joint). Optionally End Site positions.
+struct WorldPose {
+  std::vector<Quat> rotation;
+  std::vector<Vec3> position;
+  std::vector<Vec3> end_site_position;
+};
+void forward_kinematics(const Skeleton& skeleton, const std::vector<Quat>& local_rotation,
+                        const std::vector<Vec3>& local_translation, WorldPose& out);
+
+}  // namespace rotinterp

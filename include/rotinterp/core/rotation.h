@@ -1,0 +1,168 @@
+// Rotation core: orientations, rotations and the maps between them.
+//
+// Conventions (stated once, used everywhere in rotinterp):
+//  * Quaternions are Hamilton quaternions q = w + xi + yj + zk, multiplied with
+//    Hamilton's rule (ij = k). Storage is Eigen's: coeffs() = (x, y, z, w), but
+//    the constructor Quat(w, x, y, z) takes w first.
+//  * Vectors are column vectors; a quaternion acts on a vector as q v q⁻¹, i.e.
+//    as the matrix q.toRotationMatrix() applied on the left.
+//  * An ORIENTATION (Lee) is a unit quaternion `Quat`; q and −q are the same
+//    orientation. A ROTATION (a displacement, Lee) is a `RotVec`: a vector in R³
+//    whose direction is the axis and whose length is the angle in radians
+//    (right-hand rule). exp maps v ↦ q = (cos(|v|/2), sin(|v|/2)·v̂).
+//  * Angular velocity ω is in the fixed (world, "spatial") frame: q̇ = ½ ω̃ q with
+//    ω̃ = (0, ω). Displacement "in the fixed frame" is q′q⁻¹ (applied on the left),
+//    "in the moving frame" q⁻¹q′ (applied on the right).
+//  * Non-unit input quaternions are normalized; a zero or non-finite quaternion is
+//    read as the identity, and a non-finite vector as the zero rotation, so that no
+//    NaN ever leaves these functions.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace rotinterp {
+
+// Scalar exp/log stay usable inside the namespace next to the rotation ones.
+using std::exp;
+using std::log;
+
+using Vec3 = Eigen::Vector3d;
+using Mat3 = Eigen::Matrix3d;
+using Quat = Eigen::Quaterniond;
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kTwoPi = 2.0 * kPi;
+
+// Below this angle (rad) exp uses the Taylor form of sin(θ/2)/θ. ⁴√ε ≈ 1.2e-4 is
+// where the two-term series 1/2 − θ²/48 is exact to double precision (the next
+// term, θ⁴/3840, is below ε/2 there) — Grassia §3.
+inline const double kExpTaylorThreshold = std::pow(std::numeric_limits<double>::epsilon(), 0.25);
+
+// Below this angle (rad) the derivative and angular-velocity coefficients use their
+// series: the closed forms cancel, losing about ε/θ² relatively (2e-12 at 1e-2),
+// while three series terms are exact to ~1e-19 there.
+constexpr double kSeriesThreshold = 1e-2;
+
+// A rotation (displacement) as a rotation vector: axis · angle.
+class RotVec {
+ public:
+  RotVec() : v_(Vec3::Zero()) {}
+  explicit RotVec(const Vec3& v) : v_(v) {}
+  RotVec(double x, double y, double z) : v_(x, y, z) {}
+  static RotVec from_axis_angle(const Vec3& axis, double angle) { return RotVec(axis.normalized() * angle); }
+
+  const Vec3& vec() const { return v_; }
+  double angle() const { return v_.norm(); }  // radians, ≥ 0
+  double x() const { return v_.x(); }
+  double y() const { return v_.y(); }
+  double z() const { return v_.z(); }
+
+  RotVec operator-() const { return RotVec(-v_); }
+  RotVec operator*(double s) const { return RotVec(v_ * s); }  // scale the angle
+  RotVec operator/(double s) const { return RotVec(v_ / s); }
+  friend RotVec operator*(double s, const RotVec& r) { return r * s; }
+  // Sum/difference of rotation vectors: a tangent-space (Lie algebra) operation,
+  // NOT composition of rotations (use compose()).
+  RotVec operator+(const RotVec& o) const { return RotVec(v_ + o.v_); }
+  RotVec operator-(const RotVec& o) const { return RotVec(v_ - o.v_); }
+
+ private:
+  Vec3 v_;
+};
+
+// ---- basic helpers ----------------------------------------------------------
+
+// q / |q|; the identity for a zero or non-finite q.
+Quat normalized_or_identity(const Quat& q);
+// ±q, whichever is in the hemisphere of ref (dot ≥ 0).
+Quat align_to(const Quat& q, const Quat& ref);
+// The skew matrix [v]× (hat) and its inverse (vee).
+Mat3 hat(const Vec3& v);
+Vec3 vee(const Mat3& m);
+
+// ---- exp and log --------------------------------------------------------------
+
+// R³ → S³. Smooth everywhere, Taylor branch below kExpTaylorThreshold.
+Quat exp(const RotVec& r);
+// S³ → R³ with |v| ≤ π, via atan2 (no acos). Exact near the identity. For exactly
+// 180° (w = 0) the result is the same for q and −q: the axis whose first non-zero
+// component is positive.
+RotVec log(const Quat& q);
+// Grassia §4.2: the preimage of ±q nearest to `previous` among v̂·(θ + 2πk). Lets a
+// sequence of logs follow spins past π and 2π without jumps. For q = identity the
+// candidates are the shells |v| = 2πk; the one nearest `previous` is returned.
+RotVec log_nearest(const Quat& q, const RotVec& previous);
+// Grassia §3 dynamic reparameterization: for |v| > π return (1 − 2π/|v|)·v, the
+// same rotation further from the singular shell |v| = 2π; otherwise v unchanged.
+RotVec reparameterize(const RotVec& r);
+
+// ---- Lee's operations ----------------------------------------------------------
+
+// exp(a)·exp(b) as a rotation vector: a applied after b.
+RotVec compose(const RotVec& a, const RotVec& b);
+// Displacement from q to q2 in the fixed frame: log(q2 q⁻¹), so q2 = exp(d)·q.
+RotVec displacement_fixed(const Quat& q, const Quat& q2);
+// Displacement from q to q2 in the moving (body) frame: log(q⁻¹ q2), so q2 = q·exp(d).
+RotVec displacement_moving(const Quat& q, const Quat& q2);
+// exp(r)·q: rotate q by r about fixed-frame axes.
+Quat apply_fixed(const RotVec& r, const Quat& q);
+// q·exp(r): rotate q by r about its own (moving) axes.
+Quat apply_moving(const Quat& q, const RotVec& r);
+// Geodesic distance in radians, in [0, π]: 2·atan2(|a − b|, |a + b|) after hemisphere
+// alignment (the 2·acos|a·b| form reads float round-off as ~0.05°).
+double angular_distance(const Quat& a, const Quat& b);
+
+// ---- derivatives (Grassia §3) -------------------------------------------------
+
+// ∂q/∂v, rows (w, x, y, z), columns (v_x, v_y, v_z).
+Eigen::Matrix<double, 4, 3> dq_dv(const Vec3& v);
+// ∂R/∂v_i for i = 0, 1, 2, R = exp(v) as a rotation matrix (chain rule through q).
+std::array<Mat3, 3> dR_dv(const Vec3& v);
+
+// ---- angular velocity -----------------------------------------------------------
+
+// v̇ for a rotation vector v whose quaternion moves as q̇ = ½ ω̃ q (ω in the fixed
+// frame): v̇ = ω − ½ v×ω + c(θ)·v×(v×ω), c = (1 − (θ/2)cot(θ/2))/θ², with the series
+// c = 1/12 + θ²/720 + θ⁴/30240 below kSeriesThreshold. Grassia writes it with
+// η = (ω·v/θ)(cot(θ/2) − 2/θ) = −2c(ω·v), whose small-angle limit is
+// −(ω·v)(60 + θ²)/360 (the paper's η₀ has the opposite sign). Singular at |v| = 2π:
+// reparameterize() first.
+Vec3 rotvec_derivative(const Vec3& v, const Vec3& omega);
+// Constant fixed-frame angular velocity taking q0 to q1 in dt: log(q1 q0⁻¹)/dt.
+// Returns zero for dt ≤ 0.
+Vec3 angular_velocity(const Quat& q0, const Quat& q1, double dt);
+// exp(ω·dt)·q: integrate a constant fixed-frame angular velocity over dt.
+Quat integrate_angular_velocity(const Quat& q, const Vec3& omega, double dt);
+
+// ---- swing and twist ----------------------------------------------------------------
+
+// q = swing · twist, twist a rotation about `axis` (in the moving frame), swing a
+// rotation about an axis perpendicular to it. For a pure 180° swing the twist is
+// the identity.
+struct SwingTwist {
+  Quat swing;
+  Quat twist;
+};
+SwingTwist swing_twist(const Quat& q, const Vec3& axis);
+
+// Grassia §5: a two-DOF swing v = α·ŝ + β·t̂ in the plane perpendicular to a twist
+// axis, with its chain rule and the elliptical joint-limit test.
+struct SwingParam {
+  Vec3 s;  // unit, ⟂ t and the twist axis
+  Vec3 t;  // unit
+  // Builds an orthonormal pair perpendicular to `twist_axis`.
+  static SwingParam perpendicular_to(const Vec3& twist_axis);
+  Vec3 vector(double alpha, double beta) const { return alpha * s + beta * t; }
+  Quat orientation(double alpha, double beta) const { return rotinterp::exp(RotVec(vector(alpha, beta))); }
+  // ∂q/∂(α, β) = ∂q/∂v · [ŝ t̂].
+  Eigen::Matrix<double, 4, 2> dq_dswing(double alpha, double beta) const;
+};
+// (α/a)² + (β/b)² ≤ 1: inside the elliptical swing limit with semi-axes a, b > 0.
+bool within_swing_limit(double alpha, double beta, double a, double b);
+
+}  // namespace rotinterp

@@ -1,0 +1,54 @@
+// The interpolator interface and the registry of methods.
+//
+// An interpolator is built once from one joint's RotationTrack (strictly
+// increasing times, unit, sign-continuous keys — see clip/clip.h) and evaluated
+// at any time; times outside [t₀, tₙ] are clamped. Every method passes through
+// every key, returns unit quaternions and never NaN.
+#pragma once
+
+#include "rotinterp/clip/clip.h"
+#include "rotinterp/core/result.h"
+#include "rotinterp/core/rotation.h"
+
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace rotinterp {
+
+class Interpolator {
+ public:
+  virtual ~Interpolator() = default;
+
+  // Orientation at time t (seconds), clamped to the key range.
+  virtual Quat evaluate(double t) const = 0;
+  // Batch form: out[i] = evaluate(t[i]). Methods override it when a sorted batch
+  // can be done faster (segment search once per run of times).
+  virtual void evaluate(const double* t, std::size_t n, Quat* out) const;
+
+  // Fixed-frame angular velocity (rad/s) at t, where the method has it in closed form.
+  virtual bool has_angular_velocity() const { return false; }
+  virtual Vec3 angular_velocity(double t) const;
+};
+
+struct MethodInfo {
+  std::string name;         // what --method takes
+  std::string description;  // one line
+  int continuity;           // 0, 1 or 2: C⁰, C¹, C² (in orientation, at keys)
+  bool coordinate_invariant;  // left/right multiplying all keys by a fixed rotation maps the curve alike
+  std::function<Result<std::unique_ptr<Interpolator>>(const RotationTrack&)> make;
+};
+
+// All methods, in a stable order.
+const std::vector<MethodInfo>& methods();
+// The method called `name`, or nullptr.
+const MethodInfo* find_method(std::string_view name);
+// Comma-separated names of all methods, for error messages.
+std::string method_names();
+// Builds `method` on `track` (validated first).
+Result<std::unique_ptr<Interpolator>> make_interpolator(std::string_view method, const RotationTrack& track);
+
+}  // namespace rotinterp

@@ -1,0 +1,36 @@
+// rotinterp methods [--json]: the registered interpolators.
+#include "common.h"
+#include "rotinterp/interp/interpolator.h"
+
+#include <fmt/core.h>
+
+#include <nlohmann/json.hpp>
+
+#include <memory>
+
+namespace rotinterp::cli {
+
+void add_methods_command(CLI::App& app, int& exit_code) {
+  auto* sub = app.add_subcommand("methods", "List the interpolation methods: continuity and coordinate invariance");
+  auto json = std::make_shared<bool>(false);
+  sub->add_flag("--json", *json, "Print JSON instead of a table");
+  sub->callback([json, &exit_code] {
+    if (*json) {
+      nlohmann::json out = nlohmann::json::array();
+      for (const MethodInfo& m : methods())
+        out.push_back({{"name", m.name},
+                       {"description", m.description},
+                       {"continuity", "C" + std::to_string(m.continuity)},
+                       {"coordinate_invariant", m.coordinate_invariant}});
+      fmt::print("{}\n", out.dump(2));
+    } else {
+      fmt::print("{:<8} {:<10} {:<10} {}\n", "method", "continuity", "invariant", "description");
+      for (const MethodInfo& m : methods())
+        fmt::print("{:<8} C{:<9} {:<10} {}\n", m.name, m.continuity, m.coordinate_invariant ? "yes" : "no",
+                   m.description);
+    }
+    exit_code = kExitOk;
+  });
+}
+
+}  // namespace rotinterp::cli

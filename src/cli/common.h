@@ -1,0 +1,31 @@
+// Shared plumbing of the subcommands: exit codes, error lines, progress.
+#pragma once
+
+#include "rotinterp/core/progress.h"
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+#include <string_view>
+
+namespace rotinterp::cli {
+
+// Exit codes (README "Exit codes").
+constexpr int kExitOk = 0;
+constexpr int kExitFailure = 1;  // bad input or a failed run
+constexpr int kExitUsage = 2;    // the command line itself is wrong
+constexpr int kExitPartial = 3;  // eval: some inputs failed, the rest were written
+
+// Prints "rotinterp: <message>" on stderr and returns kExitFailure.
+int fail(std::string_view message);
+
+// A progress reporter that draws "label  done/total" on stderr when stderr is a
+// terminal and quiet is false; otherwise an empty function.
+ProgressFn make_progress(std::string label, bool quiet);
+// Ends the progress line (if one was drawn).
+void end_progress(bool quiet);
+
+// Each subcommand adds itself to `app`; when it runs, it stores its exit code.
+void add_methods_command(CLI::App& app, int& exit_code);
+
+}  // namespace rotinterp::cli

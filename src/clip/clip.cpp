@@ -1,0 +1,158 @@
+#include "rotinterp/clip/clip.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <string>
+
+namespace rotinterp {
+
+namespace {
+
+template <class Keys>
+Status validate_times(const std::vector<double>& times, const Keys& keys) {
+  if (times.empty()) return make_error("track has no keys");
+  if (times.size() != keys.size()) return make_error("track has different numbers of times and keys");
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    if (!std::isfinite(times[k])) return make_error("key " + std::to_string(k) + " has a non-finite time");
+    if (k > 0 && !(times[k] > times[k - 1]))
+      return make_error("key times are not strictly increasing at key " + std::to_string(k));
+  }
+  return Ok{};
+}
+
+}  // namespace
+
+Status RotationTrack::validate() const {
+  if (Status s = validate_times(times, keys); !s) return s;
+  for (std::size_t k = 0; k < keys.size(); ++k) {
+    if (!keys[k].coeffs().allFinite()) return make_error("rotation key " + std::to_string(k) + " is not finite");
+    if (std::abs(keys[k].norm() - 1.0) > 1e-9) return make_error("rotation key " + std::to_string(k) + " is not unit");
+    if (k > 0 && keys[k].dot(keys[k - 1]) < 0.0)
+      return make_error("rotation key " + std::to_string(k) + " is not sign-continuous with the previous key");
+  }
+  return Ok{};
+}
+
+void RotationTrack::make_sign_continuous() {
+  for (std::size_t k = 0; k < keys.size(); ++k) {
+    keys[k] = normalized_or_identity(keys[k]);
+    if (k > 0) keys[k] = align_to(keys[k], keys[k - 1]);
+  }
+}
+
+Status TranslationTrack::validate() const {
+  if (Status s = validate_times(times, keys); !s) return s;
+  for (std::size_t k = 0; k < keys.size(); ++k)
+    if (!keys[k].allFinite()) return make_error("translation key " + std::to_string(k) + " is not finite");
+  return Ok{};
+}
+
+const char* channel_name(Channel c) {
+  switch (c) {
+    case Channel::Xposition: return "Xposition";
+    case Channel::Yposition: return "Yposition";
+    case Channel::Zposition: return "Zposition";
+    case Channel::Xrotation: return "Xrotation";
+    case Channel::Yrotation: return "Yrotation";
+    case Channel::Zrotation: return "Zrotation";
+  }
+  return "?";
+}
+
+int Skeleton::find(std::string_view name) const {
+  for (std::size_t i = 0; i < joints.size(); ++i)
+    if (joints[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+Status Skeleton::validate() const {
+  if (joints.empty()) return make_error("skeleton has no joints");
+  std::set<std::string_view> names;
+  for (std::size_t i = 0; i < joints.size(); ++i) {
+    const Joint& j = joints[i];
+    if (j.name.empty()) return make_error("joint " + std::to_string(i) + " has no name");
+    if (!names.insert(j.name).second) return make_error("joint name '" + j.name + "' is used twice");
+    if (j.parent >= static_cast<int>(i) || j.parent < -1)
+      return make_error("joint '" + j.name + "' does not come after its parent");
+    if (!j.offset.allFinite()) return make_error("joint '" + j.name + "' has a non-finite offset");
+    if (!j.rest_rotation.coeffs().allFinite() || std::abs(j.rest_rotation.norm() - 1.0) > 1e-9)
+      return make_error("joint '" + j.name + "' has a rest rotation that is not a unit quaternion");
+  }
+  for (const EndSite& e : end_sites) {
+    if (e.parent < 0 || e.parent >= static_cast<int>(joints.size()))
+      return make_error("End Site '" + e.name + "' has no valid joint");
+    if (!e.offset.allFinite()) return make_error("End Site '" + e.name + "' has a non-finite offset");
+  }
+  return Ok{};
+}
+
+Status Clip::validate() const {
+  if (Status s = skeleton.validate(); !s) return s;
+  const std::size_t n = skeleton.joints.size();
+  if (rotations.size() != n) return make_error("clip has " + std::to_string(rotations.size()) +
+                                               " rotation tracks for " + std::to_string(n) + " joints");
+  if (translations.size() != n) return make_error("clip has " + std::to_string(translations.size()) +
+                                                  " translation entries for " + std::to_string(n) + " joints");
+  for (std::size_t i = 0; i < n; ++i) {
+    if (Status s = rotations[i].validate(); !s)
+      return make_error("joint '" + skeleton.joints[i].name + "': " + s.error());
+    if (translations[i])
+      if (Status s = translations[i]->validate(); !s)
+        return make_error("joint '" + skeleton.joints[i].name + "': " + s.error());
+  }
+  if (!std::isfinite(frame_time) || frame_time < 0.0) return make_error("clip frame time is not a positive number");
+  return Ok{};
+}
+
+double Clip::start_time() const {
+  double t = INFINITY;
+  for (const auto& r : rotations)
+    if (!r.times.empty()) t = std::min(t, r.times.front());
+  for (const auto& tr : translations)
+    if (tr && !tr->times.empty()) t = std::min(t, tr->times.front());
+  return std::isfinite(t) ? t : 0.0;
+}
+
+double Clip::end_time() const {
+  double t = -INFINITY;
+  for (const auto& r : rotations)
+    if (!r.times.empty()) t = std::max(t, r.times.back());
+  for (const auto& tr : translations)
+    if (tr && !tr->times.empty()) t = std::max(t, tr->times.back());
+  return std::isfinite(t) ? t : 0.0;
+}
+
+std::size_t Clip::frame_count() const {
+  if (frame_time > 0.0) return static_cast<std::size_t>(std::llround((end_time() - start_time()) / frame_time)) + 1;
+  std::size_t n = 0;
+  for (const auto& r : rotations) n = std::max(n, r.times.size());
+  for (const auto& tr : translations)
+    if (tr) n = std::max(n, tr->times.size());
+  return n;
+}
+
+void forward_kinematics(const Skeleton& skeleton, const std::vector<Quat>& local_rotation,
+                        const std::vector<Vec3>& local_translation, WorldPose& out) {
+  const std::size_t n = skeleton.joints.size();
+  ROTINTERP_ASSERT(local_rotation.size() == n && local_translation.size() == n);
+  out.rotation.resize(n);
+  out.position.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const int p = skeleton.joints[i].parent;
+    if (p < 0) {
+      out.rotation[i] = local_rotation[i];
+      out.position[i] = local_translation[i];
+    } else {
+      out.rotation[i] = out.rotation[p] * local_rotation[i];
+      out.position[i] = out.position[p] + out.rotation[p] * local_translation[i];
+    }
+  }
+  out.end_site_position.resize(skeleton.end_sites.size());
+  for (std::size_t e = 0; e < skeleton.end_sites.size(); ++e) {
+    const EndSite& s = skeleton.end_sites[e];
+    out.end_site_position[e] = out.position[s.parent] + out.rotation[s.parent] * s.offset;
+  }
+}
+
+}  // namespace rotinterp

@@ -1,0 +1,233 @@
+#include "rotinterp/core/rotation.h"
+
+#include <cmath>
+
+namespace rotinterp {
+
+namespace {
+
+bool finite(const Vec3& v) { return v.allFinite(); }
+
+// sin(θ/2)/θ, the factor that maps v to the vector part of exp(v).
+double sinc_half(double theta) {
+  if (theta < kExpTaylorThreshold) return 0.5 - theta * theta / 48.0;
+  return std::sin(0.5 * theta) / theta;
+}
+
+}  // namespace
+
+Quat normalized_or_identity(const Quat& q) {
+  const double n = q.norm();
+  if (!(n > 0.0) || !std::isfinite(n)) return Quat::Identity();
+  return Quat(q.w() / n, q.x() / n, q.y() / n, q.z() / n);
+}
+
+Quat align_to(const Quat& q, const Quat& ref) {
+  return q.dot(ref) < 0.0 ? Quat(-q.w(), -q.x(), -q.y(), -q.z()) : q;
+}
+
+Mat3 hat(const Vec3& v) {
+  Mat3 m;
+  m << 0.0, -v.z(), v.y(),  //
+      v.z(), 0.0, -v.x(),   //
+      -v.y(), v.x(), 0.0;
+  return m;
+}
+
+Vec3 vee(const Mat3& m) { return Vec3(m(2, 1) - m(1, 2), m(0, 2) - m(2, 0), m(1, 0) - m(0, 1)) * 0.5; }
+
+Quat exp(const RotVec& r) {
+  const Vec3& v = r.vec();
+  if (!finite(v)) return Quat::Identity();
+  const double theta = v.norm();
+  const double s = sinc_half(theta);
+  Quat q(std::cos(0.5 * theta), s * v.x(), s * v.y(), s * v.z());
+  // For large θ, cos/sin are each correct to an ulp; renormalizing keeps |q| = 1 exactly enough.
+  return q.normalized();
+}
+
+RotVec log(const Quat& q_in) {
+  Quat q = normalized_or_identity(q_in);
+  Vec3 xyz = q.vec();
+  double w = q.w();
+  // Canonical sign: w ≥ 0, and at w = 0 the first non-zero vector component positive,
+  // so q and −q (the same orientation) give the same vector.
+  bool flip = w < 0.0;
+  if (w == 0.0) {
+    for (int i = 0; i < 3; ++i) {
+      if (xyz[i] != 0.0) {
+        flip = xyz[i] < 0.0;
+        break;
+      }
+    }
+  }
+  if (flip) {
+    w = -w;
+    xyz = -xyz;
+  }
+  const double s = xyz.norm();
+  if (s == 0.0) return RotVec();
+  // θ = 2·atan2(s, w) is accurate for every s; θ/s → 2/w smoothly as s → 0.
+  const double theta = 2.0 * std::atan2(s, w);
+  return RotVec(xyz * (theta / s));
+}
+
+RotVec log_nearest(const Quat& q, const RotVec& previous) {
+  const Vec3& p = previous.vec();
+  const RotVec principal = log(q);
+  if (!finite(p)) return principal;
+  const double theta = principal.angle();
+  if (theta == 0.0) {
+    // Identity: candidates are the shells |v| = 2πk in any direction.
+    const double pn = p.norm();
+    if (pn == 0.0) return principal;
+    const double k = std::round(pn / kTwoPi);
+    return RotVec(p * (k * kTwoPi / pn));
+  }
+  const Vec3 axis = principal.vec() / theta;
+  // Candidates v̂·(θ + 2πk) lie on one line; the nearest to p is the one nearest
+  // p's projection on it.
+  const double along = p.dot(axis);
+  const double k = std::round((along - theta) / kTwoPi);
+  return RotVec(axis * (theta + k * kTwoPi));
+}
+
+RotVec reparameterize(const RotVec& r) {
+  const double theta = r.angle();
+  if (!(theta > kPi) || !std::isfinite(theta)) return r;
+  return RotVec(r.vec() * (1.0 - kTwoPi / theta));
+}
+
+RotVec compose(const RotVec& a, const RotVec& b) { return log(exp(a) * exp(b)); }
+
+RotVec displacement_fixed(const Quat& q, const Quat& q2) {
+  return log(normalized_or_identity(q2) * normalized_or_identity(q).conjugate());
+}
+
+RotVec displacement_moving(const Quat& q, const Quat& q2) {
+  return log(normalized_or_identity(q).conjugate() * normalized_or_identity(q2));
+}
+
+Quat apply_fixed(const RotVec& r, const Quat& q) { return (exp(r) * normalized_or_identity(q)).normalized(); }
+
+Quat apply_moving(const Quat& q, const RotVec& r) { return (normalized_or_identity(q) * exp(r)).normalized(); }
+
+double angular_distance(const Quat& a_in, const Quat& b_in) {
+  const Eigen::Vector4d a = normalized_or_identity(a_in).coeffs();
+  Eigen::Vector4d b = normalized_or_identity(b_in).coeffs();
+  if (a.dot(b) < 0.0) b = -b;
+  return 2.0 * std::atan2((a - b).norm(), (a + b).norm());
+}
+
+Eigen::Matrix<double, 4, 3> dq_dv(const Vec3& v) {
+  Eigen::Matrix<double, 4, 3> J;
+  if (!finite(v)) return J.setZero();
+  const double theta = v.norm();
+  const double s = sinc_half(theta);
+  // d(sin(θ/2)/θ)/dθ / θ: series below kSeriesThreshold (see header).
+  double ds_over_theta;
+  if (theta < kSeriesThreshold) {
+    const double t2 = theta * theta;
+    ds_over_theta = -1.0 / 24.0 + t2 / 960.0 - t2 * t2 / 107520.0;
+  } else {
+    ds_over_theta = (0.5 * theta * std::cos(0.5 * theta) - std::sin(0.5 * theta)) / (theta * theta * theta);
+  }
+  J.row(0) = -0.5 * s * v.transpose();
+  J.bottomRows<3>() = s * Mat3::Identity() + ds_over_theta * v * v.transpose();
+  return J;
+}
+
+std::array<Mat3, 3> dR_dv(const Vec3& v) {
+  const Quat q = exp(RotVec(v));
+  const double w = q.w(), x = q.x(), y = q.y(), z = q.z();
+  // ∂R/∂(w, x, y, z) of R = [[1−2(y²+z²), 2(xy−wz), 2(xz+wy)], …] (Grassia eq. 3).
+  std::array<Mat3, 4> dR_dq;
+  dR_dq[0] << 0, -2 * z, 2 * y,  //
+      2 * z, 0, -2 * x,          //
+      -2 * y, 2 * x, 0;
+  dR_dq[1] << 0, 2 * y, 2 * z,  //
+      2 * y, -4 * x, -2 * w,    //
+      2 * z, 2 * w, -4 * x;
+  dR_dq[2] << -4 * y, 2 * x, 2 * w,  //
+      2 * x, 0, 2 * z,               //
+      -2 * w, 2 * z, -4 * y;
+  dR_dq[3] << -4 * z, -2 * w, 2 * x,  //
+      2 * w, -4 * z, 2 * y,           //
+      2 * x, 2 * y, 0;
+  const Eigen::Matrix<double, 4, 3> J = dq_dv(v);
+  std::array<Mat3, 3> out;
+  for (int i = 0; i < 3; ++i) {
+    out[i] = J(0, i) * dR_dq[0] + J(1, i) * dR_dq[1] + J(2, i) * dR_dq[2] + J(3, i) * dR_dq[3];
+  }
+  return out;
+}
+
+Vec3 rotvec_derivative(const Vec3& v, const Vec3& omega) {
+  if (!finite(v) || !finite(omega)) return Vec3::Zero();
+  const double theta = v.norm();
+  double c;
+  if (theta < kSeriesThreshold) {
+    const double t2 = theta * theta;
+    c = 1.0 / 12.0 + t2 / 720.0 + t2 * t2 / 30240.0;
+  } else {
+    const double half = 0.5 * theta;
+    c = (1.0 - half * std::cos(half) / std::sin(half)) / (theta * theta);
+  }
+  const Vec3 r = omega - 0.5 * v.cross(omega) + c * v.cross(v.cross(omega));
+  return r.allFinite() ? r : Vec3::Zero();
+}
+
+Vec3 angular_velocity(const Quat& q0, const Quat& q1, double dt) {
+  if (!(dt > 0.0) || !std::isfinite(dt)) return Vec3::Zero();
+  const Vec3 w = displacement_fixed(q0, q1).vec() / dt;
+  return w.allFinite() ? w : Vec3::Zero();
+}
+
+Quat integrate_angular_velocity(const Quat& q, const Vec3& omega, double dt) {
+  return apply_fixed(RotVec(omega * dt), q);
+}
+
+SwingTwist swing_twist(const Quat& q_in, const Vec3& axis_in) {
+  const Quat q = normalized_or_identity(q_in);
+  const double an = axis_in.norm();
+  if (!(an > 0.0) || !std::isfinite(an)) return {q, Quat::Identity()};
+  const Vec3 axis = axis_in / an;
+  const Vec3 proj = q.vec().dot(axis) * axis;
+  Quat twist(q.w(), proj.x(), proj.y(), proj.z());
+  const double tn = twist.norm();
+  if (tn < 1e-300) {
+    twist = Quat::Identity();  // a pure 180° swing: no twist
+  } else {
+    twist.coeffs() /= tn;
+  }
+  Quat swing = (q * twist.conjugate()).normalized();
+  return {swing, twist};
+}
+
+SwingParam SwingParam::perpendicular_to(const Vec3& twist_axis) {
+  Vec3 a = twist_axis.norm() > 0.0 ? Vec3(twist_axis.normalized()) : Vec3::UnitZ();
+  // Start from the coordinate axis least aligned with a.
+  Eigen::Index i;
+  a.cwiseAbs().minCoeff(&i);
+  Vec3 e = Vec3::Zero();
+  e[i] = 1.0;
+  SwingParam p;
+  p.s = (e - e.dot(a) * a).normalized();
+  p.t = a.cross(p.s);
+  return p;
+}
+
+Eigen::Matrix<double, 4, 2> SwingParam::dq_dswing(double alpha, double beta) const {
+  Eigen::Matrix<double, 3, 2> B;
+  B.col(0) = s;
+  B.col(1) = t;
+  return dq_dv(vector(alpha, beta)) * B;
+}
+
+bool within_swing_limit(double alpha, double beta, double a, double b) {
+  if (!(a > 0.0) || !(b > 0.0)) return false;
+  const double u = alpha / a, w = beta / b;
+  return u * u + w * w <= 1.0;
+}
+
+}  // namespace rotinterp

@@ -1,0 +1,24 @@
+// Writing clips: BVH by our own writer (keeping a BVH source's layout), FBX,
+// glTF/GLB and Collada through assimp's exporter. The format follows the
+// extension of the path. Every write is atomic (see io/atomic_file.h).
+#pragma once
+
+#include "rotinterp/clip/clip.h"
+#include "rotinterp/core/result.h"
+
+#include <filesystem>
+#include <string>
+
+namespace rotinterp {
+
+struct WriteOptions {
+  // Euler order of rotation channels for joints that have no BVH layout (a
+  // non-BVH source written as BVH), e.g. "ZXY" (default) — first letter outermost.
+  std::string bvh_order = "ZXY";
+};
+
+// Writes `clip` to `path`; the format follows the extension (bvh, fbx, glb, gltf,
+// dae). The clip must be sampled on a uniform grid of frame_time for BVH output.
+Status write_clip(const Clip& clip, const std::filesystem::path& path, const WriteOptions& options = {});
+
+}  // namespace rotinterp

@@ -1,6 +1,5 @@
 #include "io_test_util.h"
 
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -115,19 +114,6 @@ double skeleton_size(const Clip& clip) {
   for (const Vec3& a : w.position)
     for (const Vec3& b : w.position) size = std::max(size, (a - b).norm());
   return size;
-}
-
-int run(const std::string& command, std::string* out, std::string* err) {
-  static int counter = 0;
-  const fs::path base = fs::temp_directory_path() / ("rotinterp_io_run_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
-  const std::string o = base.string() + ".out", e = base.string() + ".err";
-  const int status = std::system((command + " >" + o + " 2>" + e).c_str());
-  if (out) *out = read_text(o);
-  if (err) *err = read_text(e);
-  std::error_code ec;
-  fs::remove(o, ec);
-  fs::remove(e, ec);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
 }  // namespace rotinterp::test

@@ -42,7 +42,4 @@ Clip resample_uniform(const Clip& clip, double frame_time);
 // (a skeleton size for relative tolerances).
 double skeleton_size(const Clip& clip);
 
-// Runs a command line, returns the exit code; stdout/stderr captured into out/err.
-int run(const std::string& command, std::string* out, std::string* err);
-
 }  // namespace rotinterp::test

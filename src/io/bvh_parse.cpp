@@ -336,7 +336,7 @@ Result<BvhFile> parse_bvh(std::string_view text, const std::string& label) {
   }
   if (frame < file.frames)
     return make_error(label + ": 'Frames: " + std::to_string(file.frames) + "' but the file has only " +
-                      std::to_string(frame) + " data rows");
+                      std::to_string(frame) + (frame == 1 ? " data row" : " data rows"));
   return file;
 }
 

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <memory>
@@ -87,7 +88,8 @@ std::unique_ptr<aiScene> build_scene(const Clip& clip) {
   auto* anim = new aiAnimation();
   anim->mName = aiString(clip.name.empty() ? std::string("clip") : clip.name);
   anim->mTicksPerSecond = tps;
-  anim->mDuration = (clip.end_time() - clip.start_time()) * tps;
+  // Whole ticks: the FBX exporter truncates the take's end to an integer tick count.
+  anim->mDuration = std::ceil(clip.end_time() * tps);
   anim->mNumChannels = static_cast<unsigned>(n);
   anim->mChannels = new aiNodeAnim*[n];
   for (std::size_t j = 0; j < n; ++j) {

@@ -60,28 +60,60 @@ Differences compare(const Clip& a, const Clip& b, const std::string& only_under 
   return d;
 }
 
-// assimp's own pivot removal (AI_CONFIG_IMPORT_FBX_PRESERVE_PIVOTS off) orphans no
-// channel on Marine_Run, so on its skeleton (under "Root") the folded helpers must
-// give the same poses. (Its IK locators L_FOOT/R_FOOT carry FBX geometric
-// translations, which assimp's pivot removal wrongly applies to the nodes and their
-// children; folding drops them, as FBX defines them for the geometry only.)
-TEST(Fbx, FoldingAssimpFbxHelpersGivesTheSameWorldPosesAsAssimpsPivotRemoval) {
-  const auto path = kData / "fbx" / "digitalrune_Marine_Run.fbx";
-  Result<ClipFileInfo> folded = inspect_clip(path);
+// Where assimp's own pivot removal (AI_CONFIG_IMPORT_FBX_PRESERVE_PIVOTS off) is
+// right — static pre-rotation and translation helpers, no channel orphaned — the
+// folded helpers give the same world poses. Only the skeleton under "Root" is
+// compared for the DigitalRune marines: their IK locators (L_FOOT, R_FOOT) carry
+// FBX geometric translations, which assimp's pivot removal applies to the nodes
+// and their children; folding drops them, as FBX defines them for geometry only.
+TEST(Fbx, FoldingStaticHelpersGivesTheWorldPosesOfAssimpsPivotRemoval) {
+  const struct {
+    const char* file;
+    const char* root;
+    std::size_t joints;
+  } cases[] = {{"digitalrune_Marine_Run.fbx", "Root", 26},
+               {"digitalrune_PlayerMarine_Idle.fbx", "Root", 26},
+               {"digitalrune_Dude.fbx", "", 58}};
+  for (const auto& c : cases) {
+    Result<ClipFileInfo> folded = inspect_clip(kData / "fbx" / c.file);
+    ASSERT_TRUE(folded) << folded.error();
+    EXPECT_GT(folded->folded_helpers, 0u) << c.file;
+    ReadOptions by_assimp;
+    by_assimp.fold_fbx_helpers = false;
+    Result<ClipFileInfo> plain = inspect_clip(kData / "fbx" / c.file, by_assimp);
+    ASSERT_TRUE(plain) << plain.error();
+    EXPECT_EQ(plain->folded_helpers, 0u);
+    const Differences d = compare(plain->clip, folded->clip, c.root);
+    EXPECT_EQ(d.compared_joints, c.joints) << c.file;
+    const double size = test::skeleton_size(plain->clip);
+    EXPECT_LE(d.world_angle, 1e-4 * kDeg) << c.file << ": " << d.world_angle / kDeg;
+    EXPECT_LE(d.world_position, 1e-6 * size) << c.file << ": " << d.world_position << " of " << size;
+    std::printf("[ %s ] %zu helpers folded: world angle %.3g deg, world position %.3g (size %.3g)\n", c.file,
+                folded->folded_helpers, d.world_angle / kDeg, d.world_position, size);
+  }
+}
+
+// An animated joint under a PreRotation helper: FBX's local rotation is
+// PreRotation · Lcl Rotation. assimp's pivot removal drops the pre-rotation from the
+// animated channel (the channel replaces the node's transform); folding keeps it,
+// so every folded key is the 90° Z pre-rotation of the file times assimp's key.
+TEST(Fbx, FoldingKeepsThePreRotationOfAnimatedJoints) {
+  const auto path = kData / "fbx" / "ufbx_maya_game_sausage_7500_binary_wiggle.fbx";
+  Result<Clip> folded = read_clip(path);
   ASSERT_TRUE(folded) << folded.error();
-  EXPECT_EQ(folded->folded_helpers, 24u);
   ReadOptions by_assimp;
   by_assimp.fold_fbx_helpers = false;
-  Result<ClipFileInfo> plain = inspect_clip(path, by_assimp);
+  Result<Clip> plain = read_clip(path, by_assimp);
   ASSERT_TRUE(plain) << plain.error();
-  EXPECT_EQ(plain->folded_helpers, 0u);
-  const Differences d = compare(plain->clip, folded->clip, "Root");
-  EXPECT_EQ(d.compared_joints, 26u);
-  const double size = test::skeleton_size(plain->clip);
-  EXPECT_LE(d.world_angle, 1e-4 * kDeg) << d.world_angle / kDeg;
-  EXPECT_LE(d.world_position, 1e-5 * size) << d.world_position << " of " << size;
-  std::printf("[ helpers ] world angle %.3g deg, world position %.3g (size %.3g)\n", d.world_angle / kDeg,
-              d.world_position, size);
+  const int j = folded->skeleton.find("joint1");
+  ASSERT_GE(j, 0);
+  const auto& fk = folded->rotations[static_cast<std::size_t>(j)];
+  const auto& pk = plain->rotations[static_cast<std::size_t>(plain->skeleton.find("joint1"))];
+  ASSERT_EQ(fk.keys.size(), 20u);
+  ASSERT_EQ(pk.keys.size(), fk.keys.size());
+  const Quat pre(Eigen::AngleAxisd(kPi / 2, Vec3::UnitZ()));
+  for (std::size_t k = 0; k < fk.keys.size(); ++k)
+    EXPECT_LE(angular_distance(fk.keys[k], pre * pk.keys[k]), 1e-5 * kDeg) << "key " << k;
 }
 
 // On Xbox Jump assimp's pivot removal orphans 62 channels (their motion is lost);
@@ -106,8 +138,20 @@ TEST(Fbx, FoldingKeepsMotionAssimpsPivotRemovalLoses) {
 
 class FbxExport : public ::testing::TestWithParam<const char*> {};
 
-// FBX → clip → <format> → clip: same joints, orientations within 1e-4°.
+// Tolerances per written format. glTF/GLB/Collada store floats: 1e-4°. FBX is
+// written as ASCII FBX (assimp 5.2.5 cannot re-read its own binary FBX export:
+// "FBX-Tokenize … block offset is out of range"), whose exporter prints 6
+// significant digits: an Euler angle near 180° is off by up to 180·5e-6 = 9e-4°,
+// three of them by up to 2e-3°; translations by 5e-6 relative.
+struct Tolerance {
+  double degrees;
+  double of_size;
+};
+Tolerance tolerance_for(const std::string& ext) { return ext == ".fbx" ? Tolerance{2e-3, 5e-5} : Tolerance{1e-4, 1e-5}; }
+
+// FBX → clip → <format> → clip: same joints, orientations within tolerance.
 TEST_P(FbxExport, ReimportKeepsEveryOrientation) {
+  const Tolerance tol = tolerance_for(GetParam());
   for (const char* source : {"digitalrune_Marine_Run.fbx", "assimp_huesitos.fbx"}) {
     Result<Clip> a = read_clip(kData / "fbx" / source);
     ASSERT_TRUE(a) << a.error();
@@ -119,9 +163,9 @@ TEST_P(FbxExport, ReimportKeepsEveryOrientation) {
     ASSERT_TRUE(b) << b.error();
     const Differences d = compare(*a, *b);
     EXPECT_EQ(d.compared_joints, a->skeleton.joints.size()) << source;
-    EXPECT_LE(d.local_angle, 1e-4 * kDeg) << source << ": " << d.local_angle / kDeg << " degrees";
-    EXPECT_LE(d.world_angle, 1e-4 * kDeg) << source << ": " << d.world_angle / kDeg << " degrees";
-    EXPECT_LE(d.world_position, 1e-5 * test::skeleton_size(*a)) << source;
+    EXPECT_LE(d.local_angle, tol.degrees * kDeg) << source << ": " << d.local_angle / kDeg << " degrees";
+    EXPECT_LE(d.world_angle, tol.degrees * kDeg) << source << ": " << d.world_angle / kDeg << " degrees";
+    EXPECT_LE(d.world_position, tol.of_size * test::skeleton_size(*a)) << source;
     std::printf("[ %s -> %s ] local %.3g deg, world %.3g deg, position %.3g\n", source, GetParam(), d.local_angle / kDeg,
                 d.world_angle / kDeg, d.world_position);
     // Only the written file (plus the .gltf buffer): no temporaries left.

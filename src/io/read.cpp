@@ -452,7 +452,7 @@ Result<ClipFileInfo> load(const fs::path& path, const ReadOptions& options) {
   // BVH: our pass first (validation, layout, exact Frame Time).
   std::optional<BvhFile> bvh;
   bool bvh_content = ext == "bvh";
-  if (!bvh_content && fs::file_size(path) < (std::uintmax_t{1} << 30)) {
+  if (!bvh_content) {  // BVH content under another extension
     std::ifstream f(path, std::ios::binary);
     std::string head(64, '\0');
     f.read(head.data(), 64);

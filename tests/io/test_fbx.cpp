@@ -179,28 +179,35 @@ INSTANTIATE_TEST_SUITE_P(Formats, FbxExport, ::testing::Values(".fbx", ".gltf", 
 // FBX → BVH (rest rotations baked into the BVH rotations): world joint positions
 // unchanged within 1e-3 of the skeleton's size, for every order of --bvh-order.
 TEST(Fbx, ToBvhKeepsWorldJointPositions) {
-  Result<Clip> a = read_clip(kData / "fbx" / "digitalrune_Marine_Run.fbx");
-  ASSERT_TRUE(a) << a.error();
-  const Clip uniform = test::resample_uniform(*a, a->frame_time);
-  const double size = test::skeleton_size(uniform);
-  ASSERT_GT(size, 0.0);
-  test::TempDir dir;
-  for (const char* order : {"ZXY", "XYZ", "YZX"}) {
-    WriteOptions w;
-    w.bvh_order = order;
-    const Status s = write_clip(uniform, dir / "out.bvh", w);
-    ASSERT_TRUE(s) << s.error();
-    Result<Clip> b = read_clip(dir / "out.bvh");
-    ASSERT_TRUE(b) << b.error();
-    ASSERT_EQ(b->skeleton.joints.size(), uniform.skeleton.joints.size());
-    double worst = 0.0;
-    for (std::size_t f = 0; f < uniform.frame_count(); ++f) {
-      const double t = uniform.start_time() + static_cast<double>(f) * uniform.frame_time;
-      const WorldPose pa = test::pose_at(uniform, t), pb = test::pose_at(*b, t - uniform.start_time());
-      for (std::size_t j = 0; j < pa.position.size(); ++j) worst = std::max(worst, (pa.position[j] - pb.position[j]).norm());
+  const struct {
+    const char* file;
+    double frame_time;  // the source's, or 1/30 s where its keys have no uniform grid
+  } cases[] = {{"digitalrune_Marine_Run.fbx", 0}, {"digitalrune_Dude.fbx", 1.0 / 30}, {"assimp_huesitos.fbx", 0},
+               {"ufbx_maya_kenney_character_7700_binary.fbx", 0}};
+  for (const auto& c : cases) {
+    Result<Clip> a = read_clip(kData / "fbx" / c.file);
+    ASSERT_TRUE(a) << a.error();
+    const Clip uniform = test::resample_uniform(*a, c.frame_time > 0 ? c.frame_time : a->frame_time);
+    const double size = test::skeleton_size(uniform);
+    ASSERT_GT(size, 0.0);
+    test::TempDir dir;
+    for (const char* order : {"ZXY", "XYZ", "YZX"}) {
+      WriteOptions w;
+      w.bvh_order = order;
+      const Status s = write_clip(uniform, dir / "out.bvh", w);
+      ASSERT_TRUE(s) << s.error();
+      Result<Clip> b = read_clip(dir / "out.bvh");
+      ASSERT_TRUE(b) << b.error();
+      ASSERT_EQ(b->skeleton.joints.size(), uniform.skeleton.joints.size());
+      double worst = 0.0;
+      for (std::size_t f = 0; f < uniform.frame_count(); ++f) {
+        const double t = uniform.start_time() + static_cast<double>(f) * uniform.frame_time;
+        const WorldPose pa = test::pose_at(uniform, t), pb = test::pose_at(*b, t - uniform.start_time());
+        for (std::size_t j = 0; j < pa.position.size(); ++j) worst = std::max(worst, (pa.position[j] - pb.position[j]).norm());
+      }
+      EXPECT_LE(worst, 1e-3 * size) << c.file << " " << order << ": " << worst << " of " << size;
+      std::printf("[ %s -> bvh %s ] worst joint position %.3g (skeleton size %.3g)\n", c.file, order, worst, size);
     }
-    EXPECT_LE(worst, 1e-3 * size) << order << ": " << worst << " of " << size;
-    std::printf("[ fbx -> bvh %s ] worst joint position %.3g (skeleton size %.3g)\n", order, worst, size);
   }
 }
 

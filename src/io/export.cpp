@@ -1,5 +1,6 @@
 #include "export.h"
 
+#include "assimp_text.h"
 #include "rotinterp/io/atomic_file.h"
 
 #include <assimp/Exporter.hpp>
@@ -122,12 +123,6 @@ std::unique_ptr<aiScene> build_scene(const Clip& clip) {
   scene->mAnimations = new aiAnimation*[1];
   scene->mAnimations[0] = anim;
   return scene;
-}
-
-std::string one_line(std::string s) {
-  for (char& c : s)
-    if (c == '\n' || c == '\r') c = ' ';
-  return s;
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // The clip reader: assimp for every format, our own BVH pass on top.
 #include "rotinterp/io/read.h"
 
+#include "assimp_text.h"
 #include "rotinterp/io/bvh.h"
 #include "rotinterp/io/info.h"
 
@@ -34,13 +35,6 @@ constexpr double kSameTickTolerance = 1e-6;
 constexpr double kWholeTickTolerance = 1e-4;
 // A node scale within this of 1 is no scale (assimp decomposes float matrices).
 constexpr double kUnitScaleTolerance = 1e-5;
-
-std::string one_line(std::string s) {
-  for (char& c : s)
-    if (c == '\n' || c == '\r') c = ' ';
-  while (!s.empty() && s.back() == ' ') s.pop_back();
-  return s;
-}
 
 std::string lower(std::string s) {
   for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));

@@ -30,9 +30,12 @@ constexpr const char* kGeometricTag = "_$AssimpFbx$_Geometric";
 // Key times (in ticks) closer than this are one key: assimp's FBX importer merges
 // curve times in float, and ticks are at least 1e-3 s apart in every format we know.
 constexpr double kSameTickTolerance = 1e-6;
-// Keys within this many ticks of whole ticks count as "on whole ticks": the clip then
-// gets frame_time = 1/ticks-per-second (FBX, Collada stores at the frame rate).
+// Keys within this many ticks of whole ticks count as "on whole ticks". Where the
+// tick rate is a frame rate (FBX, .x: at most kMaxFrameRate ticks per second), the
+// clip then gets frame_time = 1/ticks-per-second; finer ticks (glTF and Collada
+// read at 1000 per second) give the step of the keys' uniform grid instead.
 constexpr double kWholeTickTolerance = 1e-4;
+constexpr double kMaxFrameRate = 240.0;
 // A node scale within this of 1 is no scale (assimp decomposes float matrices).
 constexpr double kUnitScaleTolerance = 1e-5;
 
@@ -417,7 +420,7 @@ Status fill_scene(const aiScene* scene, const aiAnimation* anim, double tps, Cli
     }
     if (moves) clip.translations[j] = std::move(tt);
   }
-  if (whole_ticks && tps > 0.0) {
+  if (whole_ticks && tps <= kMaxFrameRate) {
     clip.frame_time = 1.0 / tps;
   } else if (const double step = uniform_grid_step(all_ticks) / tps; step > 0.0) {
     const double rate = 1.0 / step;

@@ -116,7 +116,8 @@ double angular_distance(const Quat& a_in, const Quat& b_in) {
   const Eigen::Vector4d a = normalized_or_identity(a_in).coeffs();
   Eigen::Vector4d b = normalized_or_identity(b_in).coeffs();
   if (a.dot(b) < 0.0) b = -b;
-  return 2.0 * std::atan2((a - b).norm(), (a + b).norm());
+  // |a − b| = 2 sin(φ/2), |a + b| = 2 cos(φ/2) with φ = θ/2 the angle on S³.
+  return 4.0 * std::atan2((a - b).norm(), (a + b).norm());
 }
 
 Eigen::Matrix<double, 4, 3> dq_dv(const Vec3& v) {

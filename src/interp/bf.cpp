@@ -347,9 +347,10 @@ class BfInterpolator final : public detail::SegmentInterpolator<BfInterpolator> 
 // kGrading times the short neighbour is split off next to it, repeatedly).
 // Every in-between knot lies on its original segment's geodesic at the
 // proportional time, i.e. on the slerp curve.
-constexpr double kGrading = 4.0;
+constexpr double kGrading = 2.0;
 
 detail::Keys refine(const detail::Keys& k, double max_step) {
+  if (k.size() < 2) return k;
   detail::Keys out;
   for (std::size_t i = 0; i + 1 < k.size(); ++i) {
     out.t.push_back(k.t[i]);

@@ -79,7 +79,7 @@ struct BfSplineOptions {
   // no BF spline through them. Segments whose keys are further apart than this get
   // evenly spaced in-between knots on their geodesic (slerp) first; if the
   // control points still do not converge the step is halved (up to 3 times).
-  // Likewise an interval more than 6 times as long as a neighbouring one is graded
+  // Likewise an interval more than 3 times as long as a neighbouring one is graded
   // with in-between knots (1e-6 s next to 1e4 s has no BF spline either: the
   // control points would leave the hemisphere). The curve passes through every
   // original key and stays C², bi-invariant and exact on constant angular

@@ -39,7 +39,9 @@ TEST(Synth, SampledKeysAreTheAnalyticTruthAtFrameTimes) {
       for (std::size_t j = 0; j < q.size(); ++j) {
         ASSERT_EQ(clip->rotations[j].times[k], t);
         EXPECT_LT(angular_distance(clip->rotations[j].keys[k], q[j]), 1e-12) << synth_kind_name(kind) << " joint " << j;
-        if (clip->translations[j]) EXPECT_LT((clip->translations[j]->keys[k] - p[j]).norm(), 1e-12);
+        if (clip->translations[j]) {
+          EXPECT_LT((clip->translations[j]->keys[k] - p[j]).norm(), 1e-12);
+        }
       }
     }
   }

@@ -31,6 +31,10 @@ struct SourceGrid {
   Rate rate;                // exact
   std::size_t frames = 0;
   double time(std::size_t i) const { return start + rate.time_of(static_cast<std::int64_t>(i)); }
+  // The time of output frame i in a clip that keeps the source's frame time: what a
+  // reader of the written file gives (start + i·frame_time), so the output's key
+  // times sit on its own frame grid.
+  double label(std::size_t i) const { return start + static_cast<double>(i) * frame_time; }
 };
 
 // Snaps key times onto the exact grid when every key is on it (within
@@ -200,7 +204,7 @@ Result<Clip> resample_clip(const Clip& in, const ResampleOptions& opt) {
     plan.keep_every = true;
     for (std::size_t i = i0; i <= i1; ++i) {
       plan.eval_times.push_back(grid->time(i));
-      plan.out_times.push_back(grid->time(i - i0));
+      plan.out_times.push_back(grid->label(i - i0));
     }
     for (std::size_t k : keep_every_indices(i1 - i0 + 1, *opt.keep_every)) plan.key_times.push_back(grid->time(i0 + k));
     out.frame_time = in.frame_time;
@@ -213,11 +217,16 @@ Result<Clip> resample_clip(const Clip& in, const ResampleOptions& opt) {
     g.rate = rate;
     g.count = (!opt.range && grid) ? sample_count(grid->frames, grid->rate, rate) : sample_count(b - a, rate);
     plan.eval_times = g.times();
-    TimeGrid o = g;
-    o.offset = 0.0;
-    o.end = start + (b - a);
-    plan.out_times = o.times();
-    out.frame_time = opt.fps ? rate.period() : in.frame_time;
+    if (opt.fps) {
+      TimeGrid o = g;
+      o.offset = 0.0;
+      o.end = start + (b - a);
+      plan.out_times = o.times();
+      out.frame_time = rate.period();
+    } else {
+      for (std::size_t k = 0; k < g.count; ++k) plan.out_times.push_back(grid->label(k));
+      out.frame_time = in.frame_time;
+    }
   }
 
   out.rotations.resize(n);

@@ -57,19 +57,32 @@ VectorCurve axis_wave(const Vec3& axis, double bias, double amp, double omega, d
   return c;
 }
 
-// Binary tree of `count` joints, random bone directions, End Sites on the leaves.
+// A binary tree of `count` joints in depth-first order (as a BVH file lists them),
+// random bone directions, End Sites on the leaves.
 Skeleton tree_skeleton(int count, Random& rng) {
+  // Heap-shaped tree (children of i: 2i+1, 2i+2), numbered in depth-first preorder.
+  std::vector<int> order, stack{0};
+  while (!stack.empty()) {
+    const int i = stack.back();
+    stack.pop_back();
+    order.push_back(i);
+    for (int c : {2 * i + 2, 2 * i + 1})
+      if (c < count) stack.push_back(c);
+  }
+  std::vector<int> index_of(static_cast<std::size_t>(count));
+  for (int k = 0; k < count; ++k) index_of[static_cast<std::size_t>(order[static_cast<std::size_t>(k)])] = k;
   Skeleton s;
-  for (int i = 0; i < count; ++i) {
+  for (int k = 0; k < count; ++k) {
+    const int heap = order[static_cast<std::size_t>(k)];
     Joint j;
-    j.name = i == 0 ? "Root" : "J" + std::to_string(i);
-    j.parent = i == 0 ? -1 : (i - 1) / 2;
-    if (i > 0) j.offset = rng.unit_vector() * rng.uniform(8.0, 15.0);
+    j.name = k == 0 ? "Root" : "J" + std::to_string(k);
+    j.parent = heap == 0 ? -1 : index_of[static_cast<std::size_t>((heap - 1) / 2)];
+    if (k > 0) j.offset = rng.unit_vector() * rng.uniform(8.0, 15.0);
     s.joints.push_back(j);
   }
-  for (int i = 0; i < count; ++i)
-    if (2 * i + 1 >= count)
-      s.end_sites.push_back({i, rng.unit_vector() * 5.0, "EndSite_" + s.joints[static_cast<std::size_t>(i)].name});
+  for (int k = 0; k < count; ++k)
+    if (2 * order[static_cast<std::size_t>(k)] + 1 >= count)
+      s.end_sites.push_back({k, rng.unit_vector() * 5.0, "EndSite_" + s.joints[static_cast<std::size_t>(k)].name});
   return s;
 }
 

@@ -56,10 +56,10 @@ TEST_F(ResampleCli, ResampleWritesTheRequestedRateAndOneSummaryLine) {
   const std::string in = walk(), out = path("out50.bvh");
   const auto r = run_cli("resample " + in + " -o " + out + " --fps 50");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_EQ(frames_line(out), "Frames: 98");  // floor(58/30 · 50) + 1
+  EXPECT_EQ(frames_line(out), "Frames: 101");  // 2 s · 50 + 1
   EXPECT_NE(rotinterp::test::slurp(out).find("Frame Time: 0.02"), std::string::npos);
-  EXPECT_NE(r.out.find("61 → 98 frames"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("30 → 50 Hz"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("61 → 101 frames"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("30 Hz → 50 Hz"), std::string::npos) << r.out;
   EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
   EXPECT_TRUE(r.err.empty()) << r.err;  // no progress when stderr is not a terminal
 }

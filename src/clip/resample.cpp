@@ -16,6 +16,8 @@ namespace {
 
 // A key within this fraction of a frame of start + i·frame_time belongs to frame i.
 constexpr double kSnapFraction = 0.05;
+// Output size limit: frames × joints (≈ 40 bytes each, 4 GB).
+constexpr std::size_t kMaxOutputKeys = 100000000;
 
 std::string seconds_text(double s) {
   std::ostringstream os;
@@ -188,6 +190,10 @@ Result<Clip> resample_clip(const Clip& in, const ResampleOptions& opt) {
     b = std::min(duration, rb);
   }
 
+  auto too_many = [n](std::size_t frames) {
+    return make_error("resampling would give " + std::to_string(frames) + " frames × " + std::to_string(n) +
+                      " joints, more than " + std::to_string(kMaxOutputKeys) + " keys; give a lower --fps or a --range");
+  };
   Plan plan;
   Clip out;
   out.name = in.name;
@@ -201,6 +207,7 @@ Result<Clip> resample_clip(const Clip& in, const ResampleOptions& opt) {
     const auto i0 = static_cast<std::size_t>(std::max(0.0, std::ceil(fa - 1e-6)));
     const auto i1 = std::min(grid->frames - 1, static_cast<std::size_t>(std::floor(fb + 1e-6)));
     if (i1 < i0) return make_error("range " + seconds_text(a) + ":" + seconds_text(b) + " s holds no frame");
+    if (i1 - i0 + 1 > kMaxOutputKeys / n) return too_many(i1 - i0 + 1);
     plan.keep_every = true;
     for (std::size_t i = i0; i <= i1; ++i) {
       plan.eval_times.push_back(grid->time(i));
@@ -216,6 +223,7 @@ Result<Clip> resample_clip(const Clip& in, const ResampleOptions& opt) {
     g.end = start + b;
     g.rate = rate;
     g.count = (!opt.range && grid) ? sample_count(grid->frames, grid->rate, rate) : sample_count(b - a, rate);
+    if (g.count > kMaxOutputKeys / n) return too_many(g.count);
     plan.eval_times = g.times();
     if (opt.fps) {
       TimeGrid o = g;

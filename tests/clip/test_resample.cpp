@@ -289,3 +289,11 @@ TEST(Resample, BadRequestsAreOneLineErrors) {
   ASSERT_FALSE(r.ok());
   EXPECT_NE(r.error().find("--fps"), std::string::npos);
 }
+
+TEST(Resample, AbsurdOutputSizesAreRefusedBeforeAllocating) {
+  REQUIRE_METHODS();
+  const Clip in = synth(SynthKind::walk, Rate{30, 1}, 2.0);
+  auto r = resample_clip(in, at("1000000000"));  // 2e9 frames × 31 joints
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(r.error().find("more than"), std::string::npos) << r.error();
+}

@@ -65,7 +65,7 @@ int run_synth(const SynthArgs& a) {
   if (!clip) return usage_error(clip.error());
   if (Status s = write_clip(*clip, a.output); !s) return fail(s.error());
   // The spec next to the clip, so the analytic truth can be rebuilt (eval --truth).
-  const std::filesystem::path spec_path = a.output + ".synth";
+  const std::filesystem::path spec_path = synth_spec_path(a.output);
   const std::string spec = synth_spec(o);
   if (Status s = write_file_atomically(spec_path, [&](std::ostream& os) -> Status {
         os << spec << "\n";

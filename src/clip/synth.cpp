@@ -1,6 +1,7 @@
 #include "rotinterp/clip/synth.h"
 
 #include <charconv>
+#include <fstream>
 #include <cmath>
 #include <random>
 #include <sstream>
@@ -354,6 +355,24 @@ Result<SynthMotion> make_synth_motion(const SynthOptions& o) {
                       " joints is too large (at most " + std::to_string(kMaxSamples) + " keys)");
   Random rng(o.seed);
   return o.kind == SynthKind::walk ? walk_motion(rng) : random_motion(o, rng);
+}
+
+std::filesystem::path synth_spec_path(const std::filesystem::path& clip_file) {
+  std::filesystem::path p = clip_file;
+  p += ".synth";
+  return p;
+}
+
+Result<SynthMotion> read_synth_spec(const std::filesystem::path& clip_file) {
+  const std::filesystem::path p = synth_spec_path(clip_file);
+  std::ifstream in(p);
+  std::string line;
+  if (!in || !std::getline(in, line)) return make_error(p.string() + ": no synth spec (not made by rotinterp synth?)");
+  auto o = parse_synth_spec(line);
+  if (!o) return make_error(p.string() + ": " + o.error());
+  auto m = make_synth_motion(*o);
+  if (!m) return make_error(p.string() + ": " + m.error());
+  return m;
 }
 
 Result<Clip> make_synth_clip(const SynthOptions& o) {

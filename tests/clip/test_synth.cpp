@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <set>
 
 using namespace rotinterp;
@@ -160,4 +162,23 @@ TEST(Synth, SpecRoundTripsAndBadOptionsAreRejected) {
   SynthOptions none = options(SynthKind::constant);
   none.joints = 0;
   EXPECT_FALSE(make_synth_motion(none).ok());
+}
+
+TEST(Synth, SpecFileNextToAClipRebuildsItsMotion) {
+  const std::filesystem::path clip = std::filesystem::temp_directory_path() / "rotinterp_synth_spec_test.bvh";
+  SynthOptions o = options(SynthKind::smooth, 31, 1.5, Rate{24, 1});
+  o.joints = 5;
+  {
+    std::ofstream(synth_spec_path(clip)) << synth_spec(o) << "\n";
+  }
+  auto m = read_synth_spec(clip);
+  ASSERT_TRUE(m.ok()) << m.error();
+  const SynthMotion direct = make_synth_motion(o).value();
+  ASSERT_EQ(m->skeleton().joints.size(), 5u);
+  for (std::size_t j = 0; j < 5; ++j)
+    EXPECT_EQ(m->rotation(j, 0.37).coeffs(), direct.rotation(j, 0.37).coeffs());
+  std::filesystem::remove(synth_spec_path(clip));
+  auto missing = read_synth_spec(clip);
+  ASSERT_FALSE(missing.ok());
+  EXPECT_NE(missing.error().find("rotinterp_synth_spec_test.bvh.synth"), std::string::npos) << missing.error();
 }

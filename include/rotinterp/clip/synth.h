@@ -29,6 +29,7 @@
 #include "rotinterp/core/result.h"
 
 #include <cstdint>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -97,6 +98,13 @@ class SynthMotion {
   Skeleton skeleton_;
   std::vector<JointMotion> motion_;
 };
+
+// The spec file `rotinterp synth` writes next to a clip: "<clip_file>.synth".
+std::filesystem::path synth_spec_path(const std::filesystem::path& clip_file);
+// Rebuilds the analytic motion of a clip file from its spec file (for eval --truth):
+// an error naming the file when there is none or it does not parse. The motion's
+// truth(t, rotation, translation) gives the exact local pose at any t.
+Result<SynthMotion> read_synth_spec(const std::filesystem::path& clip_file);
 
 // The motion for `options` (validated: seconds > 0, joints ≥ 1, ≤ 10 000 000 frames).
 Result<SynthMotion> make_synth_motion(const SynthOptions& options);

@@ -215,6 +215,7 @@ Result<Clip> resample_clip(const Clip& in, const ResampleOptions& opt) {
     }
     for (std::size_t k : keep_every_indices(i1 - i0 + 1, *opt.keep_every)) plan.key_times.push_back(grid->time(i0 + k));
     out.frame_time = in.frame_time;
+    out.frame_time_text = in.frame_time_text;
   } else {
     const Rate rate = opt.fps ? *opt.fps : grid->rate;
     TimeGrid g;
@@ -234,6 +235,7 @@ Result<Clip> resample_clip(const Clip& in, const ResampleOptions& opt) {
     } else {
       for (std::size_t k = 0; k < g.count; ++k) plan.out_times.push_back(grid->label(k));
       out.frame_time = in.frame_time;
+      out.frame_time_text = in.frame_time_text;
     }
   }
 

@@ -65,6 +65,7 @@ fs::path temp_file(const std::string& name) {
 }  // namespace
 
 TEST(ResampleRealClips, SameRateReproducesEveryRealBvhForEveryMethod) {
+  ASSERT_GE(methods().size(), 5u) << "the interpolators are not registered";
   for (const char* rel : kBvhClips) {
     const Clip in = load(rel);
     ASSERT_FALSE(in.rotations.empty());
@@ -101,6 +102,7 @@ TEST(ResampleRealClips, SameRateThroughBvhFilesReproducesTheInput) {
 }
 
 TEST(ResampleRealClips, From120To30LandsOnEveryFourthFrame) {
+  ASSERT_GE(methods().size(), 5u) << "the interpolators are not registered";
   const Clip in = load("bvh/cmu_01_01.bvh");  // Frame Time 0.008333
   ASSERT_EQ(clip_rate(in).value(), (Rate{120, 1}));
   for (const MethodInfo& m : methods()) {
@@ -117,6 +119,7 @@ TEST(ResampleRealClips, From120To30LandsOnEveryFourthFrame) {
 }
 
 TEST(ResampleRealClips, UpsampleThenDownsampleReturnsTheInputFrames) {
+  ASSERT_GE(methods().size(), 5u) << "the interpolators are not registered";
   const Clip in = load("bvh/NC_bandai1_walk_normal_001.bvh");  // 30 Hz, positions on every joint
   for (const MethodInfo& m : methods()) {
     ResampleOptions up;
@@ -171,6 +174,7 @@ TEST(ResampleRealClips, SynthBvhWithRandomOrdersReadsBackAsItsAnalyticTruth) {
 // checks that error grows with key spacing and that the default is within 10 % of
 // the best mean at both spacings.
 TEST(ResampleRealClips, DefaultMethodIsAmongTheMostAccurateOnRealClips) {
+  ASSERT_GE(methods().size(), 5u) << "the interpolators are not registered";
   struct Agg {
     std::vector<double> errors;
     double seconds = 0.0;

@@ -7,11 +7,13 @@
 #include "rotinterp/io/write.h"
 
 #include <fmt/core.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
@@ -105,9 +107,16 @@ int run_resample(const ResampleArgs& a) {
   if (!known_output_extension(a.output))
     return usage_error("output '" + a.output + "': unknown format (use .bvh, .fbx, .glb, .gltf or .dae)");
 
+  // Stage names on the progress line (reading and writing long clips take seconds).
+  const bool show = !a.quiet && ::isatty(STDERR_FILENO);
+  auto stage = [show](const std::string& what) {
+    if (show) std::fprintf(stderr, "\r\033[K%s …", what.c_str());
+  };
   ReadOptions read_options;
   read_options.animation = a.anim;
+  stage("reading " + a.input);
   auto clip = read_clip(a.input, read_options);
+  end_progress(a.quiet);
   if (!clip) return fail(clip.error());
 
   opt.progress = make_progress("resample", a.quiet);
@@ -117,7 +126,10 @@ int run_resample(const ResampleArgs& a) {
 
   WriteOptions write_options;
   write_options.bvh_order = a.bvh_order;
-  if (Status s = write_clip(*out, a.output, write_options); !s) return fail(s.error());
+  stage("writing " + a.output);
+  const Status written = write_clip(*out, a.output, write_options);
+  end_progress(a.quiet);
+  if (!written) return fail(written.error());
 
   if (!a.quiet) {
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

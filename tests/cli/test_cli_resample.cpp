@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 using rotinterp::test::run_cli;
 namespace fs = std::filesystem;
@@ -34,6 +35,22 @@ class ResampleCli : public ::testing::Test {
   }
   fs::path dir_;
 };
+
+struct ErrorCase {
+  std::string args;    // after "resample "
+  std::string needle;  // expected in the one stderr line
+};
+
+// Each case fails with `code`, one line on stderr containing its needle, and no `out`.
+void expect_errors(const std::vector<ErrorCase>& cases, int code, const std::string& out) {
+  for (const ErrorCase& c : cases) {
+    const auto r = run_cli("resample " + c.args);
+    EXPECT_EQ(r.exit_code, code) << c.args << ": " << r.err;
+    EXPECT_NE(r.err.find(c.needle), std::string::npos) << c.args << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_FALSE(fs::exists(out)) << c.args;
+  }
+}
 
 std::string frames_line(const std::string& bvh) {
   const std::string text = rotinterp::test::slurp(bvh);
@@ -76,32 +93,21 @@ TEST_F(ResampleCli, KeepEveryRangeAndOverridesWork) {
 }
 
 TEST_F(ResampleCli, UsageErrorsExitTwoWithOneLineAndNoOutput) {
-  const std::string in = walk(), out = path("never.bvh");
-  const struct {
-    std::string args;
-    std::string needle;
-  } cases[] = {
-      {"--fps 0", "greater than 0"},
-      {"--fps -30", "frame rate"},
-      {"--fps abc", "not a number"},
-      {"--fps 30 --keep-every 2", "not both"},
-      {"--keep-every 0", "≥ 1"},
-      {"--keep-every two", "≥ 1"},
-      {"--method cubic-ish", "valid: "},
-      {"--method-for Head", "JOINT=METHOD"},
-      {"--method-for Head=nope", "unknown method 'nope'"},
-      {"--translation spline", "linear, cubic"},
-      {"--range 3", "START:END"},
-      {"--range 2:1", "after START"},
-      {"--bvh-order XYY", "permutation"},
-  };
-  for (const auto& c : cases) {
-    const auto r = run_cli("resample " + in + " -o " + out + " " + c.args);
-    EXPECT_EQ(r.exit_code, 2) << c.args << ": " << r.err;
-    EXPECT_NE(r.err.find(c.needle), std::string::npos) << c.args << ": " << r.err;
-    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-    EXPECT_FALSE(fs::exists(out)) << c.args;
-  }
+  const std::string in = walk(), out = path("never.bvh"), io = in + " -o " + out + " ";
+  expect_errors({{io + "--fps 0", "greater than 0"},
+                 {io + "--fps -30", "frame rate"},
+                 {io + "--fps abc", "not a number"},
+                 {io + "--fps 30 --keep-every 2", "not both"},
+                 {io + "--keep-every 0", "≥ 1"},
+                 {io + "--keep-every two", "≥ 1"},
+                 {io + "--method cubic-ish", "valid: "},
+                 {io + "--method-for Head", "JOINT=METHOD"},
+                 {io + "--method-for Head=nope", "unknown method 'nope'"},
+                 {io + "--translation spline", "linear, cubic"},
+                 {io + "--range 3", "START:END"},
+                 {io + "--range 2:1", "after START"},
+                 {io + "--bvh-order XYY", "permutation"}},
+                2, out);
   const auto r = run_cli("resample " + in + " -o " + path("x.txt"));
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("unknown format"), std::string::npos) << r.err;
@@ -109,21 +115,10 @@ TEST_F(ResampleCli, UsageErrorsExitTwoWithOneLineAndNoOutput) {
 
 TEST_F(ResampleCli, InputProblemsExitOneWithOneLineAndNoOutput) {
   const std::string in = walk(), out = path("never.bvh");
-  const struct {
-    std::string args;
-    std::string needle;
-  } cases[] = {
-      {path("missing.bvh") + " -o " + out, "missing.bvh"},
-      {in + " -o " + out + " --range 1:5", "outside the clip"},
-      {in + " -o " + out + " --method-for Tail=slerp", "no joint 'Tail'"},
-  };
-  for (const auto& c : cases) {
-    const auto r = run_cli("resample " + c.args);
-    EXPECT_EQ(r.exit_code, 1) << c.args << ": " << r.err;
-    EXPECT_NE(r.err.find(c.needle), std::string::npos) << c.args << ": " << r.err;
-    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-    EXPECT_FALSE(fs::exists(out)) << c.args;
-  }
+  expect_errors({{path("missing.bvh") + " -o " + out, "missing.bvh"},
+                 {in + " -o " + out + " --range 1:5", "outside the clip"},
+                 {in + " -o " + out + " --method-for Tail=slerp", "no joint 'Tail'"}},
+                1, out);
   const std::string unwritable = path("no/such/dir/out.bvh");
   const auto r = run_cli("resample " + in + " -o " + unwritable);
   EXPECT_EQ(r.exit_code, 1) << r.err;

@@ -59,6 +59,13 @@ Diff diff(const Clip& a, const Clip& b, std::size_t a_step = 1) {
   return d;
 }
 
+Result<Clip> at_rate(const Clip& in, const std::string& method, Rate fps) {
+  ResampleOptions o;
+  o.method = method;
+  o.fps = fps;
+  return resample_clip(in, o);
+}
+
 fs::path temp_file(const std::string& name) {
   return fs::temp_directory_path() / ("rotinterp_resample_" + std::to_string(::getpid()) + "_" + name);
 }
@@ -107,10 +114,7 @@ TEST(ResampleRealClips, From120To30LandsOnEveryFourthFrame) {
   const Clip in = load("bvh/cmu_01_01.bvh");  // Frame Time 0.008333
   ASSERT_EQ(clip_rate(in).value(), (Rate{120, 1}));
   for (const MethodInfo& m : methods()) {
-    ResampleOptions o;
-    o.method = m.name;
-    o.fps = Rate{30, 1};
-    auto out = resample_clip(in, o);
+    auto out = at_rate(in, m.name, Rate{30, 1});
     ASSERT_TRUE(out.ok()) << out.error();
     EXPECT_EQ(out->frame_count(), (in.frame_count() - 1) / 4 + 1);
     const Diff d = diff(in, *out, 4);
@@ -123,14 +127,9 @@ TEST(ResampleRealClips, UpsampleThenDownsampleReturnsTheInputFrames) {
   ASSERT_GE(methods().size(), 5u) << "the interpolators are not registered";
   const Clip in = load("bvh/NC_bandai1_walk_normal_001.bvh");  // 30 Hz, positions on every joint
   for (const MethodInfo& m : methods()) {
-    ResampleOptions up;
-    up.method = m.name;
-    up.fps = Rate{120, 1};
-    auto hi = resample_clip(in, up);
+    auto hi = at_rate(in, m.name, Rate{120, 1});
     ASSERT_TRUE(hi.ok()) << hi.error();
-    ResampleOptions down = up;
-    down.fps = Rate{30, 1};
-    auto back = resample_clip(*hi, down);
+    auto back = at_rate(*hi, m.name, Rate{30, 1});
     ASSERT_TRUE(back.ok()) << back.error();
     ASSERT_EQ(back->frame_count(), in.frame_count());
     const Diff d = diff(in, *back);

@@ -96,10 +96,10 @@ std::string Rate::to_string() const {
   for (int d = 1; d <= kMaxDecimals; ++d) {
     const std::int64_t p = pow10(d);
     if (p % den != 0) continue;
-    const std::int64_t scaled = num * (p / den);  // den | p, no overflow for our ranges
-    std::string frac = std::to_string(scaled % p);
+    const i128 scaled = static_cast<i128>(num) * (p / den);  // den | p; up to 1e9 Hz · 1e12
+    std::string frac = std::to_string(static_cast<std::int64_t>(scaled % p));
     frac.insert(0, static_cast<std::size_t>(d) - frac.size(), '0');
-    return std::to_string(scaled / p) + "." + frac;
+    return std::to_string(static_cast<std::int64_t>(scaled / p)) + "." + frac;
   }
   return std::to_string(num) + "/" + std::to_string(den);
 }
@@ -171,6 +171,7 @@ Result<Rate> rate_from_frame_time(double frame_time) {
 std::size_t sample_count(double duration, const Rate& rate) {
   if (!std::isfinite(duration) || duration < 0.0) return 0;
   const long double x = static_cast<long double>(duration) * rate.num / rate.den + 1e-9L;
+  if (!(x < 1e18L)) return static_cast<std::size_t>(1e18);  // callers refuse such sizes
   return static_cast<std::size_t>(std::floor(x)) + 1;
 }
 

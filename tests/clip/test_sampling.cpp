@@ -27,6 +27,8 @@ TEST(Sampling, RatesParseExactlyAsDecimalsOrRationals) {
   EXPECT_EQ(rate("30000/1001").to_string(), "30000/1001");
   EXPECT_EQ(rate("59.94").to_string(), "59.94");
   EXPECT_EQ(rate("120").to_string(), "120");
+  EXPECT_EQ(rate("99999.123456789012").to_string(), "99999.123456789012");  // 1e17 · 1e12 needs 128 bits
+  EXPECT_EQ(sample_count(1e300, Rate{30, 1}), static_cast<std::size_t>(1e18));  // refused by callers, no UB
 }
 
 TEST(Sampling, BadRatesAreOneLineErrors) {

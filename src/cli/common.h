@@ -27,6 +27,8 @@ void end_progress(bool quiet);
 
 // Each subcommand adds itself to `app`; when it runs, it stores its exit code.
 void add_methods_command(CLI::App& app, int& exit_code);
+void add_resample_command(CLI::App& app, int& exit_code);
+void add_synth_command(CLI::App& app, int& exit_code);
 void add_info_command(CLI::App& app, int& exit_code);
 
 }  // namespace rotinterp::cli

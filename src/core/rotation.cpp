@@ -116,7 +116,7 @@ double angular_distance(const Quat& a_in, const Quat& b_in) {
   const Eigen::Vector4d a = normalized_or_identity(a_in).coeffs();
   Eigen::Vector4d b = normalized_or_identity(b_in).coeffs();
   if (a.dot(b) < 0.0) b = -b;
-  return 2.0 * std::atan2((a - b).norm(), (a + b).norm());
+  return 4.0 * std::atan2((a - b).norm(), (a + b).norm());
 }
 
 Eigen::Matrix<double, 4, 3> dq_dv(const Vec3& v) {
@@ -195,7 +195,7 @@ SwingTwist swing_twist(const Quat& q_in, const Vec3& axis_in) {
   const Vec3 proj = q.vec().dot(axis) * axis;
   Quat twist(q.w(), proj.x(), proj.y(), proj.z());
   const double tn = twist.norm();
-  if (tn < 1e-300) {
+  if (tn < kSwingTwistDegenerate) {
     twist = Quat::Identity();  // a pure 180° swing: no twist
   } else {
     twist.coeffs() /= tn;

@@ -113,8 +113,9 @@ RotVec displacement_moving(const Quat& q, const Quat& q2);
 Quat apply_fixed(const RotVec& r, const Quat& q);
 // q·exp(r): rotate q by r about its own (moving) axes.
 Quat apply_moving(const Quat& q, const RotVec& r);
-// Geodesic distance in radians, in [0, π]: 2·atan2(|a − b|, |a + b|) after hemisphere
-// alignment (the 2·acos|a·b| form reads float round-off as ~0.05°).
+// Geodesic distance in radians, in [0, π]: the rotation angle of a⁻¹b, computed as
+// 4·atan2(|a − b|, |a + b|) after hemisphere alignment (|a ∓ b| = 2·sin, 2·cos of θ/4;
+// the 2·acos|a·b| form reads float round-off as ~0.05°).
 double angular_distance(const Quat& a, const Quat& b);
 
 // ---- derivatives (Grassia §3) -------------------------------------------------
@@ -143,7 +144,10 @@ Quat integrate_angular_velocity(const Quat& q, const Vec3& omega, double dt);
 
 // q = swing · twist, twist a rotation about `axis` (in the moving frame), swing a
 // rotation about an axis perpendicular to it. For a pure 180° swing the twist is
-// the identity.
+// the identity; so it is when the twist part (w, q·axis) has a norm below
+// kSwingTwistDegenerate: there the twist is ill-conditioned (round-off δ ≈ 1e-16
+// turns it by δ/norm), and a swing within √ε of 180° carries the whole rotation.
+constexpr double kSwingTwistDegenerate = 1.5e-8;  // ≈ √ε: kept twists are exact to ~1e-8 rad
 struct SwingTwist {
   Quat swing;
   Quat twist;

@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
 
   int exit_code = kExitOk;
   add_methods_command(app, exit_code);
+  add_eval_command(app, exit_code);
 
   try {
     app.parse(argc, argv);

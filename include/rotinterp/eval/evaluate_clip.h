@@ -1,0 +1,42 @@
+// Evaluating one clip: decimate, rebuild with each method, measure (eval/metrics.h).
+//
+// The clip's frames are t_k = start + k·frame_time, k < frame_count() (for a clip
+// without a frame time: the key times of its longest rotation track). The
+// original's value at a frame is its key there, or the slerp of its two
+// neighbouring keys for sparse tracks; translations are linear between keys. For
+// keep_every N the keys are frames 0, N, 2N, … and always the last; each method is
+// built per joint on those keys and evaluated at every frame and, with subframe K,
+// at K evenly spaced times between consecutive frames, where the reference is the
+// slerp of the two original frames (or `truth`, when given, everywhere).
+#pragma once
+
+#include "rotinterp/clip/clip.h"
+#include "rotinterp/core/result.h"
+#include "rotinterp/eval/error_row.h"
+#include "rotinterp/eval/metrics.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace rotinterp {
+
+// The exact local rotation and translation of every joint at time t (seconds):
+// analytic truth for synthetic clips.
+using TruthFn = std::function<void(double t, std::vector<Quat>& rotation, std::vector<Vec3>& translation)>;
+
+struct ClipEvalOptions {
+  std::vector<std::string> methods;  // registry names, evaluated in this order
+  std::vector<int> keep_every;       // each ≥ 1, in this order
+  int subframe = 0;                  // extra samples between consecutive frames (0 … 1000)
+  double shell_distance_m = kDefaultShellDistanceMetres;  // metres, converted by Clip::unit_scale
+  TruthFn truth;                     // optional reference instead of the clip's frames
+};
+
+// Rows for every method × keep_every × joint, then End Site, in that order. The
+// clip must be valid (read_clip's output is). Errors name the clip id and the
+// joint or method that failed.
+Result<std::vector<ErrorRow>> evaluate_clip(const Clip& clip, const std::string& clip_id,
+                                            const ClipEvalOptions& options);
+
+}  // namespace rotinterp

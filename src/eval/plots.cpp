@@ -93,13 +93,13 @@ Status spacing_plot(const Summary& s, const std::filesystem::path& file) {
 
   AtomicOutput out(file);
   begin_page(out.temp_path(), 1200, 800);
-  plvpor(0.09, 0.80, 0.11, 0.90);
+  plvpor(0.12, 0.80, 0.11, 0.90);
   plwind(xmin - 0.25, xmax + 0.25, ymin, ymax);
   plcol0(kGrid);
   plbox("g", 1.0, 0, "g", 1.0, 0);
   plcol0(kText);
   plslabelfunc(log_labels, nullptr);
-  plbox("bcnsto", 1.0, 0, "bcnstlov", 1.0, 0);
+  plbox("bcnto", 1.0, 0, "bcnstlov", 1.0, 0);
   plslabelfunc(nullptr, nullptr);
   pllab("keys every N frames (N, log scale)", "angle error (degrees, log scale)", "");
   plmtex("t", 2.0, 0.5, 0.5,
@@ -141,15 +141,15 @@ Status worst_clip_plot(const Summary& s, const std::filesystem::path& file) {
 
   AtomicOutput out(file);
   begin_page(out.temp_path(), 1400, 850);
-  plvpor(0.08, 0.82, 0.30, 0.90);
+  plvpor(0.09, 0.80, 0.26, 0.86);
   plwind(-0.5, xmax + 0.5, 0, ymax * 1.08);
   plcol0(kGrid);
   plbox("", 0, 0, "g", 0, 0);
   plcol0(kText);
   plbox("bct", 1.0, 1, "bcnstv", 0, 0);
-  plmtex("l", 4.5, 0.5, 0.5, "RMS angle error (degrees)");
-  std::string title = "Per-joint error of the worst clip: " + s.worst_clip;
-  if (title.size() > 110) title = "Per-joint error of the worst clip: …" + s.worst_clip.substr(s.worst_clip.size() - 70);
+  plmtex("l", 3.5, 0.5, 0.5, "RMS angle error (degrees)");
+  std::string title = "Per-joint RMS error of the worst clip: " + s.worst_clip;
+  if (title.size() > 110) title = "Per-joint RMS error of the worst clip: …" + s.worst_clip.substr(s.worst_clip.size() - 70);
   plmtex("t", 3.0, 0.5, 0.5, title.c_str());
   plmtex("t", 1.5, 0.5, 0.5, fmt::format("keys every {} frames", s.worst_keep_every).c_str());
   plschr(0.0, joints.size() > 40 ? 0.65 : 0.85);

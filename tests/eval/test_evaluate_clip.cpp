@@ -87,7 +87,9 @@ TEST(EvaluateClip, SubframesCompareAgainstTheSlerpOfFramesOrTheTruth) {
   ASSERT_TRUE(rows.ok()) << rows.error();
   for (const ErrorRow& r : *rows) {
     EXPECT_EQ(r.samples, 30u * 5u + 1u);
-    if (!r.end_site) EXPECT_LT(r.max_deg, 1e-6);
+    if (!r.end_site) {
+      EXPECT_LT(r.max_deg, 1e-6);
+    }
   }
   // A truth that is off by a fixed 2° about z for joint 0 reads 2° there.
   o.truth = [&](double t, std::vector<Quat>& rot, std::vector<Vec3>& tr) {
@@ -104,10 +106,11 @@ TEST(EvaluateClip, SubframesCompareAgainstTheSlerpOfFramesOrTheTruth) {
   ASSERT_TRUE(rows.ok()) << rows.error();
   for (const ErrorRow& r : *rows) {
     if (r.end_site) continue;
-    if (r.joint == "j0")
+    if (r.joint == "j0") {
       EXPECT_NEAR(r.rms_deg, 2.0, 1e-6);
-    else
+    } else {
       EXPECT_LT(r.max_deg, 1e-6);
+    }
   }
 }
 

@@ -13,6 +13,8 @@
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/io/read.h"
 
+#include <unistd.h>
+
 #include <assimp/Importer.hpp>
 #include <assimp/config.h>
 #include <assimp/scene.h>

@@ -10,6 +10,8 @@
 #include <cstdio>
 #include <memory>
 #include <sstream>
+#include <string>
+#include <vector>
 
 namespace rotinterp::cli {
 
@@ -99,7 +101,10 @@ int run(const EvalArgs& a) {
                a.no_plots || report->summary.clips == 0 ? "" : ", and PNG plots");
   }
   if (!report->failures.empty()) {
-    std::fprintf(stderr, "rotinterp: %zu of %zu files failed (listed above and in %s/%s)\n", report->failures.size(),
+    std::vector<std::string> bad;
+    for (const EvalFailure& f : report->failures)
+      if (std::find(bad.begin(), bad.end(), f.file) == bad.end()) bad.push_back(f.file);
+    std::fprintf(stderr, "rotinterp: %zu of %zu files had failures (listed above and in %s/%s)\n", bad.size(),
                  report->files, a.output.c_str(), kSummaryJsonName);
     return kExitPartial;
   }

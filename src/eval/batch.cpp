@@ -101,11 +101,21 @@ Status make_dir(const fs::path& dir) {
   return Ok{};
 }
 
-// One clip's outcome.
+// One clip's outcome: its rows (methods in order) and its failures.
 struct Outcome {
-  bool done = false;
   std::vector<ErrorRow> rows;
-  std::optional<EvalFailure> failure;
+  std::vector<EvalFailure> failures;
+};
+
+// A clip in flight: read and prepared once (by the first of its tasks to run),
+// then shared by its method tasks.
+struct ClipSlot {
+  std::once_flag prepared;
+  std::shared_ptr<const ClipReference> reference;
+  std::optional<EvalFailure> load_failure;
+  std::vector<std::vector<ErrorRow>> rows;         // per method
+  std::vector<std::optional<EvalFailure>> failed;  // per method
+  std::size_t remaining = 0;                       // method tasks not yet finished
 };
 
 }  // namespace
@@ -126,8 +136,7 @@ Result<EvalReport> run_eval(const EvalOptions& opt) {
   if (Status s = make_dir(opt.output_dir); !s) return make_error(s.error());
 
   unsigned hw = std::max(1u, std::thread::hardware_concurrency());
-  const std::size_t jobs = std::max<std::size_t>(
-      1, std::min<std::size_t>(opt.jobs > 0 ? static_cast<std::size_t>(opt.jobs) : hw, std::max<std::size_t>(1, files.size())));
+  const std::size_t jobs = opt.jobs > 0 ? static_cast<std::size_t>(opt.jobs) : hw;
   const std::size_t window = 2 * jobs;
 
   EvalReport report;
@@ -137,38 +146,80 @@ Result<EvalReport> run_eval(const EvalOptions& opt) {
   if (!csv) return make_error(csv_out.target().string() + ": cannot write");
   csv << error_csv_header() << '\n';
 
+  // Work items are (clip, method) pairs in input order, so one long clip is shared
+  // by the workers too; a clip's slot lives until its last method is done.
+  const std::size_t nm = opt.clip.methods.size();
+  const std::size_t tasks = files.size() * nm;
   std::mutex mutex;
   std::condition_variable cv;
-  std::map<std::size_t, Outcome> pending;  // finished, not yet written
-  std::size_t next_to_start = 0, next_to_write = 0;
+  std::map<std::size_t, std::shared_ptr<ClipSlot>> slots;  // clips in flight
+  std::map<std::size_t, Outcome> pending;                  // finished, not yet written
+  std::size_t next_task = 0, next_to_write = 0;
   bool abort = false;
+
+  auto prepare = [&](std::size_t i, ClipSlot& slot) {
+    auto clip = read_clip(files[i]);
+    if (!clip) {
+      slot.load_failure = EvalFailure{files[i], clip.error()};
+      return;
+    }
+    ClipEvalOptions copt = opt.clip;
+    if (opt.truth_for) copt.truth = opt.truth_for(files[i], *clip);
+    auto ref = prepare_reference(*clip, files[i], copt);
+    if (!ref)
+      slot.load_failure = EvalFailure{files[i], ref.error()};
+    else
+      slot.reference = std::make_shared<const ClipReference>(std::move(*ref));
+  };
 
   auto worker = [&] {
     for (;;) {
-      std::size_t i;
+      std::size_t i, m;
+      std::shared_ptr<ClipSlot> slot;
       {
         std::unique_lock<std::mutex> lock(mutex);
-        cv.wait(lock, [&] { return abort || next_to_start >= files.size() || next_to_start < next_to_write + window; });
-        if (abort || next_to_start >= files.size()) return;
-        i = next_to_start++;
+        cv.wait(lock, [&] { return abort || next_task >= tasks || next_task / nm < next_to_write + window; });
+        if (abort || next_task >= tasks) return;
+        i = next_task / nm;
+        m = next_task % nm;
+        ++next_task;
+        auto& s = slots[i];
+        if (!s) {
+          s = std::make_shared<ClipSlot>();
+          s->rows.resize(nm);
+          s->failed.resize(nm);
+          s->remaining = nm;
+        }
+        slot = s;
       }
-      Outcome o;
-      o.done = true;
-      auto clip = read_clip(files[i]);
-      if (!clip) {
-        o.failure = EvalFailure{files[i], clip.error()};
-      } else {
-        ClipEvalOptions copt = opt.clip;
-        if (opt.truth_for) copt.truth = opt.truth_for(files[i], *clip);
-        auto rows = evaluate_clip(*clip, files[i], copt);
-        if (rows)
-          o.rows = std::move(*rows);
+      std::call_once(slot->prepared, prepare, i, std::ref(*slot));
+      std::vector<ErrorRow> rows;
+      std::optional<EvalFailure> failure;
+      if (slot->reference) {
+        auto r = evaluate_method(*slot->reference, opt.clip.methods[m], opt.clip);
+        if (r)
+          rows = std::move(*r);
         else
-          o.failure = EvalFailure{files[i], rows.error()};
+          failure = EvalFailure{files[i], r.error()};
       }
       {
         std::lock_guard<std::mutex> lock(mutex);
-        pending[i] = std::move(o);
+        slot->rows[m] = std::move(rows);
+        slot->failed[m] = std::move(failure);
+        if (--slot->remaining == 0) {
+          Outcome o;
+          if (slot->load_failure) {
+            o.failures.push_back(*slot->load_failure);
+          } else {
+            for (std::size_t k = 0; k < nm; ++k) {
+              if (slot->failed[k]) o.failures.push_back(*slot->failed[k]);
+              o.rows.insert(o.rows.end(), std::make_move_iterator(slot->rows[k].begin()),
+                            std::make_move_iterator(slot->rows[k].end()));
+            }
+          }
+          pending[i] = std::move(o);
+          slots.erase(i);
+        }
       }
       cv.notify_all();
     }
@@ -186,10 +237,11 @@ Result<EvalReport> run_eval(const EvalOptions& opt) {
       o = std::move(pending[next_to_write]);
       pending.erase(next_to_write);
     }
-    if (o.failure) {
-      if (opt.on_failure) opt.on_failure(*o.failure);
-      report.failures.push_back(std::move(*o.failure));
-    } else {
+    for (EvalFailure& f : o.failures) {
+      if (opt.on_failure) opt.on_failure(f);
+      report.failures.push_back(std::move(f));
+    }
+    if (!o.rows.empty()) {
       for (const ErrorRow& r : o.rows) csv << format_error_row(r) << '\n';
       builder.add_clip(o.rows);
       ++report.clips_evaluated;

@@ -99,13 +99,13 @@ Summary SummaryBuilder::finish() const {
 
 std::string format_summary_table(const Summary& s) {
   std::string out = fmt::format("{} clip{}\n", s.clips, s.clips == 1 ? "" : "s");
-  out += fmt::format("{:<8} {:>5} {:>10} {:>10} {:>10} {:>10} {:>10} {:>10} {:>12}\n", "method", "keep", "rms°",
+  out += fmt::format("{:<10} {:>5} {:>10} {:>10} {:>10} {:>10} {:>10} {:>10} {:>12}\n", "method", "keep", "rms°",
                      "p95°", "max°", "swing°", "twist°", "pos max%", "acc rms°/s²");
   std::string last;
   for (const SummaryEntry& e : s.entries) {
     if (!last.empty() && e.method != last) out += '\n';
     last = e.method;
-    out += fmt::format("{:<8} {:>5} {:>10.4g} {:>10.4g} {:>10.4g} {:>10.4g} {:>10.4g} {:>10.4g} {:>12.4g}\n", e.method,
+    out += fmt::format("{:<10} {:>5} {:>10.4g} {:>10.4g} {:>10.4g} {:>10.4g} {:>10.4g} {:>10.4g} {:>12.4g}\n", e.method,
                        e.keep_every, e.rms_deg, e.p95_deg, e.max_deg, e.swing_rms_deg, e.twist_rms_deg,
                        e.pos_max_pct, e.acc_rms);
   }

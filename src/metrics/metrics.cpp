@@ -103,19 +103,38 @@ double metres_in_clip_units(const Clip& clip, double metres) {
 
 // ---- rotation error -------------------------------------------------------------------
 
-RotationError rotation_error(const Quat* ref, const Quat* test, std::size_t n, const Vec3& bone_axis,
+RotationError rotation_error(const Quat* ref, const Quat* test, std::size_t n, const Vec3& bone_axis_in,
                              std::vector<double>& scratch) {
   RotationError out;
   scratch.resize(3 * n);
   double* angle = scratch.data();
   double* swing = angle + n;
   double* twist = swing + n;
+  const double an = bone_axis_in.norm();
+  const bool has_axis = an > 0.0 && std::isfinite(an);
+  const Vec3 axis = has_axis ? Vec3(bone_axis_in / an) : Vec3::Zero();
   for (std::size_t i = 0; i < n; ++i) {
-    angle[i] = angular_distance(ref[i], test[i]);
-    const Quat e = normalized_or_identity(ref[i]).conjugate() * normalized_or_identity(test[i]);
-    const SwingTwist st = swing_twist(e, bone_axis);
-    swing[i] = angular_distance(st.swing, Quat::Identity());
-    twist[i] = angular_distance(st.twist, Quat::Identity());
+    // e = q_ref⁻¹·q_test = (w, v), taken with w ≥ 0. Its angle is 2·atan2(|v|, w) —
+    // the same number as angular_distance(ref, test), without its normalizations.
+    // The twist about the axis is (w, p·axis)/n with p = v·axis, n = √(w² + p²); the
+    // swing e·twist⁻¹ has real part n, so its angle is 2·atan2(|v − p·axis|, n).
+    // These are the angles of core swing_twist(e, axis), in closed form (tested).
+    Quat e = ref[i].conjugate() * test[i];
+    const double en = e.norm();
+    if (!(en > 0.0) || !std::isfinite(en)) e = Quat::Identity(); else e.coeffs() /= en;
+    double w = e.w();
+    Vec3 v = e.vec();
+    if (w < 0.0) w = -w, v = -v;
+    angle[i] = 2.0 * std::atan2(v.norm(), w);
+    const double p = v.dot(axis);
+    const double tw = std::sqrt(w * w + p * p);
+    if (!has_axis || tw < kSwingTwistDegenerate) {
+      swing[i] = angle[i];  // no axis, or a swing within √ε of 180°: all swing
+      twist[i] = 0.0;
+    } else {
+      twist[i] = 2.0 * std::atan2(std::abs(p), w);
+      swing[i] = 2.0 * std::atan2((v - p * axis).norm(), tw);
+    }
   }
   out.angle = error_stats(angle, n);
   out.swing = error_stats(swing, n);

@@ -74,7 +74,7 @@ TEST(EvalCli, ShardsMergedEqualASingleRun) {
   const fs::path in = clip_dir("shards", false);
   const fs::path single = fresh_dir("shards_single"), a = fresh_dir("shards_a"), b = fresh_dir("shards_b"),
                  c = fresh_dir("shards_c"), merged = fresh_dir("shards_merged");
-  const std::string common = "eval " + in.string() + " --methods slerp,squad,bf --keep-every 2,8 -q --no-plots ";
+  const std::string common = "eval " + in.string() + " --methods slerp,squad,expmap --keep-every 2,8 -q --no-plots ";
   ASSERT_EQ(run_cli(common + "-j 2 -o " + single.string()).exit_code, 0);
   ASSERT_EQ(run_cli(common + "-j 1 --shard 1/3 -o " + a.string()).exit_code, 0);
   ASSERT_EQ(run_cli(common + "-j 1 --shard 2/3 -o " + b.string()).exit_code, 0);

@@ -146,6 +146,11 @@ TEST(EvaluateClip, ErrorGrowsWithKeySpacingOnRealClipsForEveryMethod) {
   for (const char* file : {"/bvh/NC_bandai1_walk_normal_001.bvh", "/bvh/cmu_01_01.bvh"}) {
     auto clip = read_clip(std::string(ROTINTERP_SHARED_DATA) + file);
     ASSERT_TRUE(clip.ok()) << clip.error();
+    // The first 400 frames are enough and keep the test short.
+    for (RotationTrack& r : clip->rotations)
+      if (r.times.size() > 400) r.times.resize(400), r.keys.resize(400);
+    for (auto& t : clip->translations)
+      if (t && t->times.size() > 400) t->times.resize(400), t->keys.resize(400);
     ClipEvalOptions o;
     for (const MethodInfo& m : methods()) o.methods.push_back(m.name);
     o.keep_every = {2, 4, 8, 16};

@@ -112,6 +112,23 @@ TEST(Metrics, SwingAfterTwistSplitsIntoBothAngles) {
   EXPECT_GT(e.angle.rms, std::max(swing, twist));
 }
 
+TEST(Metrics, ClosedFormsAgreeWithAngularDistanceAndCoreSwingTwist) {
+  std::mt19937 rng(19);
+  std::vector<double> scratch;
+  for (int trial = 0; trial < 2000; ++trial) {
+    const Quat a = random_orientation(rng);
+    // Mostly small and moderate errors, some near 180°.
+    const double theta = trial % 10 == 0 ? kPi - 1e-3 * (trial % 7) : 1e-4 * std::pow(10.0, trial % 5);
+    const Quat b = a * exp(RotVec::from_axis_angle(random_axis(rng), theta));
+    const Vec3 axis = random_axis(rng);
+    const RotationError e = rotation_error(&a, &b, 1, axis, scratch);
+    EXPECT_NEAR(e.angle.max, angular_distance(a, b), 1e-12);
+    const SwingTwist st = swing_twist(a.conjugate() * b, axis);
+    EXPECT_NEAR(e.swing.max, angular_distance(st.swing, Quat::Identity()), 1e-9);
+    EXPECT_NEAR(e.twist.max, angular_distance(st.twist, Quat::Identity()), 1e-9);
+  }
+}
+
 TEST(Metrics, StatisticsMatchHandComputedValues) {
   std::vector<double> v;
   for (int i = 1; i <= 100; ++i) v.push_back(101 - i);  // 100 … 1, unsorted on purpose

@@ -1,11 +1,13 @@
 // The batch behind `rotinterp eval`: many clips, in parallel, into DIR/errors.csv,
 // DIR/summary.json and PNG plots; and the merge of shard outputs.
 //
-// Clips are evaluated by `jobs` worker threads; results are written in input
-// order as they complete, and a worker does not start clip i until clip
-// i − 2·jobs has been written, so memory is bounded by the clips in flight, not
-// by the batch. A file that fails to load or evaluate is reported (on_failure,
-// summary.json "failed") and skipped; the others are still written.
+// `jobs` worker threads take (clip, method) pairs in input order — a clip is read
+// and its reference prepared once, by the first of its pairs — so a long clip is
+// shared by the workers too. Results are written in input order as they complete,
+// and no worker starts clip i until clip i − 2·jobs has been written, so memory is
+// bounded by the clips in flight, not by the batch. A file that fails to load is
+// reported (on_failure, summary.json "failed") and skipped; a method that fails on
+// a clip is reported the same way and that clip's other methods are still written.
 #pragma once
 
 #include "rotinterp/core/progress.h"

@@ -33,9 +33,37 @@ struct ClipEvalOptions {
   TruthFn truth;                     // optional reference instead of the clip's frames
 };
 
-// Rows for every method × keep_every × joint, then End Site, in that order. The
-// clip must be valid (read_clip's output is). Errors name the clip id and the
-// joint or method that failed.
+// The reference side of one clip, computed once and shared (read-only) by the
+// methods: frame and sample times, the original at its frames, the reference at
+// every sample (joint-major) and its world poses, and the per-clip constants.
+struct ClipReference {
+  std::string clip_id;
+  Skeleton skeleton;
+  std::vector<double> frames;                 // frame times, seconds
+  std::vector<double> times;                  // sample times: frames and subframes
+  std::size_t per_frame = 1;                  // samples per frame interval (subframe + 1)
+  double sample_dt = 0;                       // uniform sample spacing (s), 0 if the clip has no frame time
+  std::vector<std::vector<Quat>> original;    // [joint][frame]: where keys are taken
+  std::vector<std::vector<Quat>> reference;   // [joint][sample]
+  std::vector<std::vector<Vec3>> translation; // [joint][sample]: used for both sides
+  std::vector<WorldPose> world;               // [sample]: forward kinematics of the reference
+  std::vector<Vec3> bone_axis;                // [joint], see bone_axes()
+  std::vector<double> reference_acc_rms;      // [joint], rad/s²
+  double height = 1;                          // clip units
+  double shell_distance = 0;                  // clip units
+};
+
+// Builds the reference of `clip` (validated first). Errors name the clip id.
+Result<ClipReference> prepare_reference(const Clip& clip, const std::string& clip_id,
+                                        const ClipEvalOptions& options);
+
+// Rows of one method for every keep_every × joint, then End Site. Errors name the
+// clip, the joint and the method.
+Result<std::vector<ErrorRow>> evaluate_method(const ClipReference& reference, const std::string& method,
+                                              const ClipEvalOptions& options);
+
+// Rows for every method × keep_every × joint, then End Site, in that order: the
+// two steps above. The first error ends it.
 Result<std::vector<ErrorRow>> evaluate_clip(const Clip& clip, const std::string& clip_id,
                                             const ClipEvalOptions& options);
 

@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   int exit_code = kExitOk;
   add_methods_command(app, exit_code);
   add_eval_command(app, exit_code);
+  add_info_command(app, exit_code);
 
   try {
     app.parse(argc, argv);

@@ -211,11 +211,14 @@ Result<EvalReport> run_eval(const EvalOptions& opt) {
           if (slot->load_failure) {
             o.failures.push_back(*slot->load_failure);
           } else {
-            for (std::size_t k = 0; k < nm; ++k) {
+            for (std::size_t k = 0; k < nm; ++k)
               if (slot->failed[k]) o.failures.push_back(*slot->failed[k]);
-              o.rows.insert(o.rows.end(), std::make_move_iterator(slot->rows[k].begin()),
-                            std::make_move_iterator(slot->rows[k].end()));
-            }
+            // Every method is compared on the same clips: a clip where one fails is
+            // skipped whole.
+            if (o.failures.empty())
+              for (std::size_t k = 0; k < nm; ++k)
+                o.rows.insert(o.rows.end(), std::make_move_iterator(slot->rows[k].begin()),
+                              std::make_move_iterator(slot->rows[k].end()));
           }
           pending[i] = std::move(o);
           slots.erase(i);

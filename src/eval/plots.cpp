@@ -66,6 +66,21 @@ void legend(const std::vector<std::string>& names, const std::vector<int>& style
            widths.data(), colours.data(), sscale.data(), nsym.data(), sym.data());
 }
 
+// Right edge of the plot viewport that leaves room for the legend's longest name.
+double viewport_right(const std::vector<std::string>& names) {
+  std::size_t longest = 0;
+  for (const std::string& n : names) longest = std::max(longest, n.size());
+  return std::clamp(0.88 - 0.0115 * static_cast<double>(longest), 0.55, 0.82);
+}
+
+// `text` cut to its last `max_chars` characters (UTF-8 safe), with a leading ellipsis.
+std::string tail(const std::string& text, std::size_t max_chars) {
+  if (text.size() <= max_chars) return text;
+  std::size_t start = text.size() - max_chars;
+  while (start < text.size() && (static_cast<unsigned char>(text[start]) & 0xC0) == 0x80) ++start;
+  return "…" + text.substr(start);
+}
+
 Status finish(AtomicOutput& out) {
   plend();
   std::error_code ec;
@@ -93,7 +108,7 @@ Status spacing_plot(const Summary& s, const std::filesystem::path& file) {
 
   AtomicOutput out(file);
   begin_page(out.temp_path(), 1200, 800);
-  plvpor(0.12, 0.80, 0.11, 0.90);
+  plvpor(0.12, viewport_right(methods), 0.11, 0.90);
   plwind(xmin - 0.25, xmax + 0.25, ymin, ymax);
   plcol0(kGrid);
   plbox("g", 1.0, 0, "g", 1.0, 0);
@@ -141,17 +156,17 @@ Status worst_clip_plot(const Summary& s, const std::filesystem::path& file) {
 
   AtomicOutput out(file);
   begin_page(out.temp_path(), 1400, 850);
-  plvpor(0.09, 0.80, 0.26, 0.86);
+  plvpor(0.09, viewport_right(methods), 0.26, 0.86);
   plwind(-0.5, xmax + 0.5, 0, ymax * 1.08);
   plcol0(kGrid);
   plbox("", 0, 0, "g", 0, 0);
   plcol0(kText);
   plbox("bct", 1.0, 1, "bcnstv", 0, 0);
   plmtex("l", 3.5, 0.5, 0.5, "RMS angle error (degrees)");
-  std::string title = "Per-joint RMS error of the worst clip: " + s.worst_clip;
-  if (title.size() > 110) title = "Per-joint RMS error of the worst clip: …" + s.worst_clip.substr(s.worst_clip.size() - 70);
-  plmtex("t", 3.0, 0.5, 0.5, title.c_str());
-  plmtex("t", 1.5, 0.5, 0.5, fmt::format("keys every {} frames", s.worst_keep_every).c_str());
+  plmtex("t", 2.6, 0.5, 0.5,
+         fmt::format("Per-joint RMS error of the worst clip, keys every {} frames", s.worst_keep_every).c_str());
+  plschr(0.0, 0.9);
+  plmtex("t", 1.2, 0.5, 0.5, tail(s.worst_clip, 64).c_str());
   plschr(0.0, joints.size() > 40 ? 0.65 : 0.85);
   const double span = xmax + 1.0;
   for (std::size_t i = 0; i < joints.size(); ++i)

@@ -6,8 +6,8 @@
 // shared by the workers too. Results are written in input order as they complete,
 // and no worker starts clip i until clip i − 2·jobs has been written, so memory is
 // bounded by the clips in flight, not by the batch. A file that fails to load is
-// reported (on_failure, summary.json "failed") and skipped; a method that fails on
-// a clip is reported the same way and that clip's other methods are still written.
+// reported (on_failure, summary.json "failed") and skipped; so is a clip on which
+// a method fails, whole, so that every method is compared on the same clips.
 #pragma once
 
 #include "rotinterp/core/progress.h"

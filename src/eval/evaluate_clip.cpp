@@ -219,8 +219,8 @@ Result<std::vector<ErrorRow>> evaluate_method(const ClipReference& R, const std:
       r.rms_deg = e.angle.rms * kRadToDeg;
       r.p95_deg = e.angle.p95 * kRadToDeg;
       r.max_deg = e.angle.max * kRadToDeg;
-      r.swing_rms_deg = e.swing.rms * kRadToDeg;
-      r.twist_rms_deg = e.twist.rms * kRadToDeg;
+      r.swing_rms_deg = e.swing.rms() * kRadToDeg;
+      r.twist_rms_deg = e.twist.rms() * kRadToDeg;
       r.pos_rms = pose.joint_position[j].rms();
       r.pos_max = pose.joint_position[j].max;
       r.pos_rms_pct = r.pos_rms * pct;

@@ -106,10 +106,8 @@ double metres_in_clip_units(const Clip& clip, double metres) {
 RotationError rotation_error(const Quat* ref, const Quat* test, std::size_t n, const Vec3& bone_axis_in,
                              std::vector<double>& scratch) {
   RotationError out;
-  scratch.resize(3 * n);
+  scratch.resize(n);
   double* angle = scratch.data();
-  double* swing = angle + n;
-  double* twist = swing + n;
   const double an = bone_axis_in.norm();
   const bool has_axis = an > 0.0 && std::isfinite(an);
   const Vec3 axis = has_axis ? Vec3(bone_axis_in / an) : Vec3::Zero();
@@ -129,16 +127,14 @@ RotationError rotation_error(const Quat* ref, const Quat* test, std::size_t n, c
     const double p = v.dot(axis);
     const double tw = std::sqrt(w * w + p * p);
     if (!has_axis || tw < kSwingTwistDegenerate) {
-      swing[i] = angle[i];  // no axis, or a swing within √ε of 180°: all swing
-      twist[i] = 0.0;
+      out.swing.add(angle[i]);  // no axis, or a swing within √ε of 180°: all swing
+      out.twist.add(0.0);
     } else {
-      twist[i] = 2.0 * std::atan2(std::abs(p), w);
-      swing[i] = 2.0 * std::atan2((v - p * axis).norm(), tw);
+      out.twist.add(2.0 * std::atan2(std::abs(p), w));
+      out.swing.add(2.0 * std::atan2((v - p * axis).norm(), tw));
     }
   }
   out.angle = error_stats(angle, n);
-  out.swing = error_stats(swing, n);
-  out.twist = error_stats(twist, n);
   return out;
 }
 

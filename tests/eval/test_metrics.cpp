@@ -74,7 +74,7 @@ TEST(Metrics, PureTwistAboutTheBoneReadsAsTwistOnly) {
       test[i] = ref[i] * exp(RotVec::from_axis_angle(bone, theta));
     }
     const RotationError e = rotation_error(ref.data(), test.data(), ref.size(), bone, scratch);
-    EXPECT_NEAR(e.twist.rms, theta, 1e-12) << theta;
+    EXPECT_NEAR(e.twist.rms(), theta, 1e-12) << theta;
     EXPECT_NEAR(e.swing.max, 0.0, 1e-12) << theta;
   }
 }
@@ -91,7 +91,7 @@ TEST(Metrics, PureSwingPerpendicularToTheBoneReadsAsSwingOnly) {
       test[i] = ref[i] * exp(RotVec::from_axis_angle(perp, theta));
     }
     const RotationError e = rotation_error(ref.data(), test.data(), ref.size(), bone, scratch);
-    EXPECT_NEAR(e.swing.rms, theta, 1e-12) << theta;
+    EXPECT_NEAR(e.swing.rms(), theta, 1e-12) << theta;
     EXPECT_NEAR(e.twist.max, 0.0, 1e-12) << theta;
   }
 }
@@ -107,9 +107,10 @@ TEST(Metrics, SwingAfterTwistSplitsIntoBothAngles) {
     test[i] = ref[i] * exp(RotVec(swing, 0, 0)) * exp(RotVec(0, twist, 0));
   }
   const RotationError e = rotation_error(ref.data(), test.data(), ref.size(), bone, scratch);
-  EXPECT_NEAR(e.swing.rms, swing, 1e-12);
-  EXPECT_NEAR(e.twist.rms, twist, 1e-12);
+  EXPECT_NEAR(e.swing.rms(), swing, 1e-12);
+  EXPECT_NEAR(e.twist.rms(), twist, 1e-12);
   EXPECT_GT(e.angle.rms, std::max(swing, twist));
+  EXPECT_EQ(e.swing.count, ref.size());
 }
 
 TEST(Metrics, ClosedFormsAgreeWithAngularDistanceAndCoreSwingTwist) {

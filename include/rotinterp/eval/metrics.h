@@ -89,9 +89,9 @@ double metres_in_clip_units(const Clip& clip, double metres);
 // ---- rotation error of one joint ----------------------------------------------------
 
 struct RotationError {
-  ErrorStats angle;  // geodesic angle between reference and test, rad
-  ErrorStats swing;  // swing part of the error rotation, rad
-  ErrorStats twist;  // twist part about the bone axis, rad
+  ErrorStats angle;    // geodesic angle between reference and test, rad
+  RunningError swing;  // swing part of the error rotation, rad (no percentile needed)
+  RunningError twist;  // twist part about the bone axis, rad
 };
 
 // Compares ref[i] with test[i] for i < n. `bone_axis` is in the joint's frame (see

@@ -164,7 +164,14 @@ Result<EvalReport> run_eval(const EvalOptions& opt) {
       return;
     }
     ClipEvalOptions copt = opt.clip;
-    if (opt.truth_for) copt.truth = opt.truth_for(files[i], *clip);
+    if (opt.truth_for) {
+      auto truth = opt.truth_for(files[i], *clip);
+      if (!truth) {
+        slot.load_failure = EvalFailure{files[i], truth.error()};
+        return;
+      }
+      copt.truth = std::move(*truth);
+    }
     auto ref = prepare_reference(*clip, files[i], copt);
     if (!ref)
       slot.load_failure = EvalFailure{files[i], ref.error()};

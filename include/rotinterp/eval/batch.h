@@ -34,9 +34,9 @@ struct EvalOptions {
   int jobs = 0;                               // worker threads; 0 = all cores
   int shard_index = 1, shard_count = 1;       // evaluate shard_of(files, index, count)
   bool plots = true;                          // write the PNG plots
-  // Analytic truth for a clip file, when it has one (synth clips); may return an
-  // empty function. Called from worker threads.
-  std::function<TruthFn(const std::string& file, const Clip& clip)> truth_for;
+  // Analytic truth for a clip file (synth clips); an error fails that clip. Unset:
+  // every clip is compared with its own frames. Called from worker threads.
+  std::function<Result<TruthFn>(const std::string& file, const Clip& clip)> truth_for;
   ProgressFn progress;                                     // clips done / clips in all
   std::function<void(const EvalFailure&)> on_failure;      // called in input order, from the calling thread
 };

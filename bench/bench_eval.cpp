@@ -23,6 +23,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <filesystem>
 #include <string>
 #include <thread>
@@ -35,18 +36,24 @@ namespace {
 
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-double import_all(const std::vector<std::string>& files) {
+// CPU seconds of the whole process (all threads): less sensitive than wall time to
+// other work on a shared machine, for the single-threaded ratio.
+double cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
+
+double import_all(const std::vector<std::string>& files, double& cpu) {
   const auto t0 = Clock::now();
+  const double c0 = cpu_seconds();
   for (const std::string& f : files) {
     Assimp::Importer importer;
     importer.SetPropertyBool(AI_CONFIG_IMPORT_NO_SKELETON_MESHES, true);
     const aiScene* scene = importer.ReadFile(f, 0);
     if (scene && scene->mNumAnimations == 0) std::fprintf(stderr, "note: %s has no animation\n", f.c_str());
   }
+  cpu = cpu_seconds() - c0;
   return seconds_since(t0);
 }
 
-double eval_all(const std::vector<fs::path>& inputs, int jobs, const fs::path& out, std::size_t& frames) {
+double eval_all(const std::vector<fs::path>& inputs, int jobs, const fs::path& out, std::size_t& frames, double& cpu) {
   rotinterp::EvalOptions o;
   o.inputs = inputs;
   o.output_dir = out;
@@ -55,8 +62,10 @@ double eval_all(const std::vector<fs::path>& inputs, int jobs, const fs::path& o
   o.jobs = jobs;
   o.plots = false;
   const auto t0 = Clock::now();
+  const double c0 = cpu_seconds();
   auto r = rotinterp::run_eval(o);
   const double s = seconds_since(t0);
+  cpu = cpu_seconds() - c0;
   if (!r) {
     std::fprintf(stderr, "bench_eval: %s\n", r.error().c_str());
     std::exit(1);
@@ -91,19 +100,22 @@ int main(int argc, char** argv) {
     if (auto c = rotinterp::read_clip(f)) clip_frames += c->frame_count(), ++clips;
 
   const fs::path out = fs::temp_directory_path() / ("rotinterp_bench_eval_" + std::to_string(::getpid()));
-  double t_import = 1e300, t_j1 = 1e300, t_j2 = 1e300;
+  double t_import = 1e300, t_j1 = 1e300, t_j2 = 1e300, c_import = 1e300, c_j1 = 1e300, c;
   std::size_t joint_frames = 0;
   for (int r = 0; r < repeat; ++r) {
-    t_import = std::min(t_import, import_all(*files));
-    t_j1 = std::min(t_j1, eval_all(inputs, 1, out, joint_frames));
-    t_j2 = std::min(t_j2, eval_all(inputs, 2, out, joint_frames));
+    t_import = std::min(t_import, import_all(*files, c));
+    c_import = std::min(c_import, c);
+    t_j1 = std::min(t_j1, eval_all(inputs, 1, out, joint_frames, c));
+    c_j1 = std::min(c_j1, c);
+    t_j2 = std::min(t_j2, eval_all(inputs, 2, out, joint_frames, c));
   }
   fs::remove_all(out);
   const std::size_t combos = rotinterp::methods().size() * 4;
   std::printf("files %zu (clips loaded %zu), clip-frames %zu, methods %zu x keep-every {2,4,8,16}, best of %d\n",
               files->size(), clips, clip_frames, rotinterp::methods().size(), repeat);
-  std::printf("assimp import alone       %8.3f s\n", t_import);
-  std::printf("eval --jobs 1             %8.3f s   ratio eval/import %.2f (goal <= 2)\n", t_j1, t_j1 / t_import);
+  std::printf("assimp import alone       %8.3f s wall  %8.3f s CPU\n", t_import, c_import);
+  std::printf("eval --jobs 1             %8.3f s wall  %8.3f s CPU   ratio eval/import %.2f wall, %.2f CPU (goal <= 2)\n",
+              t_j1, c_j1, t_j1 / t_import, c_j1 / c_import);
   std::printf("eval --jobs 2             %8.3f s   speedup %.2fx (goal >= 1.7; %u hardware threads)\n", t_j2,
               t_j1 / t_j2, std::thread::hardware_concurrency());
   std::printf("throughput (--jobs 1)     %8.0f clip-frames/s (each rebuilt %zu times), %.0f joint-frames/s per rebuild\n",

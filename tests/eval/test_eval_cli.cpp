@@ -114,6 +114,25 @@ TEST(EvalCli, ADirectoryWithOneBadFileEvaluatesTheOthersAndExitsThree) {
   EXPECT_EQ(j["clips_evaluated"], 4);
 }
 
+TEST(EvalCli, SubframesOfSlerpAtEveryFrameMatchTheOriginalsOwnSlerp) {
+  const fs::path out = fresh_dir("subframe");
+  const std::string clip = std::string(ROTINTERP_SHARED_DATA) + "/bvh/NC_bandai2_raise-up-both-hands_active_031.bvh";
+  const auto r = run_cli("eval " + clip + " --methods slerp,squad --keep-every 1,4 --subframe 3 -q --no-plots -o " +
+                         out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(slurp(out / "summary.json"));
+  ASSERT_EQ(j["results"].size(), 4u);
+  for (const auto& e : j["results"]) {
+    EXPECT_EQ(e["samples"].get<std::size_t>() % (50 * 4 + 1), 0u);  // 51 frames, 3 between each pair
+    if (e["method"] == "slerp" && e["keep_every"] == 1) {
+      EXPECT_LT(e["max_deg"].get<double>(), 1e-6);
+    }
+    if (e["keep_every"] == 4) {
+      EXPECT_GT(e["rms_deg"].get<double>(), 1e-3);
+    }
+  }
+}
+
 TEST(EvalCli, BadOptionValuesAreUsageErrors) {
   const fs::path out = fresh_dir("usage");
   const std::string clip = std::string(ROTINTERP_SHARED_DATA) + "/bvh/bvhio_example.bvh";

@@ -146,7 +146,8 @@ Result<ErrorRow> ErrorRowParser::parse(std::string_view line) const {
   for (int c : {kKeepEvery, kFrames, kSamples}) {
     auto v = to_double(field(c), kColumnNames[c]);
     if (!v) return make_error(v.error());
-    if (*v < 0 || *v != std::floor(*v) || *v > 1e15)
+    const double limit = c == kKeepEvery ? 1e9 : 1e15;  // keep_every is an int
+    if (*v < 0 || *v != std::floor(*v) || *v > limit)
       return make_error(std::string("column ") + kColumnNames[c] + " is not a count");
     if (c == kKeepEvery) r.keep_every = static_cast<int>(*v);
     if (c == kFrames) r.frames = static_cast<std::size_t>(*v);

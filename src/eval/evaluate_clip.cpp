@@ -40,9 +40,11 @@ Quat slerp(const Quat& q0, const Quat& q1, double u) {
   return apply_moving(q0, displacement_moving(q0, q1) * u);
 }
 
-// The original track at sorted times: its key at a key time, else the slerp of the
-// two neighbouring keys; clamped outside the keys.
-void sample_rotation(const RotationTrack& track, const std::vector<double>& times, Quat* out) {
+// A track (rotation or translation) at sorted times: its key at a key time, else
+// `blend` of the two neighbouring keys at the fraction between them; clamped
+// outside the keys.
+template <class Track, class Value, class Blend>
+void sample_track(const Track& track, const std::vector<double>& times, Value* out, Blend blend) {
   const std::size_t n = track.times.size();
   std::size_t i = 0;  // segment [i, i+1]
   for (std::size_t m = 0; m < times.size(); ++m) {
@@ -53,24 +55,18 @@ void sample_rotation(const RotationTrack& track, const std::vector<double>& time
       continue;
     }
     const double u = (t - track.times[i]) / (track.times[i + 1] - track.times[i]);
-    out[m] = u < kSnap ? track.keys[i] : u > 1.0 - kSnap ? track.keys[i + 1] : slerp(track.keys[i], track.keys[i + 1], u);
+    out[m] = u < kSnap ? track.keys[i] : u > 1.0 - kSnap ? track.keys[i + 1] : blend(track.keys[i], track.keys[i + 1], u);
   }
 }
 
+// The original's rotations: slerp between keys.
+void sample_rotation(const RotationTrack& track, const std::vector<double>& times, Quat* out) {
+  sample_track(track, times, out, slerp);
+}
+
+// The original's translations: linear between keys.
 void sample_translation(const TranslationTrack& track, const std::vector<double>& times, Vec3* out) {
-  const std::size_t n = track.times.size();
-  std::size_t i = 0;
-  for (std::size_t m = 0; m < times.size(); ++m) {
-    const double t = times[m];
-    while (i + 1 < n && track.times[i + 1] <= t) ++i;
-    if (i + 1 >= n || t <= track.times[i]) {
-      out[m] = (i + 1 >= n || t >= track.times[i]) ? track.keys[i] : track.keys[0];
-      continue;
-    }
-    const double u = (t - track.times[i]) / (track.times[i + 1] - track.times[i]);
-    out[m] = u < kSnap ? track.keys[i] : u > 1.0 - kSnap ? track.keys[i + 1]
-                                                        : Vec3(track.keys[i] + u * (track.keys[i + 1] - track.keys[i]));
-  }
+  sample_track(track, times, out, [](const Vec3& a, const Vec3& b, double u) -> Vec3 { return a + u * (b - a); });
 }
 
 // Key frames for keep_every n: 0, n, 2n, … and the last.

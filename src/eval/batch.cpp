@@ -94,6 +94,30 @@ Status write_outputs(const fs::path& dir, json meta, const Summary& summary, boo
   return Ok{};
 }
 
+// errors.csv through a temporary file: rows of one clip at a time, then commit.
+class CsvWriter {
+ public:
+  explicit CsvWriter(const fs::path& target) : out_(target), csv_(out_.temp_path(), std::ios::binary) {
+    csv_ << error_csv_header() << '\n';
+  }
+  bool good() const { return static_cast<bool>(csv_); }
+  // Writes the rows of one clip and adds them to the summary.
+  void add_clip(const std::vector<ErrorRow>& rows, SummaryBuilder& summary) {
+    for (const ErrorRow& r : rows) csv_ << format_error_row(r) << '\n';
+    summary.add_clip(rows);
+  }
+  Status commit() {
+    csv_.close();
+    if (!csv_) return make_error(out_.target().string() + ": write failed");
+    return out_.commit();
+  }
+  std::string failure() const { return out_.target().string() + ": write failed"; }
+
+ private:
+  AtomicOutput out_;
+  std::ofstream csv_;
+};
+
 Status make_dir(const fs::path& dir) {
   std::error_code ec;
   fs::create_directories(dir, ec);
@@ -141,10 +165,8 @@ Result<EvalReport> run_eval(const EvalOptions& opt) {
 
   EvalReport report;
   report.files = files.size();
-  AtomicOutput csv_out(opt.output_dir / kErrorsCsvName);
-  std::ofstream csv(csv_out.temp_path(), std::ios::binary);
-  if (!csv) return make_error(csv_out.target().string() + ": cannot write");
-  csv << error_csv_header() << '\n';
+  CsvWriter csv(opt.output_dir / kErrorsCsvName);
+  if (!csv.good()) return make_error(csv.failure());
 
   // Work items are (clip, method) pairs in input order, so one long clip is shared
   // by the workers too; a clip's slot lives until its last method is done.
@@ -252,8 +274,7 @@ Result<EvalReport> run_eval(const EvalOptions& opt) {
       report.failures.push_back(std::move(f));
     }
     if (!o.rows.empty()) {
-      for (const ErrorRow& r : o.rows) csv << format_error_row(r) << '\n';
-      builder.add_clip(o.rows);
+      csv.add_clip(o.rows, builder);
       ++report.clips_evaluated;
     }
     {
@@ -262,8 +283,8 @@ Result<EvalReport> run_eval(const EvalOptions& opt) {
     }
     cv.notify_all();
     if (opt.progress) opt.progress(next_to_write, files.size());
-    if (!csv && write_error.empty()) {
-      write_error = csv_out.target().string() + ": write failed";
+    if (!csv.good() && write_error.empty()) {
+      write_error = csv.failure();
       std::lock_guard<std::mutex> lock(mutex);
       abort = true;
       cv.notify_all();
@@ -272,9 +293,7 @@ Result<EvalReport> run_eval(const EvalOptions& opt) {
   }
   for (std::thread& t : threads) t.join();
   if (!write_error.empty()) return make_error(write_error);
-  csv.close();
-  if (!csv) return make_error(csv_out.target().string() + ": write failed");
-  if (Status s = csv_out.commit(); !s) return make_error(s.error());
+  if (Status s = csv.commit(); !s) return make_error(s.error());
 
   report.summary = builder.finish();
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -398,10 +417,8 @@ Result<EvalReport> merge_eval(const std::vector<fs::path>& dirs, const fs::path&
     readers.push_back(std::move(*r));
   }
   if (Status s = make_dir(out_dir); !s) return make_error(s.error());
-  AtomicOutput csv_out(out_dir / kErrorsCsvName);
-  std::ofstream csv(csv_out.temp_path(), std::ios::binary);
-  if (!csv) return make_error(csv_out.target().string() + ": cannot write");
-  csv << error_csv_header() << '\n';
+  CsvWriter csv(out_dir / kErrorsCsvName);
+  if (!csv.good()) return make_error(csv.failure());
   SummaryBuilder builder;
   std::string last_clip;
   for (;;) {
@@ -414,13 +431,10 @@ Result<EvalReport> merge_eval(const std::vector<fs::path>& dirs, const fs::path&
     last_clip = next->clip();
     auto rows = next->next_clip();
     if (!rows) return make_error(rows.error());
-    for (const ErrorRow& r : *rows) csv << format_error_row(r) << '\n';
-    builder.add_clip(*rows);
+    csv.add_clip(*rows, builder);
     ++report.clips_evaluated;
   }
-  csv.close();
-  if (!csv) return make_error(csv_out.target().string() + ": write failed");
-  if (Status s = csv_out.commit(); !s) return make_error(s.error());
+  if (Status s = csv.commit(); !s) return make_error(s.error());
   report.summary = builder.finish();
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   json merged_from = json::array();

@@ -1,10 +1,14 @@
 #include "export.h"
 
+#include "assimp_text.h"
 #include "rotinterp/io/atomic_file.h"
 
 #include <assimp/Exporter.hpp>
 #include <assimp/scene.h>
 
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <memory>
@@ -14,8 +18,7 @@ namespace rotinterp {
 
 namespace {
 
-// Ticks per second of an exported clip without a frame time: milliseconds.
-constexpr double kExportTicksPerSecondWithoutFrameTime = 1000.0;
+constexpr double kExportTicksPerSecond = 1.0;
 
 aiMatrix4x4 node_matrix(const Vec3& t, const Quat& r) {
   const Mat3 m = r.toRotationMatrix();
@@ -31,6 +34,24 @@ aiQuaternion to_ai(const Quat& q) {
 }
 aiVector3D to_ai(const Vec3& v) {
   return aiVector3D(static_cast<ai_real>(v.x()), static_cast<ai_real>(v.y()), static_cast<ai_real>(v.z()));
+}
+
+// The track at time t: its key where it has one, slerp/lerp between keys (the
+// reading every importer applies), clamped outside.
+template <class Track, class Mix>
+auto sample_track(const Track& track, double t, Mix mix) {
+  const auto& ts = track.times;
+  if (t <= ts.front()) return track.keys.front();
+  if (t >= ts.back()) return track.keys.back();
+  const auto hi = static_cast<std::size_t>(std::upper_bound(ts.begin(), ts.end(), t) - ts.begin());
+  if (ts[hi - 1] == t) return track.keys[hi - 1];
+  return mix(track.keys[hi - 1], track.keys[hi], (t - ts[hi - 1]) / (ts[hi] - ts[hi - 1]));
+}
+Quat sample_rotation(const RotationTrack& r, double t) {
+  return sample_track(r, t, [](const Quat& a, const Quat& b, double u) { return Quat(a.slerp(u, b).normalized()); });
+}
+Vec3 sample_translation(const TranslationTrack& tr, double t) {
+  return sample_track(tr, t, [](const Vec3& a, const Vec3& b, double u) { return Vec3((1 - u) * a + u * b); });
 }
 
 std::unique_ptr<aiScene> build_scene(const Clip& clip) {
@@ -62,35 +83,41 @@ std::unique_ptr<aiScene> build_scene(const Clip& clip) {
   attach(scene->mRootNode, roots);
   for (std::size_t j = 0; j < n; ++j) attach(nodes[j], kids[j]);
 
-  const double tps = clip.frame_time > 0.0 ? 1.0 / clip.frame_time : kExportTicksPerSecondWithoutFrameTime;
+  // Ticks are seconds: assimp 5.2.5's FBX and Collada exporters write mTime as
+  // seconds whatever mTicksPerSecond says (glTF divides by it, so 1 suits all three).
+  const double tps = kExportTicksPerSecond;
   auto* anim = new aiAnimation();
   anim->mName = aiString(clip.name.empty() ? std::string("clip") : clip.name);
   anim->mTicksPerSecond = tps;
-  anim->mDuration = (clip.end_time() - clip.start_time()) * tps;
+  // Whole ticks: the FBX exporter truncates the take's end to an integer tick count.
+  anim->mDuration = std::ceil(clip.end_time() * tps);
   anim->mNumChannels = static_cast<unsigned>(n);
   anim->mChannels = new aiNodeAnim*[n];
   for (std::size_t j = 0; j < n; ++j) {
+    // Position, rotation and scaling keys at the same times: assimp's Collada
+    // exporter skips channels whose key counts differ.
+    const RotationTrack& r = clip.rotations[j];
+    const std::optional<TranslationTrack>& tr = clip.translations[j];
+    std::vector<double> times = r.times;
+    if (tr) {
+      times.insert(times.end(), tr->times.begin(), tr->times.end());
+      std::sort(times.begin(), times.end());
+      times.erase(std::unique(times.begin(), times.end()), times.end());
+    }
     auto* ch = new aiNodeAnim();
     anim->mChannels[j] = ch;
     ch->mNodeName = aiString(sk.joints[j].name);
-    const RotationTrack& r = clip.rotations[j];
-    ch->mNumRotationKeys = static_cast<unsigned>(r.keys.size());
-    ch->mRotationKeys = new aiQuatKey[r.keys.size()];
-    for (std::size_t k = 0; k < r.keys.size(); ++k)
-      ch->mRotationKeys[k] = aiQuatKey(r.times[k] * tps, to_ai(r.keys[k]));
-    if (const auto& t = clip.translations[j]) {
-      ch->mNumPositionKeys = static_cast<unsigned>(t->keys.size());
-      ch->mPositionKeys = new aiVectorKey[t->keys.size()];
-      for (std::size_t k = 0; k < t->keys.size(); ++k)
-        ch->mPositionKeys[k] = aiVectorKey(t->times[k] * tps, to_ai(t->keys[k]));
-    } else {
-      ch->mNumPositionKeys = 1;
-      ch->mPositionKeys = new aiVectorKey[1];
-      ch->mPositionKeys[0] = aiVectorKey(r.times.front() * tps, to_ai(sk.joints[j].offset));
+    const auto count = static_cast<unsigned>(times.size());
+    ch->mNumRotationKeys = ch->mNumPositionKeys = ch->mNumScalingKeys = count;
+    ch->mRotationKeys = new aiQuatKey[count];
+    ch->mPositionKeys = new aiVectorKey[count];
+    ch->mScalingKeys = new aiVectorKey[count];
+    for (unsigned k = 0; k < count; ++k) {
+      const double tick = times[k] * tps;
+      ch->mRotationKeys[k] = aiQuatKey(tick, to_ai(sample_rotation(r, times[k])));
+      ch->mPositionKeys[k] = aiVectorKey(tick, to_ai(tr ? sample_translation(*tr, times[k]) : sk.joints[j].offset));
+      ch->mScalingKeys[k] = aiVectorKey(tick, aiVector3D(1, 1, 1));
     }
-    ch->mNumScalingKeys = 1;
-    ch->mScalingKeys = new aiVectorKey[1];
-    ch->mScalingKeys[0] = aiVectorKey(r.times.front() * tps, aiVector3D(1, 1, 1));
   }
   scene->mNumAnimations = 1;
   scene->mAnimations = new aiAnimation*[1];
@@ -98,16 +125,10 @@ std::unique_ptr<aiScene> build_scene(const Clip& clip) {
   return scene;
 }
 
-std::string one_line(std::string s) {
-  for (char& c : s)
-    if (c == '\n' || c == '\r') c = ' ';
-  return s;
-}
-
 }  // namespace
 
 std::optional<std::string> assimp_export_format(const std::string& ext) {
-  if (ext == ".fbx") return std::string("fbx");
+  if (ext == ".fbx") return std::string("fbxa");
   if (ext == ".gltf") return std::string("gltf2");
   if (ext == ".glb") return std::string("glb2");
   if (ext == ".dae") return std::string("collada");
@@ -126,7 +147,42 @@ Status export_with_assimp(const Clip& clip, const std::filesystem::path& path, c
   } catch (const std::exception& e) {
     return make_error(label + ": assimp could not export: " + one_line(e.what()));
   }
+  // A .gltf comes with a .bin buffer that assimp names after the temporary file:
+  // give it the target's name (atomically too), point the .gltf at it, then commit.
+  const std::filesystem::path temp_bin = std::filesystem::path(out.temp_path()).replace_extension(".bin");
+  std::error_code ec;
+  const bool has_bin = std::filesystem::exists(temp_bin, ec);
+  AtomicOutput bin_out(std::filesystem::path(path).replace_extension(".bin"));
+  if (has_bin) {
+    std::filesystem::rename(temp_bin, bin_out.temp_path(), ec);
+    if (ec) {
+      std::filesystem::remove(temp_bin, ec);
+      return make_error(label + ": cannot write its buffer file: " + ec.message());
+    }
+  }
   if (ret != aiReturn_SUCCESS) return make_error(label + ": assimp could not export: " + one_line(exporter.GetErrorString()));
+  if (has_bin) {
+    std::string text;
+    {
+      std::ifstream in(out.temp_path(), std::ios::binary);
+      std::ostringstream ss;
+      ss << in.rdbuf();
+      text = ss.str();
+    }
+    const std::string from = "\"" + temp_bin.filename().string() + "\"";
+    const std::string to = "\"" + bin_out.target().filename().string() + "\"";
+    std::size_t replaced = 0;
+    for (std::size_t p = text.find(from); p != std::string::npos; p = text.find(from, p + to.size())) {
+      text.replace(p, from.size(), to);
+      ++replaced;
+    }
+    if (replaced == 0) return make_error(label + ": assimp wrote a buffer file the .gltf does not name");
+    std::ofstream rewrite(out.temp_path(), std::ios::binary | std::ios::trunc);
+    rewrite << text;
+    rewrite.close();
+    if (!rewrite) return make_error(label + ": cannot write: " + std::strerror(errno));
+    if (Status s = bin_out.commit(); !s) return s;
+  }
   return out.commit();
 }
 

@@ -16,7 +16,7 @@ std::optional<std::string> assimp_export_format(const std::string& extension);
 
 // Builds an aiScene from `clip` (a node per joint with its rest transform
 // T(offset)·R(rest_rotation), one animation with every joint's keys) and exports
-// it atomically. Ticks per second: 1/frame_time when the clip has one, else 1000.
+// it atomically. Key times are written in seconds (ticks per second = 1).
 Status export_with_assimp(const Clip& clip, const std::filesystem::path& path, const std::string& format);
 
 }  // namespace rotinterp

@@ -1,6 +1,7 @@
 // The clip reader: assimp for every format, our own BVH pass on top.
 #include "rotinterp/io/read.h"
 
+#include "assimp_text.h"
 #include "rotinterp/io/bvh.h"
 #include "rotinterp/io/info.h"
 
@@ -24,22 +25,19 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr const char* kHelperTag = "_$AssimpFbx$_";
+constexpr const char* kGeometricTag = "_$AssimpFbx$_Geometric";
 
 // Key times (in ticks) closer than this are one key: assimp's FBX importer merges
 // curve times in float, and ticks are at least 1e-3 s apart in every format we know.
 constexpr double kSameTickTolerance = 1e-6;
-// Keys within this many ticks of whole ticks count as "on whole ticks": the clip then
-// gets frame_time = 1/ticks-per-second (FBX, Collada stores at the frame rate).
+// Keys within this many ticks of whole ticks count as "on whole ticks". Where the
+// tick rate is a frame rate (FBX, .x: at most kMaxFrameRate ticks per second), the
+// clip then gets frame_time = 1/ticks-per-second; finer ticks (glTF and Collada
+// read at 1000 per second) give the step of the keys' uniform grid instead.
 constexpr double kWholeTickTolerance = 1e-4;
+constexpr double kMaxFrameRate = 240.0;
 // A node scale within this of 1 is no scale (assimp decomposes float matrices).
 constexpr double kUnitScaleTolerance = 1e-5;
-
-std::string one_line(std::string s) {
-  for (char& c : s)
-    if (c == '\n' || c == '\r') c = ' ';
-  while (!s.empty() && s.back() == ' ') s.pop_back();
-  return s;
-}
 
 std::string lower(std::string s) {
   for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -127,6 +125,30 @@ void add_times(const aiNodeAnim* ch, std::vector<double>& times) {
   for (unsigned k = 0; k < ch->mNumPositionKeys; ++k) times.push_back(ch->mPositionKeys[k].mTime);
   for (unsigned k = 0; k < ch->mNumRotationKeys; ++k) times.push_back(ch->mRotationKeys[k].mTime);
   for (unsigned k = 0; k < ch->mNumScalingKeys; ++k) times.push_back(ch->mScalingKeys[k].mTime);
+}
+
+// The step d when every time is t₀ + k·d (within kGridTolerance of d), d the
+// smallest gap; 0 otherwise. Formats that store seconds in float (glTF) or at a
+// fixed tick rate (Collada: 1000/s) keep their frame rate this way. A step within
+// 1e-5 of a whole number of frames per second snaps to it.
+constexpr double kGridTolerance = 1e-3;
+constexpr double kRateSnapTolerance = 1e-5;
+double uniform_grid_step(std::vector<double> ticks) {
+  std::sort(ticks.begin(), ticks.end());
+  std::vector<double> unique;
+  for (double t : ticks)
+    if (unique.empty() || t - unique.back() > kSameTickTolerance) unique.push_back(t);
+  if (unique.size() < 2) return 0.0;
+  double gap = INFINITY;
+  for (std::size_t k = 1; k < unique.size(); ++k) gap = std::min(gap, unique[k] - unique[k - 1]);
+  // The step from the whole span: one float gap is too noisy over thousands of frames.
+  const double span = unique.back() - unique.front();
+  const double d = span / std::round(span / gap);
+  for (double t : unique) {
+    const double steps = (t - unique.front()) / d;
+    if (std::abs(steps - std::round(steps)) > kGridTolerance) return 0.0;
+  }
+  return d;
 }
 
 bool is_helper(const aiNode* n) { return std::string_view(n->mName.C_Str()).find(kHelperTag) != std::string_view::npos; }
@@ -239,7 +261,10 @@ Status fill_scene(const aiScene* scene, const aiAnimation* anim, double tps, Cli
   std::function<void(const aiNode*, int, std::vector<const aiNode*>)> walk = [&](const aiNode* n, int parent,
                                                                                std::vector<const aiNode*> chain) {
     if (is_helper(n)) {
-      chain.push_back(n);
+      // FBX geometric transforms apply to the node's geometry only: assimp puts
+      // GeometricX above the node and GeometricXInverse below it, so they cancel
+      // for the children. Dropping both gives the joint its own transform.
+      if (std::string_view(n->mName.C_Str()).find(kGeometricTag) == std::string_view::npos) chain.push_back(n);
       ++folded;
       for (unsigned c = 0; c < n->mNumChildren; ++c) walk(n->mChildren[c], parent, chain);
       return;
@@ -262,13 +287,26 @@ Status fill_scene(const aiScene* scene, const aiAnimation* anim, double tps, Cli
     for (unsigned b = 0; b < scene->mMeshes[m]->mNumBones; ++b) bones.insert(scene->mMeshes[m]->mBones[b]->mName.C_Str());
 
   // Selection: animated nodes, bones, and their ancestors.
+  // Also transform-only subtrees (no meshes, cameras or lights anywhere below):
+  // end bones and static joints of a skeleton that nothing animates or skins.
+  std::set<std::string> non_joints;
+  for (unsigned c = 0; c < scene->mNumCameras; ++c) non_joints.insert(scene->mCameras[c]->mName.C_Str());
+  for (unsigned l = 0; l < scene->mNumLights; ++l) non_joints.insert(scene->mLights[l]->mName.C_Str());
+  std::vector<bool> bare(recs.size(), true);  // no mesh/camera/light in the subtree
+  for (std::size_t i = recs.size(); i-- > 0;) {
+    const aiNode* node = recs[i].node;
+    if (node->mNumMeshes > 0 || non_joints.count(node->mName.C_Str())) bare[i] = false;
+    for (const aiNode* h : recs[i].chain)
+      if (h->mNumMeshes > 0) bare[i] = false;
+    if (!bare[i] && recs[i].real_parent >= 0) bare[static_cast<std::size_t>(recs[i].real_parent)] = false;
+  }
   std::vector<bool> keep(recs.size(), false);
   std::vector<bool> animated(recs.size(), false);
   for (std::size_t i = 0; i < recs.size(); ++i) {
     bool a = channel_of(recs[i].node) != nullptr;
     for (const aiNode* h : recs[i].chain) a = a || channel_of(h) != nullptr;
     animated[i] = a;
-    if (a || bones.count(recs[i].node->mName.C_Str()))
+    if (a || bones.count(recs[i].node->mName.C_Str()) || (bare[i] && i > 0))
       for (int k = static_cast<int>(i); k >= 0 && !keep[static_cast<std::size_t>(k)]; k = recs[static_cast<std::size_t>(k)].real_parent)
         keep[static_cast<std::size_t>(k)] = true;
   }
@@ -382,7 +420,12 @@ Status fill_scene(const aiScene* scene, const aiAnimation* anim, double tps, Cli
     }
     if (moves) clip.translations[j] = std::move(tt);
   }
-  clip.frame_time = (whole_ticks && tps > 0.0) ? 1.0 / tps : 0.0;
+  if (whole_ticks && tps <= kMaxFrameRate) {
+    clip.frame_time = 1.0 / tps;
+  } else if (const double step = uniform_grid_step(all_ticks) / tps; step > 0.0) {
+    const double rate = 1.0 / step;
+    clip.frame_time = std::abs(rate - std::round(rate)) < kRateSnapTolerance * rate ? 1.0 / std::round(rate) : step;
+  }
 
   // Unit scale: FBX gives centimetres per unit.
   if (scene->mMetaData) {
@@ -406,7 +449,7 @@ Result<ClipFileInfo> load(const fs::path& path, const ReadOptions& options) {
   // BVH: our pass first (validation, layout, exact Frame Time).
   std::optional<BvhFile> bvh;
   bool bvh_content = ext == "bvh";
-  if (!bvh_content && fs::file_size(path) < (std::uintmax_t{1} << 30)) {
+  if (!bvh_content) {  // BVH content under another extension
     std::ifstream f(path, std::ios::binary);
     std::string head(64, '\0');
     f.read(head.data(), 64);

@@ -211,5 +211,35 @@ TEST(GeneratedBvh, BvhOrderOptionChoosesTheChannelsOfJointsWithoutLayout) {
   EXPECT_NE(s.error().find("'XXY' is not a rotation order"), std::string::npos) << s.error();
 }
 
+// A layout assimp refuses ("Missing position channel": 6 channels that are not 3
+// positions + 3 rotations) is still read, by our own pass, with a warning saying so.
+TEST(GeneratedBvh, LayoutAssimpRefusesIsReadByOurPassWithAWarning) {
+  const std::string text =
+      "HIERARCHY\nROOT R\n{\n OFFSET 0 0 0\n CHANNELS 6 Zrotation Xrotation Yrotation Zrotation Xrotation Yrotation\n"
+      " End Site\n {\n  OFFSET 0 1 0\n }\n}\nMOTION\nFrames: 2\nFrame Time: 0.04\n"
+      "10 20 30 40 50 60\n-10 0 5 0 0 90\n";
+  test::TempDir dir;
+  test::write_text(dir / "six.bvh", text);
+  std::vector<std::string> warnings;
+  ReadOptions options;
+  options.on_warning = [&](const std::string& w) { warnings.push_back(w); };
+  Result<Clip> c = read_clip(dir / "six.bvh", options);
+  ASSERT_TRUE(c) << c.error();
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("assimp could not read the motion"), std::string::npos) << warnings[0];
+  EXPECT_NE(warnings[0].find("read with rotinterp's own BVH pass"), std::string::npos) << warnings[0];
+  auto R = [](int axis, double deg) { return Quat(Eigen::AngleAxisd(deg * kDeg, Vec3::Unit(axis))); };
+  const Quat q0 = R(2, 10) * R(0, 20) * R(1, 30) * R(2, 40) * R(0, 50) * R(1, 60);
+  EXPECT_LE(angular_distance(c->rotations[0].keys[0], q0), 1e-12);
+  EXPECT_FALSE(c->translations[0]);
+  // And it writes back with the same layout (a Z-X-Y triple carries the rotation).
+  ASSERT_TRUE(write_clip(*c, dir / "back.bvh"));
+  Result<Clip> b = read_clip(dir / "back.bvh");
+  ASSERT_TRUE(b) << b.error();
+  EXPECT_EQ(b->skeleton.joints[0].channels, c->skeleton.joints[0].channels);
+  for (std::size_t k = 0; k < 2; ++k)
+    EXPECT_LE(angular_distance(b->rotations[0].keys[k], c->rotations[0].keys[k]), 1e-4 * kDeg);
+}
+
 }  // namespace
 }  // namespace rotinterp

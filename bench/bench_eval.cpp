@@ -7,7 +7,8 @@
 // (read_clip + all methods × keep-every 2,4,8,16, CSV + summary, no plots) with
 // --jobs 1 and (3) with --jobs 2. Each is the best of R runs (default 3). Prints
 // the ratio eval/import (goal ≤ 2), clip-frames per second, and the --jobs 2
-// speedup (goal ≥ 1.7 on a machine with two free cores).
+// speedup (goal ≥ 1.7 on a machine with two free cores); then where the time goes:
+// read_clip alone and each method alone beyond it (CPU seconds).
 #include "rotinterp/eval/batch.h"
 #include "rotinterp/eval/inputs.h"
 #include "rotinterp/interp/interpolator.h"
@@ -27,6 +28,7 @@
 #include <filesystem>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace fs = std::filesystem;
@@ -53,11 +55,13 @@ double import_all(const std::vector<std::string>& files, double& cpu) {
   return seconds_since(t0);
 }
 
-double eval_all(const std::vector<fs::path>& inputs, int jobs, const fs::path& out, std::size_t& frames, double& cpu) {
+double eval_all(const std::vector<fs::path>& inputs, int jobs, const fs::path& out, std::size_t& frames, double& cpu,
+                const std::string& only_method = "") {
   rotinterp::EvalOptions o;
   o.inputs = inputs;
   o.output_dir = out;
-  for (const rotinterp::MethodInfo& m : rotinterp::methods()) o.clip.methods.push_back(m.name);
+  for (const rotinterp::MethodInfo& m : rotinterp::methods())
+    if (only_method.empty() || m.name == only_method) o.clip.methods.push_back(m.name);
   o.clip.keep_every = {2, 4, 8, 16};
   o.jobs = jobs;
   o.plots = false;
@@ -109,6 +113,23 @@ int main(int argc, char** argv) {
     c_j1 = std::min(c_j1, c);
     t_j2 = std::min(t_j2, eval_all(inputs, 2, out, joint_frames, c));
   }
+  // Where the time goes: read_clip alone, then each method alone (read included).
+  double c_read = 1e300;
+  for (int r = 0; r < repeat; ++r) {
+    const double c0 = cpu_seconds();
+    for (const std::string& f : *files) (void)rotinterp::read_clip(f);
+    c_read = std::min(c_read, cpu_seconds() - c0);
+  }
+  std::vector<std::pair<std::string, double>> per_method;
+  for (const rotinterp::MethodInfo& m : rotinterp::methods()) {
+    double best = 1e300;
+    for (int r = 0; r < repeat; ++r) {
+      eval_all(inputs, 1, out, joint_frames, c, m.name);
+      best = std::min(best, c);
+    }
+    per_method.emplace_back(m.name, best - c_read);
+  }
+  eval_all(inputs, 1, out, joint_frames, c);  // joint_frames of the full run again
   fs::remove_all(out);
   const std::size_t combos = rotinterp::methods().size() * 4;
   std::printf("files %zu (clips loaded %zu), clip-frames %zu, methods %zu x keep-every {2,4,8,16}, best of %d\n",
@@ -121,5 +142,8 @@ int main(int argc, char** argv) {
   std::printf("throughput (--jobs 1)     %8.0f clip-frames/s (each rebuilt %zu times), %.0f joint-frames/s per rebuild\n",
               static_cast<double>(clip_frames) / t_j1, combos,
               static_cast<double>(joint_frames) * static_cast<double>(combos) / t_j1);
+  std::printf("read_clip alone (CPU)     %8.3f s   (assimp + our BVH pass + clip building)\n", c_read);
+  for (const auto& [name, cpu] : per_method)
+    std::printf("  %-10s CPU beyond read_clip, 4 spacings: %7.3f s\n", name.c_str(), cpu);
   return 0;
 }

@@ -257,7 +257,7 @@ Result<EvalReport> run_eval(const EvalOptions& opt) {
     }
   };
   std::vector<std::thread> threads;
-  for (std::size_t t = 0; t < jobs; ++t) threads.emplace_back(worker);
+  for (std::size_t t = 0; t < std::min(jobs, std::max<std::size_t>(1, tasks)); ++t) threads.emplace_back(worker);
 
   SummaryBuilder builder;
   std::string write_error;

@@ -121,7 +121,7 @@ void add_eval_command(CLI::App& app, int& exit_code) {
   sub->add_option("--methods", args->methods, "Comma-separated methods, or 'all'")->capture_default_str();
   sub->add_option("--keep-every", args->keep_every, "Comma-separated key spacings N: keys at every Nth frame and the last")
       ->capture_default_str();
-  sub->add_option("-j,--jobs", args->jobs, "Clips evaluated in parallel (0 = all cores)")->capture_default_str()
+  sub->add_option("-j,--jobs", args->jobs, "Worker threads over (clip, method) pairs (0 = all cores)")->capture_default_str()
       ->check(CLI::Range(0, 4096));
   sub->add_option("-o,--output", args->output, "Output directory")->capture_default_str();
   sub->add_option("--shard", args->shard, "Evaluate shard I of N (I/N) of the sorted inputs, for a cluster");

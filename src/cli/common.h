@@ -29,6 +29,7 @@ void end_progress(bool quiet);
 void add_methods_command(CLI::App& app, int& exit_code);
 void add_resample_command(CLI::App& app, int& exit_code);
 void add_synth_command(CLI::App& app, int& exit_code);
+void add_eval_command(CLI::App& app, int& exit_code);
 void add_info_command(CLI::App& app, int& exit_code);
 
 }  // namespace rotinterp::cli

@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   add_methods_command(app, exit_code);
   add_resample_command(app, exit_code);
   add_synth_command(app, exit_code);
+  add_eval_command(app, exit_code);
   add_info_command(app, exit_code);
 
   try {

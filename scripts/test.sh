@@ -1,9 +1,24 @@
 #!/usr/bin/env bash
-# Command (2): install what is missing, build, run the whole test suite.
+# Command (2): install what is missing, build, run the whole test suite — once in a
+# Release build, then again in an AddressSanitizer + UndefinedBehaviorSanitizer build.
+# ROTINTERP_SKIP_SANITIZERS=1 runs only the first pass (for quick local runs).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 jobs=$(nproc)
+
+echo "== Release build and tests"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS="-Werror"
 cmake --build build -j "$jobs"
 ctest --test-dir build --output-on-failure -j "$jobs"
+
+if [ "${ROTINTERP_SKIP_SANITIZERS:-0}" != 1 ]; then
+  echo "== ASan + UBSan build and tests"
+  cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DROTINTERP_SANITIZE=ON \
+    -DROTINTERP_BUILD_BENCH=OFF -DCMAKE_CXX_FLAGS="-Werror -O1"
+  cmake --build build-asan -j "$jobs"
+  export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1"
+  export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+  export LSAN_OPTIONS="suppressions=$PWD/.ci/lsan.supp:print_suppressions=0"
+  ctest --test-dir build-asan --output-on-failure -j "$jobs"
+fi

@@ -40,6 +40,7 @@ Quat exp(const RotVec& r) {
   const Vec3& v = r.vec();
   if (!finite(v)) return Quat::Identity();
   const double theta = v.norm();
+  if (!std::isfinite(theta)) return Quat::Identity();  // |v| overflowed: no meaningful angle
   const double s = sinc_half(theta);
   Quat q(std::cos(0.5 * theta), s * v.x(), s * v.y(), s * v.z());
   // For large θ, cos/sin are each correct to an ulp; renormalizing keeps |q| = 1 exactly enough.
@@ -116,13 +117,14 @@ double angular_distance(const Quat& a_in, const Quat& b_in) {
   const Eigen::Vector4d a = normalized_or_identity(a_in).coeffs();
   Eigen::Vector4d b = normalized_or_identity(b_in).coeffs();
   if (a.dot(b) < 0.0) b = -b;
-  return 2.0 * std::atan2((a - b).norm(), (a + b).norm());
+  // |a − b| = 2 sin(θ/4), |a + b| = 2 cos(θ/4) for a rotation by θ.
+  return 4.0 * std::atan2((a - b).norm(), (a + b).norm());
 }
 
 Eigen::Matrix<double, 4, 3> dq_dv(const Vec3& v) {
   Eigen::Matrix<double, 4, 3> J;
-  if (!finite(v)) return J.setZero();
   const double theta = v.norm();
+  if (!std::isfinite(theta)) return J.setZero();
   const double s = sinc_half(theta);
   // d(sin(θ/2)/θ)/dθ / θ: series below kSeriesThreshold (see header).
   double ds_over_theta;
@@ -163,8 +165,8 @@ std::array<Mat3, 3> dR_dv(const Vec3& v) {
 }
 
 Vec3 rotvec_derivative(const Vec3& v, const Vec3& omega) {
-  if (!finite(v) || !finite(omega)) return Vec3::Zero();
   const double theta = v.norm();
+  if (!std::isfinite(theta) || !finite(omega)) return Vec3::Zero();
   double c;
   if (theta < kSeriesThreshold) {
     const double t2 = theta * theta;

@@ -113,8 +113,11 @@ RotVec displacement_moving(const Quat& q, const Quat& q2);
 Quat apply_fixed(const RotVec& r, const Quat& q);
 // q·exp(r): rotate q by r about its own (moving) axes.
 Quat apply_moving(const Quat& q, const RotVec& r);
-// Geodesic distance in radians, in [0, π]: 2·atan2(|a − b|, |a + b|) after hemisphere
-// alignment (the 2·acos|a·b| form reads float round-off as ~0.05°).
+// Geodesic distance (the angle of the rotation between them) in radians, in [0, π]:
+// 4·atan2(|a − b|, |a + b|) after hemisphere alignment. (|a − b| = 2 sin(θ/4) and
+// |a + b| = 2 cos(θ/4): 2·atan2 — as sometimes printed — is the 4-D angle between
+// the quaternions, half the rotation angle. The 2·acos|a·b| form reads float
+// round-off as ~0.05°.)
 double angular_distance(const Quat& a, const Quat& b);
 
 // ---- derivatives (Grassia §3) -------------------------------------------------

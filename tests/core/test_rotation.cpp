@@ -1,0 +1,376 @@
+// Properties of the rotation core, checked against independent references:
+// Eigen's AngleAxis, central finite differences, closed forms.
+#include "rotinterp/core/rotation.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+using namespace rotinterp;
+
+namespace {
+
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+Vec3 random_unit(std::mt19937_64& rng) {
+  std::normal_distribution<double> n(0.0, 1.0);
+  Vec3 v;
+  do v = Vec3(n(rng), n(rng), n(rng));
+  while (v.norm() < 1e-6);
+  return v.normalized();
+}
+
+Quat random_quat(std::mt19937_64& rng) {
+  std::normal_distribution<double> n(0.0, 1.0);
+  return Quat(n(rng), n(rng), n(rng), n(rng)).normalized();
+}
+
+// Same orientation (q ≡ −q) within tol.
+double orientation_gap(const Quat& a, const Quat& b) { return std::min((a.coeffs() - b.coeffs()).norm(), (a.coeffs() + b.coeffs()).norm()); }
+
+Quat reference_exp(const Vec3& v) {
+  const double theta = v.norm();
+  if (theta == 0.0) return Quat::Identity();
+  return Quat(Eigen::AngleAxisd(theta, v / theta));
+}
+
+bool finite(const Quat& q) { return q.coeffs().allFinite(); }
+
+}  // namespace
+
+// ---- exp / log -------------------------------------------------------------------------
+
+TEST(Rotation, ExpMatchesAngleAxis) {
+  std::mt19937_64 rng(1);
+  std::uniform_real_distribution<double> angle(0.0, 3.0 * kPi);
+  for (int i = 0; i < 10000; ++i) {
+    const Vec3 v = random_unit(rng) * angle(rng);
+    EXPECT_LT((exp(RotVec(v)).coeffs() - reference_exp(v).coeffs()).norm(), 4 * kEps) << v.transpose();
+  }
+}
+
+TEST(Rotation, LogInvertsExpToTwelveDigitsOverHundredThousandVectors) {
+  std::mt19937_64 rng(2);
+  std::uniform_real_distribution<double> uniform(0.0, kPi);
+  std::uniform_real_distribution<double> decade(-12.0, -3.0);
+  double worst = 0.0;
+  for (int i = 0; i < 100000; ++i) {
+    double theta;
+    switch (i % 4) {
+      case 0: theta = std::pow(10.0, decade(rng)); break;  // 1e-12 … 1e-3
+      case 1: theta = kPi - std::pow(10.0, -9.0 + 6.0 * uniform(rng) / kPi); break;  // up to π − 1e-9
+      default: theta = uniform(rng);
+    }
+    const Vec3 v = random_unit(rng) * theta;
+    const Vec3 back = log(exp(RotVec(v))).vec();
+    const double rel = (back - v).norm() / v.norm();
+    worst = std::max(worst, rel);
+    ASSERT_LT(rel, 1e-12) << "theta " << theta;
+  }
+  RecordProperty("worst_relative_error", std::to_string(worst));
+}
+
+TEST(Rotation, ExpIsContinuousAcrossTheTaylorThreshold) {
+  // With the paper's misprinted 1/2 + θ²/48 the two sides would differ by ~θ³/24 ≈ 7e-14.
+  const Vec3 axis = Vec3(1.0, -2.0, 0.5).normalized();
+  const double t = kExpTaylorThreshold;
+  const Quat below = exp(RotVec(axis * (t * (1.0 - 1e-12))));
+  const Quat above = exp(RotVec(axis * (t * (1.0 + 1e-12))));
+  EXPECT_LT((below.coeffs() - above.coeffs()).norm(), 4 * kEps);
+  EXPECT_LT((below.coeffs() - reference_exp(axis * t).coeffs()).norm(), 4 * kEps);
+}
+
+TEST(Rotation, LogIsExactNearIdentity) {
+  for (double theta : {1e-300, 1e-200, 1e-30, 1e-16, 1e-12, 1e-8}) {
+    const Vec3 v = Vec3(0.3, -0.4, 1.2).normalized() * theta;
+    EXPECT_LT((log(exp(RotVec(v))).vec() - v).norm(), 2 * kEps * theta) << theta;
+  }
+}
+
+TEST(Rotation, LogAtExactly180DegreesIsTheSameForQAndMinusQ) {
+  std::mt19937_64 rng(3);
+  for (int i = 0; i < 1000; ++i) {
+    const Vec3 a = random_unit(rng);
+    const Quat q(0.0, a.x(), a.y(), a.z());
+    const Quat mq(-0.0, -a.x(), -a.y(), -a.z());
+    const RotVec v = log(q), w = log(mq);
+    EXPECT_EQ(v.vec(), w.vec());
+    EXPECT_NEAR(v.angle(), kPi, 1e-15);
+    EXPECT_LT(orientation_gap(exp(v), q), 1e-15);
+  }
+  // A key that is half a turn about x: the axis points along +x.
+  EXPECT_GT(log(Quat(0, -1, 0, 0)).x(), 0.0);
+}
+
+TEST(Rotation, NoNanOnHardFixtures) {
+  const double inf = std::numeric_limits<double>::infinity();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<Quat> quats = {Quat(1, 0, 0, 0),   Quat(-1, 0, 0, 0),      Quat(0, 1, 0, 0),
+                                   Quat(0, 0, 0, -1),  Quat(0, 0, 0, 0),       Quat(1e-300, 0, 0, 0),
+                                   Quat(1e300, 1e300, 0, 0), Quat(nan, 0, 0, 0), Quat(inf, 1, 0, 0),
+                                   Quat(2, 0, 0, 0),   Quat(1, 1e-300, 0, 0)};
+  for (const Quat& a : quats) {
+    EXPECT_TRUE(log(a).vec().allFinite());
+    EXPECT_TRUE(finite(exp(log(a))));
+    EXPECT_TRUE(log_nearest(a, RotVec(7, 0, 0)).vec().allFinite());
+    for (const Quat& b : quats) {
+      EXPECT_TRUE(std::isfinite(angular_distance(a, b)));
+      EXPECT_TRUE(displacement_fixed(a, b).vec().allFinite());
+      EXPECT_TRUE(displacement_moving(a, b).vec().allFinite());
+      EXPECT_TRUE(angular_velocity(a, b, 0.01).allFinite());
+    }
+  }
+  for (const Vec3& v : {Vec3(nan, 0, 0), Vec3(inf, 0, 0), Vec3(1e200, 1e200, 0), Vec3(0, 0, 0)}) {
+    EXPECT_TRUE(finite(exp(RotVec(v))));
+    EXPECT_NEAR(exp(RotVec(v)).norm(), 1.0, 1e-15);
+    EXPECT_TRUE(dq_dv(v).allFinite());
+    EXPECT_TRUE(rotvec_derivative(v, Vec3(1, 2, 3)).allFinite());
+  }
+  // Antipodal keys are the same orientation: distance 0, displacement 0.
+  const Quat q = Quat(0.5, 0.5, -0.5, 0.5);
+  const Quat mq(-q.w(), -q.x(), -q.y(), -q.z());
+  EXPECT_EQ(angular_distance(q, mq), 0.0);
+  EXPECT_LT(displacement_fixed(q, mq).angle(), 1e-15);
+}
+
+TEST(Rotation, NonUnitInputIsNormalized) {
+  const Quat q = exp(RotVec(0.3, 0.2, -0.1));
+  const Quat scaled(q.coeffs() * 7.5);
+  EXPECT_LT((log(scaled).vec() - log(q).vec()).norm(), 1e-15);
+  EXPECT_NEAR(normalized_or_identity(scaled).norm(), 1.0, 1e-15);
+}
+
+// ---- nearest-branch log, reparameterization ------------------------------------------------
+
+TEST(Rotation, NearestBranchLogFollowsThreeFullTurnsWithoutJumps) {
+  const Vec3 omega = Vec3(0.2, -0.7, 0.4).normalized() * 2.5;  // rad/s
+  const double dt = 0.05;
+  RotVec prev;
+  const int steps = static_cast<int>(3.0 * kTwoPi / (omega.norm() * dt)) + 10;
+  for (int k = 1; k <= steps; ++k) {
+    const Vec3 exact = omega * (k * dt);
+    const RotVec v = log_nearest(exp(RotVec(exact)), prev);
+    ASSERT_LT((v.vec() - exact).norm(), 1e-12 * std::max(1.0, exact.norm())) << "step " << k;
+    ASSERT_LT((v.vec() - prev.vec()).norm(), omega.norm() * dt * (1 + 1e-9));
+    prev = v;
+  }
+  EXPECT_GT(prev.angle(), 3.0 * kTwoPi);
+}
+
+TEST(Rotation, NearestBranchLogOfIdentityPicksTheNearestShell) {
+  const Vec3 p = Vec3(1, 2, 2) / 3.0 * (kTwoPi + 0.3);
+  EXPECT_LT((log_nearest(Quat::Identity(), RotVec(p)).vec() - p.normalized() * kTwoPi).norm(), 1e-14);
+  EXPECT_EQ(log_nearest(Quat::Identity(), RotVec(0.1, 0, 0)).angle(), 0.0);
+}
+
+TEST(Rotation, NearestBranchLogIsAPreimage) {
+  std::mt19937_64 rng(4);
+  std::uniform_real_distribution<double> big(0.0, 20.0);
+  for (int i = 0; i < 10000; ++i) {
+    const Quat q = random_quat(rng);
+    const RotVec prev(random_unit(rng) * big(rng));
+    const RotVec v = log_nearest(q, prev);
+    EXPECT_LT(orientation_gap(exp(v), q), 1e-12);
+    // No other candidate on its line is nearer.
+    const Vec3 axis = v.vec().normalized();
+    for (double k : {-1.0, 1.0})
+      EXPECT_LE((v.vec() - prev.vec()).norm(), (v.vec() + k * kTwoPi * axis - prev.vec()).norm() + 1e-12);
+  }
+}
+
+TEST(Rotation, ReparameterizeKeepsTheRotationAndShortensIt) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> angle(kPi + 1e-9, kTwoPi - 1e-9);
+  for (int i = 0; i < 1000; ++i) {
+    const RotVec v(random_unit(rng) * angle(rng));
+    const RotVec r = reparameterize(v);
+    EXPECT_LE(r.angle(), kPi);
+    EXPECT_LT(orientation_gap(exp(r), exp(v)), 1e-14);
+  }
+  const RotVec small(0.1, 0.2, 0.3);
+  EXPECT_EQ(reparameterize(small).vec(), small.vec());
+}
+
+// ---- derivatives ----------------------------------------------------------------------------
+
+class Derivatives : public ::testing::TestWithParam<double> {};
+
+TEST_P(Derivatives, DqDvMatchesCentralFiniteDifferences) {
+  const double theta = GetParam();
+  const Vec3 v = Vec3(0.6, -0.3, 0.74).normalized() * theta;
+  const double h = 1e-6;
+  const Eigen::Matrix<double, 4, 3> J = dq_dv(v);
+  for (int i = 0; i < 3; ++i) {
+    Vec3 d = Vec3::Zero();
+    d[i] = h;
+    const Quat p = exp(RotVec(v + d)), m = exp(RotVec(v - d));
+    const Eigen::Vector4d fd((p.w() - m.w()) / (2 * h), (p.x() - m.x()) / (2 * h), (p.y() - m.y()) / (2 * h),
+                             (p.z() - m.z()) / (2 * h));
+    EXPECT_LT((J.col(i) - fd).norm(), 1e-9) << "theta " << theta << " column " << i;
+  }
+}
+
+TEST_P(Derivatives, DRDvMatchesCentralFiniteDifferences) {
+  const double theta = GetParam();
+  const Vec3 v = Vec3(-0.2, 0.9, 0.4).normalized() * theta;
+  const double h = 1e-6;
+  const auto dR = dR_dv(v);
+  for (int i = 0; i < 3; ++i) {
+    Vec3 d = Vec3::Zero();
+    d[i] = h;
+    const Mat3 fd = (reference_exp(v + d).toRotationMatrix() - reference_exp(v - d).toRotationMatrix()) / (2 * h);
+    EXPECT_LT((dR[i] - fd).norm(), 1e-8) << "theta " << theta << " index " << i;
+  }
+}
+
+TEST_P(Derivatives, RotvecDerivativeMatchesFiniteDifferenceOfComposition) {
+  // v(t) = log(exp(ω t)·exp(v)) on the branch through v; v̇(0) by central differences.
+  const double theta = GetParam();
+  const Vec3 v = Vec3(0.3, 0.5, -0.8).normalized() * theta;
+  const Vec3 omega(0.7, -1.1, 0.4);
+  const double h = 1e-6;
+  const Vec3 plus = log_nearest(exp(RotVec(omega * h)) * exp(RotVec(v)), RotVec(v)).vec();
+  const Vec3 minus = log_nearest(exp(RotVec(-omega * h)) * exp(RotVec(v)), RotVec(v)).vec();
+  const Vec3 fd = (plus - minus) / (2 * h);
+  EXPECT_LT((rotvec_derivative(v, omega) - fd).norm(), 1e-7 * std::max(1.0, fd.norm())) << "theta " << theta;
+}
+
+INSTANTIATE_TEST_SUITE_P(Angles, Derivatives,
+                         ::testing::Values(0.0, 1e-9, 1e-6, 1e-4, 5e-3, 0.0099, 0.0101, 0.5, 2.0, 3.1, 3.2, 4.5,
+                                           kTwoPi - 0.05, kTwoPi + 0.05));
+
+TEST(Rotation, SmallAngleEtaHasTheSignOfTheGeneralFormula) {
+  // Grassia's η = (ω·v/θ)(cot(θ/2) − 2/θ); its limit is −(ω·v)(60 + θ²)/360, not +.
+  const Vec3 omega(0.3, -0.2, 0.9);
+  for (double theta : {0.05, 0.1, 0.2}) {
+    const Vec3 v = Vec3(1, 1, 1).normalized() * theta;
+    const double eta = omega.dot(v) / theta * (1.0 / std::tan(theta / 2) - 2.0 / theta);
+    const double series = -omega.dot(v) * (60.0 + theta * theta) / 360.0;
+    EXPECT_NEAR(eta, series, 1e-5 * std::abs(eta));
+    EXPECT_GT(std::abs(eta + series), std::abs(eta));  // the printed sign is the wrong one
+  }
+}
+
+// ---- angular velocity ---------------------------------------------------------------------
+
+TEST(Rotation, AngularVelocityIntegratesBack) {
+  std::mt19937_64 rng(6);
+  for (int i = 0; i < 1000; ++i) {
+    const Quat q0 = random_quat(rng), q1 = random_quat(rng);
+    const double dt = 0.01 + i * 1e-3;
+    const Vec3 w = angular_velocity(q0, q1, dt);
+    EXPECT_LE(w.norm() * dt, kPi + 1e-12);
+    EXPECT_LT(orientation_gap(integrate_angular_velocity(q0, w, dt), q1), 1e-12);
+  }
+  EXPECT_EQ(angular_velocity(Quat::Identity(), Quat(0, 1, 0, 0), 0.0), Vec3::Zero());
+}
+
+// ---- Lee's operations and distance ----------------------------------------------------------
+
+TEST(Rotation, ComposeMatchesQuaternionProduct) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> angle(0.0, kPi);
+  for (int i = 0; i < 1000; ++i) {
+    const RotVec a(random_unit(rng) * angle(rng)), b(random_unit(rng) * angle(rng));
+    EXPECT_LT(orientation_gap(exp(compose(a, b)), exp(a) * exp(b)), 1e-14);
+  }
+}
+
+TEST(Rotation, DisplacementsAreCoordinateInvariantAsLeeStates) {
+  std::mt19937_64 rng(8);
+  for (int i = 0; i < 1000; ++i) {
+    const Quat q = random_quat(rng), q2 = random_quat(rng), R = random_quat(rng), S = random_quat(rng);
+    // Moving-frame displacement ignores a change of world frame (left multiplication).
+    EXPECT_LT((displacement_moving(R * q, R * q2).vec() - displacement_moving(q, q2).vec()).norm(), 1e-12);
+    // Fixed-frame displacement ignores a change of body frame (right multiplication) …
+    EXPECT_LT((displacement_fixed(q * S, q2 * S).vec() - displacement_fixed(q, q2).vec()).norm(), 1e-12);
+    // … and rotates with a change of world frame.
+    EXPECT_LT((displacement_fixed(R * q, R * q2).vec() - R * displacement_fixed(q, q2).vec()).norm(), 1e-12);
+    // Applying the displacement on its side reaches q2.
+    EXPECT_LT(orientation_gap(apply_fixed(displacement_fixed(q, q2), q), q2), 1e-14);
+    EXPECT_LT(orientation_gap(apply_moving(q, displacement_moving(q, q2)), q2), 1e-14);
+    // Distance is bi-invariant.
+    EXPECT_NEAR(angular_distance(R * q * S, R * q2 * S), angular_distance(q, q2), 1e-12);
+  }
+}
+
+TEST(Rotation, AngularDistanceIsAccurateForTinyAnglesAndFloatNoise) {
+  const Quat q = exp(RotVec(0.4, -1.0, 0.7));
+  for (double eps : {1e-12, 1e-9, 1e-6, 1e-3}) {
+    const Quat q2 = apply_moving(q, RotVec(Vec3(0.2, 0.3, -0.9).normalized() * eps));
+    // Limited by how well q2 itself is stored (~ε per coefficient), not by the formula.
+    EXPECT_NEAR(angular_distance(q, q2), eps, std::max(1e-6 * eps, 4 * kEps)) << eps;
+  }
+  // The same orientation stored in floats reads as float noise, well below 1e-4°.
+  const Quat qf = q.cast<float>().cast<double>();
+  EXPECT_LT(angular_distance(q, qf) * 180.0 / kPi, 1e-4);
+  // Matches Eigen where Eigen is accurate.
+  std::mt19937_64 rng(9);
+  for (int i = 0; i < 1000; ++i) {
+    const Quat a = random_quat(rng), b = random_quat(rng);
+    EXPECT_NEAR(angular_distance(a, b), a.angularDistance(b), 1e-7);
+  }
+}
+
+TEST(Rotation, HatAndVeeAreInverseAndHatIsTheCrossProduct) {
+  const Vec3 a(0.3, -1.2, 2.0), b(-0.7, 0.1, 0.5);
+  EXPECT_LT((hat(a) * b - a.cross(b)).norm(), 1e-15);
+  EXPECT_EQ(vee(hat(a)), a);
+}
+
+// ---- swing / twist ----------------------------------------------------------------------------
+
+TEST(Rotation, SwingTwistRecomposesWithTwistAboutTheAxis) {
+  std::mt19937_64 rng(10);
+  for (int i = 0; i < 1000; ++i) {
+    const Quat q = random_quat(rng);
+    const Vec3 axis = random_unit(rng);
+    const SwingTwist st = swing_twist(q, axis);
+    EXPECT_LT(orientation_gap(st.swing * st.twist, q), 1e-14);
+    EXPECT_LT(st.twist.vec().cross(axis).norm(), 1e-14);  // twist axis ∥ axis
+    EXPECT_LT(std::abs(st.swing.vec().dot(axis)), 1e-14);  // swing axis ⟂ axis
+  }
+}
+
+TEST(Rotation, PureTwistAndPureSwingSeparate) {
+  const Vec3 axis = Vec3(0, 1, 0);
+  const SwingTwist twist_only = swing_twist(exp(RotVec(axis * 0.8)), axis);
+  EXPECT_NEAR(angular_distance(twist_only.swing, Quat::Identity()), 0.0, 1e-15);
+  EXPECT_NEAR(angular_distance(twist_only.twist, Quat::Identity()), 0.8, 1e-14);
+  const SwingTwist swing_only = swing_twist(exp(RotVec(Vec3(0.6, 0, 0.8) * 1.1)), axis);
+  EXPECT_NEAR(angular_distance(swing_only.twist, Quat::Identity()), 0.0, 1e-15);
+  EXPECT_NEAR(angular_distance(swing_only.swing, Quat::Identity()), 1.1, 1e-14);
+  // A 180° swing: twist is the identity, no NaN.
+  const SwingTwist half = swing_twist(Quat(0, 1, 0, 0), axis);
+  EXPECT_TRUE(finite(half.swing) && finite(half.twist));
+  EXPECT_LT(orientation_gap(half.swing * half.twist, Quat(0, 1, 0, 0)), 1e-15);
+}
+
+TEST(Rotation, SwingParameterizationChainRuleMatchesFiniteDifferences) {
+  const SwingParam p = SwingParam::perpendicular_to(Vec3(0.2, 0.1, 1.0));
+  EXPECT_NEAR(p.s.dot(p.t), 0.0, 1e-15);
+  EXPECT_NEAR(p.s.dot(Vec3(0.2, 0.1, 1.0).normalized()), 0.0, 1e-15);
+  for (auto [a, b] : {std::pair{0.0, 0.0}, {0.3, -0.2}, {1.5, 2.0}, {1e-7, 1e-8}}) {
+    const auto J = p.dq_dswing(a, b);
+    const double h = 1e-6;
+    const Eigen::Vector4d da = (p.orientation(a + h, b).coeffs() - p.orientation(a - h, b).coeffs()) / (2 * h);
+    const Eigen::Vector4d db = (p.orientation(a, b + h).coeffs() - p.orientation(a, b - h).coeffs()) / (2 * h);
+    // coeffs() is (x, y, z, w); J rows are (w, x, y, z).
+    const Eigen::Vector4d ja(J(1, 0), J(2, 0), J(3, 0), J(0, 0)), jb(J(1, 1), J(2, 1), J(3, 1), J(0, 1));
+    EXPECT_LT((ja - da).norm(), 1e-9);
+    EXPECT_LT((jb - db).norm(), 1e-9);
+  }
+}
+
+TEST(Rotation, SwingLimitIsTheEllipse) {
+  const double a = 0.8, b = 0.3;
+  for (int k = 0; k < 360; ++k) {
+    const double phi = k * kPi / 180.0;
+    EXPECT_TRUE(within_swing_limit(0.999 * a * std::cos(phi), 0.999 * b * std::sin(phi), a, b));
+    EXPECT_FALSE(within_swing_limit(1.001 * a * std::cos(phi), 1.001 * b * std::sin(phi), a, b));
+  }
+  EXPECT_FALSE(within_swing_limit(0.0, 0.0, 0.0, 1.0));  // degenerate limits admit nothing
+}

@@ -290,7 +290,10 @@ struct Renderer::Impl {
   GLint mesh_view_projection = -1, mesh_light = -1, mesh_eye = -1;
   GLint line_view_projection = -1;
   GLint text_viewport = -1, text_color = -1, text_atlas = -1;
-  Mesh cylinder, sphere;
+  // Two levels of detail: coarse meshes for bones a few pixels thick (most of the
+  // time; llvmpipe's vertex work is single-threaded), fine ones for close-ups.
+  Mesh cylinder[2], sphere[2];
+  int detail = 0;  // the level drawn now
   GLuint line_vao = 0, line_vbo = 0;
   GLuint text_vao = 0, text_vbo = 0;
 
@@ -314,7 +317,7 @@ struct Renderer::Impl {
     if (!gl.DeleteProgram || !context->make_current()) return;  // GL never loaded, or the context is gone
     for (GLuint p : {mesh_program, line_program, text_program})
       if (p) gl.DeleteProgram(p);
-    for (Mesh* m : {&cylinder, &sphere}) {
+    for (Mesh* m : {&cylinder[0], &cylinder[1], &sphere[0], &sphere[1]}) {
       gl.DeleteVertexArrays(1, &m->vao);
       GLuint buffers[] = {m->vertices, m->indices, m->instances};
       gl.DeleteBuffers(3, buffers);
@@ -435,12 +438,16 @@ struct Renderer::Impl {
 
     Vertices v;
     Indices idx;
-    cylinder_mesh(18, v, idx);
-    make_mesh(cylinder, v, idx);
-    v.clear();
-    idx.clear();
-    sphere_mesh(18, 10, v, idx);
-    make_mesh(sphere, v, idx);
+    for (int level = 0; level < 2; ++level) {
+      v.clear();
+      idx.clear();
+      cylinder_mesh(level ? 24 : 10, v, idx);
+      make_mesh(cylinder[level], v, idx);
+      v.clear();
+      idx.clear();
+      sphere_mesh(level ? 24 : 10, level ? 14 : 6, v, idx);
+      make_mesh(sphere[level], v, idx);
+    }
     make_dynamic(line_vao, line_vbo, 3, 4);
     make_dynamic(text_vao, text_vbo, 2, 2);
 
@@ -569,7 +576,12 @@ struct Renderer::Impl {
                              static_cast<GLsizei>(instances.size()));
   }
 
-  void use_mesh_program(const Camera& camera) {
+  // `radius` (world units) at the target seen from `camera` in a viewport
+  // `viewport_height` pixels high picks the level of detail: fine from 6 px.
+  void use_mesh_program(const Camera& camera, double radius, int viewport_height) {
+    const double pixels = radius / ((camera.eye - camera.target).norm() * std::tan(0.5 * camera.fov_y)) *
+                          0.5 * viewport_height;
+    detail = pixels >= 6.0 ? 1 : 0;
     const Eigen::Matrix4f vp = to_float(camera.projection() * camera.view());
     const Vec3 back = (camera.eye - camera.target).normalized();
     const Vec3 right = camera.up.cross(back).normalized();
@@ -586,8 +598,8 @@ struct Renderer::Impl {
     gl.Disable(GL_BLEND);
     gl.DepthMask(GL_TRUE);
     gl.DepthFunc(GL_LESS);
-    draw_mesh(cylinder, b.cylinders);
-    draw_mesh(sphere, b.spheres);
+    draw_mesh(cylinder[detail], b.cylinders);
+    draw_mesh(sphere[detail], b.spheres);
   }
 
   // Only the front-most surface of the batch, blended once: a depth-only pass, then
@@ -597,15 +609,15 @@ struct Renderer::Impl {
     gl.DepthMask(GL_TRUE);
     gl.DepthFunc(GL_LESS);
     gl.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    draw_mesh(cylinder, b.cylinders);
-    draw_mesh(sphere, b.spheres);
+    draw_mesh(cylinder[detail], b.cylinders);
+    draw_mesh(sphere[detail], b.spheres);
     gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     gl.DepthMask(GL_FALSE);
     gl.DepthFunc(GL_LEQUAL);
     gl.Enable(GL_BLEND);
     gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-    draw_mesh(cylinder, b.cylinders);
-    draw_mesh(sphere, b.spheres);
+    draw_mesh(cylinder[detail], b.cylinders);
+    draw_mesh(sphere[detail], b.spheres);
     gl.Disable(GL_BLEND);
     gl.DepthMask(GL_TRUE);
     gl.DepthFunc(GL_LESS);
@@ -673,7 +685,7 @@ struct Renderer::Impl {
 
     const std::size_t n = trail.reference.size();
     const std::size_t stride = std::max<std::size_t>(1, (n + kMaxTrailSegments - 1) / kMaxTrailSegments);
-    use_mesh_program(camera);
+    use_mesh_program(camera, kTrailReferenceRadius, side);
     batch.clear();
     add_curve(trail.method, stride, kTrailMethodRadius, panel.color, 1.0f, batch);
     for (std::size_t k : trail.keys)
@@ -718,7 +730,7 @@ struct Renderer::Impl {
     gl.Enable(GL_MULTISAMPLE);
     const Camera camera = frame_bounds(scene.bounds, static_cast<double>(width) / scene_height, scene.view);
     draw_lines(grid_lines, to_float(camera.projection() * camera.view()));
-    use_mesh_program(camera);
+    use_mesh_program(camera, scene.bone_radius, scene_height);
     batch.clear();
     add_pose(scene.skeleton, panel.pose, scene.bone_radius, panel.color, 1.0f, batch);
     draw_opaque(batch);
@@ -784,19 +796,26 @@ std::string Renderer::gl_description() const {
   return str(GL_RENDERER) + ", OpenGL " + str(GL_VERSION);
 }
 
-Result<Image> Renderer::render(const std::vector<Panel>& panels, int width, int height, int columns) {
+Status check_image_size(int width, int height, int panels, int columns) {
   if (width < 1 || height < 1 || width > kMaxImageSide || height > kMaxImageSide)
-    return make_error("render: image size " + std::to_string(width) + "x" + std::to_string(height) +
-                      " is outside 1…" + std::to_string(kMaxImageSide) + " per side");
-  if (panels.empty()) return make_error("render: nothing to draw (no panels)");
+    return make_error("image size " + std::to_string(width) + "x" + std::to_string(height) + " is outside 1…" +
+                      std::to_string(kMaxImageSide) + " per side");
+  if (panels < 1) return make_error("nothing to draw (no panels)");
+  if (columns <= 0) columns = automatic_columns(panels, width, height);
+  const Rect first = grid_layout(panels, columns, width, height).front();
+  if (first.width < kMinPanelWidth || first.height < kMinPanelHeight)
+    return make_error("image size " + std::to_string(width) + "x" + std::to_string(height) + " is too small for " +
+                      std::to_string(panels) + (panels == 1 ? " panel" : " panels") + " (each needs at least " +
+                      std::to_string(kMinPanelWidth) + "x" + std::to_string(kMinPanelHeight) + ")");
+  return Ok{};
+}
+
+Result<Image> Renderer::render(const std::vector<Panel>& panels, int width, int height, int columns) {
   const int count = static_cast<int>(panels.size());
+  if (Status s = check_image_size(width, height, count, columns); !s) return make_error("render: " + s.error());
   if (columns <= 0) columns = automatic_columns(count, width, height);
   const std::vector<Rect> rects = grid_layout(count, columns, width, height);
   const Rect& first = rects.front();
-  if (first.width < kMinPanelWidth || first.height < kMinPanelHeight)
-    return make_error("render: " + std::to_string(width) + "x" + std::to_string(height) + " is too small for " +
-                      std::to_string(count) + " panels (each needs at least " + std::to_string(kMinPanelWidth) + "x" +
-                      std::to_string(kMinPanelHeight) + ")");
   Impl& m = *impl_;
   if (Status s = m.context->make_current(); !s) return make_error(s.error());
   if (Status s = m.ensure_framebuffers(first.width, first.height); !s) return make_error(s.error());

@@ -27,5 +27,8 @@ void end_progress(bool quiet);
 
 // Each subcommand adds itself to `app`; when it runs, it stores its exit code.
 void add_methods_command(CLI::App& app, int& exit_code);
+#if ROTINTERP_HAVE_RENDER
+void add_render_command(CLI::App& app, int& exit_code);
+#endif
 
 }  // namespace rotinterp::cli

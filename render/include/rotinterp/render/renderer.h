@@ -59,6 +59,10 @@ constexpr int kMinPanelWidth = 64;    // pixels
 constexpr int kMinPanelHeight = 48;   // pixels
 constexpr int kSamples = 4;           // multisampling per pixel (fewer if the GL has fewer)
 
+// Whether `panels` panels on `columns` columns (0 = automatic_columns) fit a
+// width × height image within the limits above; the error is one line.
+Status check_image_size(int width, int height, int panels, int columns = 0);
+
 class Renderer {
  public:
   // Takes the context (current on this thread), loads GL, compiles the shaders and

@@ -11,7 +11,7 @@
 #include <stb_image.h>
 
 #include <algorithm>
-#include <cstdlib>
+#include <cstdint>
 #include <cstdlib>
 #include <memory>
 
@@ -66,9 +66,22 @@ std::vector<Panel> golden_panels(const Clip& clip) {
   return panels;
 }
 
-class GoldenImage : public ::testing::TestWithParam<Backend> {};
+// Pixels whose worst channel differs from the golden by more than the tolerance;
+// SIZE_MAX when the golden cannot be read or has another size.
+std::size_t mismatches_against_golden(const Image& image) {
+  int w = 0, h = 0, channels = 0;
+  std::unique_ptr<stbi_uc, void (*)(void*)> golden(stbi_load(kGolden, &w, &h, &channels, 3), stbi_image_free);
+  if (!golden || w != image.width || h != image.height) return SIZE_MAX;
+  std::size_t mismatches = 0;
+  for (std::size_t i = 0; i < image.rgb.size(); i += 3) {
+    int worst = 0;
+    for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(int(image.rgb[i + c]) - int(golden.get()[i + c])));
+    mismatches += worst > kChannelTolerance;
+  }
+  return mismatches;
+}
 
-TEST_P(GoldenImage, FrameMatchesTheCommittedGoldenWithinTolerance) {
+Result<Image> render_golden_frame(Backend backend, bool perturb) {
   const Clip clip = test::synthetic_clip();
   Scene scene;
   scene.skeleton = clip.skeleton;
@@ -79,31 +92,40 @@ TEST_P(GoldenImage, FrameMatchesTheCommittedGoldenWithinTolerance) {
     for (const Vec3& x : p.position) scene.bounds.extend(x);
     for (const Vec3& x : p.end_site_position) scene.bounds.extend(x);
   }
-  auto context = create_context(GetParam());
-  ASSERT_TRUE(context.ok()) << context.error();
+  auto context = create_context(backend);
+  if (!context) return make_error(context.error());
   auto renderer = Renderer::create(std::move(context).value(), scene);
-  ASSERT_TRUE(renderer.ok()) << renderer.error();
-  auto image = (*renderer)->render(golden_panels(clip), 400, 220);
+  if (!renderer) return make_error(renderer.error());
+  auto panels = golden_panels(clip);
+  if (perturb) panels[1].pose = panels[0].pose;  // the second panel shows no error
+  return (*renderer)->render(panels, 400, 220);
+}
+
+class GoldenImage : public ::testing::TestWithParam<Backend> {};
+
+TEST_P(GoldenImage, FrameMatchesTheCommittedGoldenWithinTolerance) {
+  auto image = render_golden_frame(GetParam(), false);
   ASSERT_TRUE(image.ok()) << image.error();
 
   if (std::getenv("ROTINTERP_UPDATE_GOLDEN") && GetParam() == Backend::osmesa) {
     ASSERT_TRUE(write_png(*image, kGolden).ok());
     GTEST_SKIP() << "golden image rewritten: " << kGolden;
   }
-  int w = 0, h = 0, channels = 0;
-  std::unique_ptr<stbi_uc, void (*)(void*)> golden(stbi_load(kGolden, &w, &h, &channels, 3), stbi_image_free);
-  ASSERT_TRUE(golden) << kGolden << ": cannot read";
-  ASSERT_EQ(w, image->width);
-  ASSERT_EQ(h, image->height);
-  std::size_t mismatches = 0;
-  for (std::size_t i = 0; i < image->rgb.size(); i += 3) {
-    int worst = 0;
-    for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(int(image->rgb[i + c]) - int(golden.get()[i + c])));
-    mismatches += worst > kChannelTolerance;
-  }
+  const std::size_t mismatches = mismatches_against_golden(*image);
+  ASSERT_NE(mismatches, SIZE_MAX) << kGolden << ": missing, unreadable or of another size";
   const std::size_t pixels = image->rgb.size() / 3;
   EXPECT_LE(static_cast<double>(mismatches), kMismatchFraction * static_cast<double>(pixels))
       << mismatches << " of " << pixels << " pixels differ by more than " << kChannelTolerance;
+}
+
+// The comparison can fail: a frame whose second panel shows the reference pose
+// instead of the shifted one is far outside the tolerance.
+TEST_P(GoldenImage, AChangedPoseIsFarOutsideTheTolerance) {
+  auto image = render_golden_frame(GetParam(), true);
+  ASSERT_TRUE(image.ok()) << image.error();
+  const std::size_t mismatches = mismatches_against_golden(*image);
+  ASSERT_NE(mismatches, SIZE_MAX);
+  EXPECT_GT(static_cast<double>(mismatches), 5 * kMismatchFraction * static_cast<double>(image->rgb.size() / 3));
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, GoldenImage, ::testing::Values(Backend::osmesa, Backend::egl),

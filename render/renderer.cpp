@@ -119,6 +119,7 @@ constexpr float kTrailMethodRadius = 0.017f;
 constexpr float kTrailKeyRadius = 0.036f;
 constexpr float kTrailCurrentRadius = 0.065f;
 constexpr std::size_t kMaxTrailSegments = 720;  // longer trails are drawn with a stride
+constexpr std::size_t kMaxKeyMarkers = 64;      // more keys than this are not marked (clutter)
 
 // ---- meshes ------------------------------------------------------------------
 
@@ -660,24 +661,44 @@ struct Renderer::Impl {
     return pixel_height;
   }
 
-  // The trail inset in the scene's bottom-right corner; `height` is the panel's.
-  void draw_trail(const Panel& panel, const Trail& trail, int width, int height, int scene_height) {
-    const int side = static_cast<int>(std::lround(0.36 * std::min(width, scene_height)));
-    if (side < 40 || trail.reference.empty()) return;
-    const int margin = std::max(4, side / 24);
-    const int x = width - side - margin, y = margin;  // GL coordinates: y from the bottom
+  // The trail inset (GL coordinates, y from the bottom); `height` is the panel's.
+  void draw_trail(const Panel& panel, const Trail& trail, const Rect& inset, int height) {
+    const int side = inset.width, x = inset.x, y = inset.y;
     gl.Enable(GL_SCISSOR_TEST);
     gl.Scissor(x, y, side, side);
     gl.ClearColor(kInsetBackground[0], kInsetBackground[1], kInsetBackground[2], 1.0f);
     gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     gl.Viewport(x, y, side, side);
 
+    // Look at the sphere from the trail's mean direction, so the curve faces the
+    // viewer; the scene's view direction where the mean is near zero.
+    Vec3 mean = Vec3::Zero();
+    for (const Vec3& d : trail.reference) mean += unit_or_zero(d);
+    mean /= static_cast<double>(trail.reference.size());
+    Vec3 toward;
+    if (mean.norm() > 0.2) {
+      toward = mean.normalized();
+    } else {
+      const double az = scene.view.azimuth_deg * kPi / 180.0;
+      const double el = std::max(scene.view.elevation_deg, 20.0) * kPi / 180.0;
+      toward = Vec3(std::sin(az) * std::cos(el), std::sin(el), std::cos(az) * std::cos(el));
+    }
     Camera camera;
-    const double az = scene.view.azimuth_deg * kPi / 180.0;
-    const double el = std::max(scene.view.elevation_deg, 20.0) * kPi / 180.0;
-    camera.eye = 3.9 * Vec3(std::sin(az) * std::cos(el), std::sin(el), std::cos(az) * std::cos(el));
+    camera.eye = 3.9 * toward;
     camera.target = Vec3::Zero();
-    camera.fov_y = 36.0 * kPi / 180.0;
+    camera.up = std::abs(toward.y()) < 0.95 ? Vec3::UnitY() : Vec3::UnitZ();
+    // Zoom on the curves: the field of view holds the farthest sample from the view
+    // axis with a margin; at most the whole sphere (half-angle 18°), at least 1.5°.
+    double spread = 0.0;
+    for (const std::vector<Vec3>* curve : {&trail.reference, &trail.method})
+      for (const Vec3& d : *curve) {
+        const Vec3 u = unit_or_zero(d);
+        spread = std::max(spread, (u - u.dot(toward) * toward).norm() / (camera.eye.norm() - std::max(u.dot(toward), 0.0)));
+      }
+    const double max_half = 18.0 * kPi / 180.0;
+    const double half = std::clamp(std::atan(1.25 * spread + 0.02), 1.5 * kPi / 180.0, max_half);
+    const double zoom = std::tan(half) / std::tan(max_half);  // tubes and markers shrink with the view
+    camera.fov_y = 2.0 * half;
     camera.aspect = 1.0;
     camera.near_plane = 2.0;
     camera.far_plane = 6.0;
@@ -685,18 +706,19 @@ struct Renderer::Impl {
 
     const std::size_t n = trail.reference.size();
     const std::size_t stride = std::max<std::size_t>(1, (n + kMaxTrailSegments - 1) / kMaxTrailSegments);
-    use_mesh_program(camera, kTrailReferenceRadius, side);
+    use_mesh_program(camera, zoom * kTrailReferenceRadius, side);
     batch.clear();
-    add_curve(trail.method, stride, kTrailMethodRadius, panel.color, 1.0f, batch);
-    for (std::size_t k : trail.keys)
-      if (k < trail.method.size()) batch.sphere(unit_or_zero(trail.method[k]), kTrailKeyRadius, kKeyMarker, 1.0f);
+    add_curve(trail.method, stride, zoom * kTrailMethodRadius, panel.color, 1.0f, batch);
+    if (trail.keys.size() <= kMaxKeyMarkers)
+      for (std::size_t k : trail.keys)
+        if (k < trail.method.size()) batch.sphere(unit_or_zero(trail.method[k]), zoom * kTrailKeyRadius, kKeyMarker, 1.0f);
     if (trail.current < trail.method.size())
-      batch.sphere(unit_or_zero(trail.method[trail.current]), kTrailCurrentRadius, panel.color, 1.0f);
+      batch.sphere(unit_or_zero(trail.method[trail.current]), zoom * kTrailCurrentRadius, panel.color, 1.0f);
     draw_opaque(batch);
     batch.clear();
-    add_curve(trail.reference, stride, kTrailReferenceRadius, kGhostColor, kGhostAlpha, batch);
+    add_curve(trail.reference, stride, zoom * kTrailReferenceRadius, kGhostColor, kGhostAlpha, batch);
     if (trail.current < n)
-      batch.sphere(unit_or_zero(trail.reference[trail.current]), kTrailCurrentRadius * 1.25, kGhostColor, kGhostAlpha);
+      batch.sphere(unit_or_zero(trail.reference[trail.current]), zoom * kTrailCurrentRadius * 1.25, kGhostColor, kGhostAlpha);
     draw_translucent(batch);
     gl.Disable(GL_SCISSOR_TEST);
 
@@ -725,19 +747,35 @@ struct Renderer::Impl {
     gl.Clear(GL_COLOR_BUFFER_BIT);
     gl.Disable(GL_SCISSOR_TEST);
 
-    gl.Viewport(0, 0, width, scene_height);
+    // With a trail the figure and the inset share the scene area without
+    // overlapping: the inset below the figure in tall panels, beside it in wide ones.
+    Rect view{0, 0, width, scene_height};
+    Rect inset;
+    if (panel.trail && !panel.trail->reference.empty()) {
+      const int margin = std::max(4, std::min(width, scene_height) / 60);
+      if (width * 5 <= scene_height * 6) {
+        const int side = std::min(width - 2 * margin, static_cast<int>(std::lround(0.34 * scene_height)));
+        inset = Rect{width - side - margin, margin, side, side};
+        view = Rect{0, side + margin, width, scene_height - side - margin};
+      } else {
+        const int side = std::min(scene_height - 2 * margin, static_cast<int>(std::lround(0.34 * width)));
+        inset = Rect{width - side - margin, scene_height - side - margin, side, side};
+        view = Rect{0, 0, width - side - margin, scene_height};
+      }
+    }
+    gl.Viewport(view.x, view.y, view.width, view.height);
     gl.Enable(GL_DEPTH_TEST);
     gl.Enable(GL_MULTISAMPLE);
-    const Camera camera = frame_bounds(scene.bounds, static_cast<double>(width) / scene_height, scene.view);
+    const Camera camera = frame_bounds(scene.bounds, static_cast<double>(view.width) / view.height, scene.view);
     draw_lines(grid_lines, to_float(camera.projection() * camera.view()));
-    use_mesh_program(camera, scene.bone_radius, scene_height);
+    use_mesh_program(camera, scene.bone_radius, view.height);
     batch.clear();
     add_pose(scene.skeleton, panel.pose, scene.bone_radius, panel.color, 1.0f, batch);
     draw_opaque(batch);
     batch.clear();
     add_pose(scene.skeleton, panel.ghost, scene.bone_radius * 1.02, kGhostColor, kGhostAlpha, batch);
     draw_translucent(batch);
-    if (panel.trail) draw_trail(panel, *panel.trail, width, height, scene_height);
+    if (inset.width >= 32) draw_trail(panel, *panel.trail, inset, height);
 
     const float pad = static_cast<float>(std::max(4, title_height / 3));
     const int px = fitting_height(panel.title, static_cast<int>(std::lround(0.62 * title_height)),

@@ -24,7 +24,8 @@ namespace rotinterp::render {
 using Color = std::array<float, 3>;  // linear 0…1 RGB
 
 // A curve of unit directions drawn on a unit sphere in a corner of the panel:
-// the reference (translucent, like the ghost) and the method's (solid).
+// the reference (translucent, like the ghost) and the method's (solid), seen from
+// the reference's mean direction. Keys are marked when there are at most 64.
 struct Trail {
   std::string label;                // drawn above the sphere, e.g. the joint name
   std::vector<Vec3> reference;      // unit vectors; non-unit ones are normalized

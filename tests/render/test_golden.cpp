@@ -125,7 +125,7 @@ TEST_P(GoldenImage, AChangedPoseIsFarOutsideTheTolerance) {
   ASSERT_TRUE(image.ok()) << image.error();
   const std::size_t mismatches = mismatches_against_golden(*image);
   ASSERT_NE(mismatches, SIZE_MAX);
-  EXPECT_GT(static_cast<double>(mismatches), 5 * kMismatchFraction * static_cast<double>(image->rgb.size() / 3));
+  EXPECT_GT(static_cast<double>(mismatches), 2 * kMismatchFraction * static_cast<double>(image->rgb.size() / 3));
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, GoldenImage, ::testing::Values(Backend::osmesa, Backend::egl),

@@ -30,10 +30,19 @@ Result<std::size_t> parse_count(std::string_view text, const char* what) {
   return value;
 }
 
-// Solid colours of the methods, in the order given (then repeating).
+// Solid colours of the methods (then repeating).
 constexpr Color kPalette[] = {{0.96f, 0.56f, 0.20f}, {0.26f, 0.62f, 0.96f}, {0.40f, 0.80f, 0.38f},
                               {0.90f, 0.36f, 0.62f}, {0.94f, 0.82f, 0.28f}, {0.36f, 0.84f, 0.84f},
                               {0.66f, 0.52f, 0.94f}, {0.92f, 0.40f, 0.34f}};
+
+// A method's colour follows its place in the registry, so a method looks the same
+// in every image, whatever else is compared with it.
+Color method_colour(const std::string& method) {
+  const auto& all = methods();
+  std::size_t i = 0;
+  while (i < all.size() && all[i].name != method) ++i;
+  return kPalette[i % std::size(kPalette)];
+}
 
 // The times of the source's frames.
 std::vector<double> frame_times(const Clip& clip) {
@@ -386,7 +395,7 @@ Result<ComparisonResult> render_comparison(const Clip& clip, const fs::path& out
       const double mean = counted ? sum / static_cast<double>(counted) : 0.0;
       Panel& p = panels[m];
       p.title = fmt::format("{}  mean {:.2f}°  max {:.2f}°{}", options.methods[m], mean, worst, is_key ? "  (key)" : "");
-      p.color = kPalette[m % std::size(kPalette)];
+      p.color = method_colour(options.methods[m]);
       p.ghost = ghost;
       forward_kinematics(clip.skeleton, local, translation, p.pose);
       if (trails[m]) {

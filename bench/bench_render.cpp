@@ -111,7 +111,9 @@ struct Fixture {
     auto context = create_context(backend);
     if (!context) return;
     auto r = Renderer::create(std::move(context).value(), std::move(scene));
-    if (r) renderer = std::move(r).value();
+    if (!r) return;
+    renderer = std::move(r).value();
+    (void)renderer->render(frames[0], 960, 540);  // warm-up: glyph atlases, framebuffers, shader variants
   }
 };
 

@@ -44,17 +44,18 @@ Color method_colour(const std::string& method) {
   return kPalette[i % std::size(kPalette)];
 }
 
-// The times of the source's frames.
+// The times of the source's frames: the key times of its densest track when that
+// track has a key on every frame (BVH: exactly the reader's times), else the grid
+// start + k·frame_time.
 std::vector<double> frame_times(const Clip& clip) {
-  std::vector<double> times;
   const std::size_t count = clip.frame_count();
-  if (clip.frame_time > 0.0) {
-    const double start = clip.start_time();
-    for (std::size_t k = 0; k < count; ++k) times.push_back(start + static_cast<double>(k) * clip.frame_time);
-    return times;
-  }
+  const RotationTrack* densest = nullptr;
   for (const RotationTrack& t : clip.rotations)
-    if (t.times.size() > times.size()) times = t.times;
+    if (!densest || t.times.size() > densest->times.size()) densest = &t;
+  if (densest && (densest->times.size() >= count || !(clip.frame_time > 0.0))) return densest->times;
+  std::vector<double> times;
+  const double start = clip.start_time();
+  for (std::size_t k = 0; k < count; ++k) times.push_back(start + static_cast<double>(k) * clip.frame_time);
   return times;
 }
 
@@ -286,7 +287,8 @@ Result<ComparisonResult> render_comparison(const Clip& clip, const fs::path& out
   // ---- the reference: every joint's local rotation at every frame ----
   const std::vector<double> times = frame_times(clip);
   const std::size_t frame_count = times.size(), joints = clip.skeleton.joints.size();
-  const double tolerance = 1e-6 * (clip.frame_time > 0.0 ? clip.frame_time : 1.0);
+  // Key times within a thousandth of a frame are the frame's (float-parsed times).
+  const double tolerance = 1e-3 * (clip.frame_time > 0.0 ? clip.frame_time : 1e-3);
   std::vector<std::vector<Quat>> reference(frame_count, std::vector<Quat>(joints));
   for (std::size_t f = 0; f < frame_count; ++f)
     for (std::size_t j = 0; j < joints; ++j) reference[f][j] = sample_rotation(clip.rotations[j], times[f], tolerance);

@@ -2,9 +2,8 @@
 // rebuilt by several interpolators and drawn side by side, one PNG per frame (and
 // optionally a contact sheet).
 //
-// Frames are the source's frames, numbered from 0 at the clip's first key time:
-// frame k is at start + k·frame_time (for a source without a frame time, the key
-// times of its densest track). The reference ("original") pose of frame k uses
+// Frames are the source's frames, numbered from 0: the key times of its densest
+// track when that track has a key on every frame (BVH), else start + k·frame_time. The reference ("original") pose of frame k uses
 // the source's key at that time; between the keys of a sparse track it is the
 // geodesic (slerp) between them, and translation is linear between its keys.
 // Keys kept for the methods: frames 0, N, 2N, … and always the last frame. Only

@@ -27,6 +27,7 @@ void end_progress(bool quiet);
 
 // Each subcommand adds itself to `app`; when it runs, it stores its exit code.
 void add_methods_command(CLI::App& app, int& exit_code);
+void add_info_command(CLI::App& app, int& exit_code);
 #if ROTINTERP_HAVE_RENDER
 void add_render_command(CLI::App& app, int& exit_code);
 #endif

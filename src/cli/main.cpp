@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
 
   int exit_code = kExitOk;
   add_methods_command(app, exit_code);
+  add_info_command(app, exit_code);
 #if ROTINTERP_HAVE_RENDER
   add_render_command(app, exit_code);
 #endif

@@ -84,6 +84,9 @@ struct Clip {
   // One entry per joint; empty where the joint has no translation keys.
   std::vector<std::optional<TranslationTrack>> translations;
   double frame_time = 0.0;    // seconds per frame of the source (BVH Frame Time), 0 if none
+  // BVH source: the Frame Time exactly as written in its header (e.g. ".0083333"). The
+  // BVH writer reuses this text while it still parses to frame_time; empty otherwise.
+  std::string frame_time_text;
   double unit_scale = 1.0;    // metres per clip unit where the source says so (FBX cm → 0.01)
   std::string source_format;  // "bvh", "fbx", … (informational)
 

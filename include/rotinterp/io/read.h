@@ -1,19 +1,50 @@
 // Reading clips from files: every format assimp imports (BVH, FBX, glTF/GLB,
 // Collada, …), with BVH-specific care (channel layout and exact Frame Time from
 // the file's header, validation assimp does not do).
+//
+// What the reader does (README "Formats" has the user's view):
+//  * BVH: our own pass (io/bvh.h) validates the whole file first (before assimp
+//    sees it: NaN/inf values, Frame Time ≤ 0 and short data fail fast) and gives the
+//    layout, End Sites, exact Frame Time and every channel value in double precision,
+//    including the position channels assimp drops (any layout but exactly 6
+//    channels). assimp imports the same file and must agree (joints, frames,
+//    rotations within float precision, else a warning). Key k is at k·Frame Time.
+//  * Other formats: joints are the animated nodes, the bones of meshes and all
+//    their ancestors (the scene root only when its transform is not the identity);
+//    assimp's `$AssimpFbx$` helper nodes are folded into their bone (static and
+//    animated transforms composed, keys at the union of their times) so world poses
+//    are exact. A uniform static scale on a node is baked into the translations of
+//    its descendants; other scale is ignored with a warning.
+//  * Every key is normalized and the track made sign-continuous.
 #pragma once
 
 #include "rotinterp/clip/clip.h"
 #include "rotinterp/core/result.h"
 
 #include <filesystem>
+#include <functional>
 #include <string>
 
 namespace rotinterp {
 
+// Ticks per second used when a file gives 0 (assimp's "not specified"): 25, the
+// value assimp's own viewer assumes. A warning says so.
+constexpr double kDefaultTicksPerSecond = 25.0;
+
+// Receives one-line warnings ("<file>: <what>"): things the reader accepted but a
+// user should know (extra BVH data rows, a default tick rate, ignored scale keys).
+using WarningFn = std::function<void(const std::string& warning)>;
+
 struct ReadOptions {
   // Which animation: its name, or its index as a decimal string; empty = the first.
   std::string animation;
+  // Where warnings go; empty = dropped. The CLI prints them on stderr.
+  WarningFn on_warning;
+  // FBX: true (default) keeps assimp's `$AssimpFbx$` pivot helper nodes and folds them
+  // into their bones here, which is exact. false sets AI_CONFIG_IMPORT_FBX_PRESERVE_PIVOTS
+  // off so assimp folds them itself; it then leaves animation channels that target the
+  // removed helpers (assimp issues #1068, #4005, #6114) and their motion is lost.
+  bool fold_fbx_helpers = true;
 };
 
 // Reads one animation of `path` into a validated Clip (tracks sign-continuous).

@@ -1,0 +1,41 @@
+// What a clip file holds: format, animations, the selected clip, warnings and
+// oddities — the data behind `rotinterp info`.
+#pragma once
+
+#include "rotinterp/clip/clip.h"
+#include "rotinterp/core/result.h"
+#include "rotinterp/io/read.h"
+
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace rotinterp {
+
+struct AnimationSummary {
+  std::string name;
+  double duration = 0.0;          // seconds (assimp's mDuration / ticks per second)
+  double ticks_per_second = 0.0;  // as used (kDefaultTicksPerSecond where the file gives 0)
+  bool default_rate = false;      // the file gave 0 ticks per second
+  std::size_t channels = 0;       // animated nodes
+};
+
+struct ClipFileInfo {
+  std::string format;  // lower-case extension: "bvh", "fbx", "glb", …
+  std::vector<AnimationSummary> animations;
+  std::size_t selected = 0;           // index of the animation read into `clip`
+  Clip clip;
+  std::vector<std::string> warnings;  // as also passed to ReadOptions::on_warning
+  std::size_t folded_helpers = 0;     // `$AssimpFbx$` helper nodes folded into bones
+};
+
+// Reads `path` like read_clip() and also reports what the file holds.
+Result<ClipFileInfo> inspect_clip(const std::filesystem::path& path, const ReadOptions& options = {});
+
+// Things about a valid clip a user may want to know, one line each: non-uniform
+// key spacing, joints without keys, tracks with differing key counts or spans,
+// negative times.
+std::vector<std::string> clip_oddities(const Clip& clip);
+
+}  // namespace rotinterp

@@ -1,0 +1,381 @@
+// Our own pass over BVH text: HIERARCHY (layout), MOTION header (exact Frame Time)
+// and every data row (validated, in double).
+#include "rotinterp/io/bvh.h"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <string>
+
+namespace rotinterp {
+
+namespace {
+
+bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v'; }
+
+// Whitespace-separated tokens with line numbers.
+class Tokenizer {
+ public:
+  explicit Tokenizer(std::string_view text) : text_(text) {}
+
+  // Next token, or empty at the end of the text.
+  std::string_view next() {
+    skip_space();
+    const std::size_t start = pos_;
+    while (pos_ < text_.size() && !is_space(text_[pos_])) ++pos_;
+    return text_.substr(start, pos_ - start);
+  }
+  std::string_view peek() {
+    const std::size_t p = pos_;
+    const int l = line_;
+    const std::string_view t = next();
+    pos_ = p;
+    line_ = l;
+    return t;
+  }
+  int line() const { return line_; }
+  // The line of the next token.
+  int next_line() {
+    skip_space();
+    return line_;
+  }
+  std::size_t position() const { return pos_; }
+
+ private:
+  void skip_space() {
+    while (pos_ < text_.size() && is_space(text_[pos_])) {
+      if (text_[pos_] == '\n') ++line_;
+      ++pos_;
+    }
+  }
+  std::string_view text_;
+  std::size_t pos_ = 0;
+  int line_ = 1;
+};
+
+// A full-token double (no trailing garbage); accepts "nan"/"inf" so that the caller
+// can name them.
+bool parse_double(std::string_view token, double& out) {
+  if (!token.empty() && token.front() == '+') token.remove_prefix(1);
+  if (token.empty()) return false;
+  const auto [ptr, ec] = std::from_chars(token.data(), token.data() + token.size(), out);
+  return ec == std::errc() && ptr == token.data() + token.size();
+}
+
+bool parse_channel(std::string_view token, Channel& out) {
+  static constexpr std::pair<const char*, Channel> kNames[] = {
+      {"Xposition", Channel::Xposition}, {"Yposition", Channel::Yposition}, {"Zposition", Channel::Zposition},
+      {"Xrotation", Channel::Xrotation}, {"Yrotation", Channel::Yrotation}, {"Zrotation", Channel::Zrotation}};
+  for (const auto& [name, channel] : kNames) {
+    if (token.size() != std::string_view(name).size()) continue;
+    bool same = true;
+    for (std::size_t i = 0; i < token.size() && same; ++i)
+      same = std::tolower(static_cast<unsigned char>(token[i])) == std::tolower(static_cast<unsigned char>(name[i]));
+    if (same) {
+      out = channel;
+      return true;
+    }
+  }
+  return false;
+}
+
+bool is_rotation(Channel c) { return c == Channel::Xrotation || c == Channel::Yrotation || c == Channel::Zrotation; }
+int axis_of(Channel c) { return static_cast<int>(c) % 3; }
+
+class HeaderParser {
+ public:
+  HeaderParser(std::string_view text, const std::string& label) : tok_(text), label_(label) {}
+
+  Status parse_hierarchy(BvhFile& file) {
+    if (!expect("HIERARCHY")) return error_;
+    bool any_root = false;
+    while (true) {
+      const std::string_view t = tok_.peek();
+      if (t == "ROOT") {
+        tok_.next();
+        if (Status s = parse_joint(file, -1); !s) return s;
+        any_root = true;
+      } else if (t == "MOTION") {
+        break;
+      } else {
+        return fail("line " + std::to_string(tok_.next_line()) + ": expected ROOT or MOTION, found " + quoted(t));
+      }
+    }
+    if (!any_root) return fail("the HIERARCHY section has no ROOT joint");
+    return Ok{};
+  }
+
+  Status parse_motion_header(BvhFile& file) {
+    if (!expect("MOTION")) return error_;
+    // "Frames:" N (also "Frames:N")
+    std::string_view t = tok_.next();
+    std::string_view count_text;
+    if (t == "Frames:") {
+      count_text = tok_.next();
+    } else if (t.substr(0, 7) == "Frames:") {
+      count_text = t.substr(7);
+    } else {
+      return fail("line " + std::to_string(tok_.line()) + ": expected 'Frames:', found " + quoted(t));
+    }
+    double frames = 0.0;
+    if (!parse_double(count_text, frames) || !std::isfinite(frames) || frames != std::floor(frames) || frames < 0)
+      return fail("line " + std::to_string(tok_.line()) + ": 'Frames:' must be a whole number, found " +
+                  quoted(count_text));
+    if (frames < 1) return fail("'Frames: 0': the file has no motion");
+    if (frames > 1e12) return fail("'Frames: " + std::string(count_text) + "' is not a plausible frame count");
+    file.frames = static_cast<std::size_t>(frames);
+    // "Frame Time:" T (also "Frame Time:T")
+    if (!expect("Frame")) return error_;
+    t = tok_.next();
+    std::string_view time_text;
+    if (t == "Time:") {
+      time_text = tok_.next();
+    } else if (t.substr(0, 5) == "Time:") {
+      time_text = t.substr(5);
+    } else {
+      return fail("line " + std::to_string(tok_.line()) + ": expected 'Frame Time:', found " + quoted(t));
+    }
+    double ft = 0.0;
+    if (!parse_double(time_text, ft))
+      return fail("line " + std::to_string(tok_.line()) + ": 'Frame Time:' is not a number: " + quoted(time_text));
+    if (!std::isfinite(ft) || ft <= 0.0)
+      return fail("'Frame Time: " + std::string(time_text) + "' must be a positive number of seconds");
+    file.frame_time = ft;
+    file.frame_time_text = std::string(time_text);
+    return Ok{};
+  }
+
+  std::size_t position() const { return tok_.position(); }
+  int line() const { return tok_.line(); }
+
+ private:
+  static std::string quoted(std::string_view t) { return t.empty() ? "the end of the file" : "'" + std::string(t) + "'"; }
+
+  Status fail(const std::string& what) {
+    error_ = make_error(label_ + ": " + what);
+    return error_;
+  }
+
+  bool expect(std::string_view word) {
+    const int line = tok_.next_line();
+    const std::string_view t = tok_.next();
+    if (t == word) return true;
+    (void)fail("line " + std::to_string(line) + ": expected '" + std::string(word) + "', found " + quoted(t));
+    return false;
+  }
+
+  Status parse_vec3(Vec3& v, const std::string& what) {
+    for (int i = 0; i < 3; ++i) {
+      const int line = tok_.next_line();
+      const std::string_view t = tok_.next();
+      if (!parse_double(t, v[i]))
+        return fail("line " + std::to_string(line) + ": " + what + ": expected a number, found " + quoted(t));
+      if (!std::isfinite(v[i]))
+        return fail("line " + std::to_string(line) + ": " + what + " is not finite (" + std::string(t) + ")");
+    }
+    return Ok{};
+  }
+
+  Status parse_joint(BvhFile& file, int parent) {
+    const int line = tok_.next_line();
+    const std::string_view name = tok_.next();
+    if (name.empty() || name == "{") return fail("line " + std::to_string(line) + ": a joint has no name");
+    for (const BvhJoint& j : file.joints)
+      if (j.name == name) return fail("line " + std::to_string(line) + ": joint name '" + std::string(name) + "' is used twice");
+    const int index = static_cast<int>(file.joints.size());
+    file.joints.push_back(BvhJoint{std::string(name), parent, Vec3::Zero(), {}, 0});
+    const std::string jname(name);
+    if (!expect("{")) return error_;
+    if (!expect("OFFSET")) return error_;
+    Vec3 offset;
+    if (Status s = parse_vec3(offset, "OFFSET of joint '" + jname + "'"); !s) return s;
+    file.joints[index].offset = offset;
+    // CHANNELS is optional for a joint in some writers (no channels).
+    if (tok_.peek() == "CHANNELS") {
+      tok_.next();
+      const int cl = tok_.next_line();
+      const std::string_view n_text = tok_.next();
+      double n = 0;
+      if (!parse_double(n_text, n) || n < 0 || n > 64 || n != std::floor(n))
+        return fail("line " + std::to_string(cl) + ": joint '" + jname + "': CHANNELS count " + quoted(n_text) +
+                    " is not a small whole number");
+      std::vector<Channel> channels;
+      for (int i = 0; i < static_cast<int>(n); ++i) {
+        const int l = tok_.next_line();
+        const std::string_view c = tok_.next();
+        Channel ch;
+        if (!parse_channel(c, ch))
+          return fail("line " + std::to_string(l) + ": joint '" + jname + "': unknown channel " + quoted(c));
+        channels.push_back(ch);
+      }
+      file.joints[index].first_column = file.columns;
+      file.columns += channels.size();
+      file.joints[index].channels = std::move(channels);
+    } else {
+      file.joints[index].first_column = file.columns;
+    }
+    while (true) {
+      const int l = tok_.next_line();
+      const std::string_view t = tok_.next();
+      if (t == "}") return Ok{};
+      if (t == "JOINT") {
+        if (Status s = parse_joint(file, index); !s) return s;
+      } else if (t == "End") {
+        if (!expect("Site")) return error_;
+        if (!expect("{")) return error_;
+        if (!expect("OFFSET")) return error_;
+        Vec3 e;
+        if (Status s = parse_vec3(e, "End Site OFFSET of joint '" + jname + "'"); !s) return s;
+        if (!expect("}")) return error_;
+        file.end_sites.push_back(BvhEndSite{index, e});
+      } else {
+        return fail("line " + std::to_string(l) + ": joint '" + jname + "': expected JOINT, End Site or '}', found " +
+                    quoted(t));
+      }
+    }
+  }
+
+  Tokenizer tok_;
+  const std::string& label_;
+  Status error_ = Ok{};
+};
+
+}  // namespace
+
+Quat BvhFile::rotation(std::size_t frame, std::size_t joint) const {
+  Quat q = Quat::Identity();
+  const BvhJoint& j = joints[joint];
+  for (std::size_t c = 0; c < j.channels.size(); ++c)
+    if (is_rotation(j.channels[c]))
+      q = q * Quat(Eigen::AngleAxisd(value(frame, joint, c) * (kPi / 180.0), Vec3::Unit(axis_of(j.channels[c]))));
+  return q.normalized();
+}
+
+Vec3 BvhFile::translation(std::size_t frame, std::size_t joint) const {
+  Vec3 t = joints[joint].offset;
+  const BvhJoint& j = joints[joint];
+  for (std::size_t c = 0; c < j.channels.size(); ++c)
+    if (!is_rotation(j.channels[c])) t[axis_of(j.channels[c])] = value(frame, joint, c);
+  return t;
+}
+
+bool BvhFile::has_position_channels(std::size_t joint) const {
+  for (Channel c : joints[joint].channels)
+    if (!is_rotation(c)) return true;
+  return false;
+}
+
+Result<BvhFile> parse_bvh(std::string_view text, const std::string& label) {
+  BvhFile file;
+  HeaderParser header(text, label);
+  if (Status s = header.parse_hierarchy(file); !s) return make_error(s.error());
+  if (Status s = header.parse_motion_header(file); !s) return make_error(s.error());
+
+  // Data rows: one frame per non-blank line, exactly `columns` values each.
+  std::size_t pos = header.position();
+  int line = header.line();
+  // The rest of the Frame Time line must be blank.
+  auto line_end = [&](std::size_t from) {
+    const std::size_t e = text.find('\n', from);
+    return e == std::string_view::npos ? text.size() : e;
+  };
+  {
+    const std::size_t e = line_end(pos);
+    for (std::size_t i = pos; i < e; ++i)
+      if (!is_space(text[i]))
+        return make_error(label + ": line " + std::to_string(line) + ": unexpected text after the Frame Time");
+    pos = e;
+  }
+  // Reserve by what the text can hold, never by the declared count.
+  const std::size_t max_rows_in_text = static_cast<std::size_t>(std::count(text.begin() + pos, text.end(), '\n')) + 1;
+  file.values.reserve(std::min(file.frames, max_rows_in_text) * file.columns);
+
+  // Which joint/channel owns each column, for messages.
+  std::vector<std::pair<std::size_t, std::size_t>> owner(file.columns);
+  for (std::size_t j = 0; j < file.joints.size(); ++j)
+    for (std::size_t c = 0; c < file.joints[j].channels.size(); ++c) owner[file.joints[j].first_column + c] = {j, c};
+
+  std::size_t frame = 0;
+  while (pos < text.size()) {
+    ++pos;  // past '\n'
+    ++line;
+    const std::size_t e = line_end(pos);
+    std::string_view row = text.substr(pos, e - pos);
+    pos = e;
+    std::size_t i = 0;
+    while (i < row.size() && is_space(row[i])) ++i;
+    if (i == row.size()) continue;  // blank line
+    if (frame == file.frames) {
+      ++file.extra_rows;
+      continue;
+    }
+    std::size_t n = 0;
+    while (i < row.size()) {
+      std::size_t j = i;
+      while (j < row.size() && !is_space(row[j])) ++j;
+      const std::string_view token = row.substr(i, j - i);
+      const std::string where = label + ": frame " + std::to_string(frame) + " (line " + std::to_string(line) + ")";
+      if (n >= file.columns)
+        return make_error(where + ": more than the " + std::to_string(file.columns) + " values the HIERARCHY declares");
+      double v = 0.0;
+      const auto [joint, channel] = owner[n];
+      const std::string what = "joint '" + file.joints[joint].name + "' " +
+                               channel_name(file.joints[joint].channels[channel]);
+      if (!parse_double(token, v)) return make_error(where + ", " + what + ": not a number: '" + std::string(token) + "'");
+      if (!std::isfinite(v)) return make_error(where + ", " + what + ": value is " + std::string(token) + " (not finite)");
+      file.values.push_back(v);
+      ++n;
+      i = j;
+      while (i < row.size() && is_space(row[i])) ++i;
+    }
+    if (n != file.columns)
+      return make_error(label + ": frame " + std::to_string(frame) + " (line " + std::to_string(line) + ") has " +
+                        std::to_string(n) + " values, the HIERARCHY declares " + std::to_string(file.columns));
+    ++frame;
+  }
+  if (frame < file.frames)
+    return make_error(label + ": 'Frames: " + std::to_string(file.frames) + "' but the file has only " +
+                      std::to_string(frame) + (frame == 1 ? " data row" : " data rows"));
+  return file;
+}
+
+Skeleton bvh_skeleton(const BvhFile& file) {
+  Skeleton s;
+  for (const BvhJoint& j : file.joints) s.joints.push_back(Joint{j.name, j.parent, j.offset, Quat::Identity(), j.channels});
+  for (const BvhEndSite& e : file.end_sites)
+    s.end_sites.push_back(EndSite{e.parent, e.offset, "EndSite_" + file.joints[static_cast<std::size_t>(e.parent)].name});
+  return s;
+}
+
+Clip bvh_to_clip(const BvhFile& file, const std::string& name) {
+  Clip clip;
+  clip.name = name;
+  clip.skeleton = bvh_skeleton(file);
+  clip.frame_time = file.frame_time;
+  clip.frame_time_text = file.frame_time_text;
+  clip.source_format = "bvh";
+  const std::size_t n = file.joints.size();
+  clip.rotations.resize(n);
+  clip.translations.resize(n);
+  for (std::size_t j = 0; j < n; ++j) {
+    RotationTrack& r = clip.rotations[j];
+    r.times.resize(file.frames);
+    r.keys.resize(file.frames);
+    for (std::size_t f = 0; f < file.frames; ++f) {
+      r.times[f] = static_cast<double>(f) * file.frame_time;
+      r.keys[f] = file.rotation(f, j);
+    }
+    r.make_sign_continuous();
+    if (file.has_position_channels(j)) {
+      TranslationTrack t;
+      t.times = r.times;
+      t.keys.resize(file.frames);
+      for (std::size_t f = 0; f < file.frames; ++f) t.keys[f] = file.translation(f, j);
+      clip.translations[j] = std::move(t);
+    }
+  }
+  return clip;
+}
+
+}  // namespace rotinterp

@@ -1,0 +1,254 @@
+// The BVH writer: the clip's hierarchy and channel layout, Euler angles nearest the
+// previous frame, 6 decimals.
+#include "rotinterp/io/bvh.h"
+#include "rotinterp/io/euler.h"
+
+#include <charconv>
+#include <functional>
+#include <cmath>
+#include <ostream>
+#include <set>
+#include <string>
+
+namespace rotinterp {
+
+namespace {
+
+// A multi-key track must sit on the grid start + k·frame_time within this fraction
+// of a frame: resamplers compute times as start + k/rate, so anything beyond
+// round-off means the clip was not resampled.
+constexpr double kGridTolerance = 1e-6;
+
+// A joint whose rotation channels cannot express every rotation (one or two axes,
+// or none) must reproduce the clip's rotation within this angle (radians, 1e-6 rad
+// = 5.7e-5°, below the 1e-4° round-trip promise).
+constexpr double kReducedLayoutTolerance = 1e-6;
+
+bool is_rotation(Channel c) { return c == Channel::Xrotation || c == Channel::Yrotation || c == Channel::Zrotation; }
+int axis_of(Channel c) { return static_cast<int>(c) % 3; }
+Channel rotation_channel(int axis) { return static_cast<Channel>(3 + axis); }
+Channel position_channel(int axis) { return static_cast<Channel>(axis); }
+
+void append_number(std::string& out, double v, bool fixed6) {
+  char buf[64];
+  if (fixed6) {
+    // Round first so that a value that prints as zero prints as "0.000000", not "-0.000000".
+    if (std::abs(v) < 5e-7) v = 0.0;
+    auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, 6);
+    out.append(buf, r.ptr);
+  } else {
+    auto r = std::to_chars(buf, buf + sizeof buf, v);  // shortest text that reads back exactly
+    out.append(buf, r.ptr);
+  }
+}
+
+// How one joint's rotation becomes its rotation channel values.
+struct RotationPlan {
+  std::vector<std::size_t> columns;  // indices into the joint's channels, in order
+  std::vector<int> axes;             // axis of each rotation channel
+  // Exact case: a valid Euler triple at these positions of `columns`; other rotation
+  // channels stay 0.
+  int triple[3] = {-1, -1, -1};
+  EulerAxes triple_axes{};
+  // Reduced case (no valid triple): the distinct axes used (1 or 2), at these positions.
+  std::vector<int> reduced_pos;
+};
+
+RotationPlan plan_rotation(const std::vector<Channel>& channels) {
+  RotationPlan p;
+  for (std::size_t c = 0; c < channels.size(); ++c)
+    if (is_rotation(channels[c])) {
+      p.columns.push_back(c);
+      p.axes.push_back(axis_of(channels[c]));
+    }
+  const int n = static_cast<int>(p.axes.size());
+  for (int i = 0; i < n && p.triple[0] < 0; ++i)
+    for (int j = i + 1; j < n && p.triple[0] < 0; ++j)
+      for (int k = j + 1; k < n && p.triple[0] < 0; ++k) {
+        const EulerAxes a{p.axes[i], p.axes[j], p.axes[k]};
+        if (is_valid_euler_axes(a)) {
+          p.triple[0] = i, p.triple[1] = j, p.triple[2] = k;
+          p.triple_axes = a;
+        }
+      }
+  if (p.triple[0] < 0) {
+    // First occurrence of each distinct axis (at most two distinct axes here, or
+    // the same axis twice in a row).
+    std::set<int> seen;
+    for (int i = 0; i < n; ++i)
+      if (seen.insert(p.axes[i]).second) p.reduced_pos.push_back(i);
+  }
+  return p;
+}
+
+std::string bvh_name(std::string name) {
+  for (char& c : name)
+    if (c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '{' || c == '}') c = '_';
+  return name;
+}
+
+}  // namespace
+
+Status write_bvh(const Clip& clip, std::ostream& out, const WriteOptions& options, const std::string& label) {
+  if (Status s = clip.validate(); !s) return make_error(label + ": cannot write an invalid clip: " + s.error());
+  const Skeleton& sk = clip.skeleton;
+  const std::size_t n = sk.joints.size();
+  const double ft = clip.frame_time;
+  if (!(ft > 0.0))
+    return make_error(label + ": BVH needs a uniform frame time; the clip has none (resample it first)");
+  const auto default_axes = parse_euler_order(options.bvh_order);
+  if (!default_axes) return make_error(label + ": '" + options.bvh_order + "' is not a rotation order (e.g. ZXY)");
+
+  // The uniform grid every multi-key track must sit on.
+  const double start = clip.start_time();
+  const std::size_t frames = clip.frame_count();
+  auto on_grid = [&](const std::vector<double>& times, const std::string& joint) -> Status {
+    if (times.size() == 1) return Ok{};
+    if (times.size() != frames)
+      return make_error(label + ": joint '" + joint + "' has " + std::to_string(times.size()) + " keys, the frame grid " +
+                        std::to_string(frames) + " frames; BVH needs every track sampled on one uniform grid (resample first)");
+    for (std::size_t k = 0; k < times.size(); ++k)
+      if (std::abs(times[k] - (start + static_cast<double>(k) * ft)) > kGridTolerance * ft)
+        return make_error(label + ": joint '" + joint + "' key " + std::to_string(k) + " at " + std::to_string(times[k]) +
+                          " s is not on the frame grid (frame time " + std::to_string(ft) + " s); resample first");
+    return Ok{};
+  };
+
+  // Channel layout per joint.
+  std::vector<std::vector<Channel>> layout(n);
+  std::vector<std::string> names(n);
+  std::set<std::string> used;
+  for (std::size_t j = 0; j < n; ++j) {
+    const Joint& joint = sk.joints[j];
+    if (Status s = on_grid(clip.rotations[j].times, joint.name); !s) return s;
+    if (clip.translations[j])
+      if (Status s = on_grid(clip.translations[j]->times, joint.name); !s) return s;
+    if (!joint.channels.empty()) {
+      layout[j] = joint.channels;
+      bool has_position = false;
+      for (Channel c : joint.channels) has_position = has_position || !is_rotation(c);
+      if (clip.translations[j] && !has_position)
+        return make_error(label + ": joint '" + joint.name +
+                          "' has a translation track but its BVH channels have no position channel");
+    } else {
+      if (clip.translations[j])
+        for (int a = 0; a < 3; ++a) layout[j].push_back(position_channel(a));
+      for (int a : *default_axes) layout[j].push_back(rotation_channel(a));
+    }
+    std::string name = bvh_name(joint.name);
+    while (!used.insert(name).second) name += "_";
+    names[j] = name;
+  }
+
+  // Children lists (clip order), End Sites per joint.
+  std::vector<std::vector<std::size_t>> children(n), sites(n);
+  std::vector<std::size_t> roots;
+  for (std::size_t j = 0; j < n; ++j) {
+    if (sk.joints[j].parent < 0) roots.push_back(j);
+    else children[static_cast<std::size_t>(sk.joints[j].parent)].push_back(j);
+  }
+  for (std::size_t e = 0; e < sk.end_sites.size(); ++e) sites[static_cast<std::size_t>(sk.end_sites[e].parent)].push_back(e);
+
+  // HIERARCHY, recording the emission order (the motion columns follow it).
+  std::string text = "HIERARCHY\n";
+  std::vector<std::size_t> order;
+  auto offset_line = [&](const std::string& indent, const Vec3& o) {
+    text += indent + "OFFSET";
+    for (int a = 0; a < 3; ++a) {
+      text += ' ';
+      append_number(text, o[a], false);
+    }
+    text += '\n';
+  };
+  std::function<void(std::size_t, int)> emit = [&](std::size_t j, int depth) {
+    const std::string in(static_cast<std::size_t>(depth), '\t');
+    order.push_back(j);
+    text += in + (sk.joints[j].parent < 0 ? "ROOT " : "JOINT ") + names[j] + "\n" + in + "{\n";
+    offset_line(in + "\t", sk.joints[j].offset);
+    text += in + "\tCHANNELS " + std::to_string(layout[j].size());
+    for (Channel c : layout[j]) text += std::string(" ") + channel_name(c);
+    text += '\n';
+    for (std::size_t c : children[j]) emit(c, depth + 1);
+    for (std::size_t e : sites[j]) {
+      text += in + "\tEnd Site\n" + in + "\t{\n";
+      offset_line(in + "\t\t", sk.end_sites[e].offset);
+      text += in + "\t}\n";
+    }
+    text += in + "}\n";
+  };
+  for (std::size_t r : roots) emit(r, 0);
+
+  text += "MOTION\nFrames: " + std::to_string(frames) + "\nFrame Time: ";
+  double parsed = 0.0;
+  const std::string& ftt = clip.frame_time_text;
+  if (!ftt.empty() && std::from_chars(ftt.data(), ftt.data() + ftt.size(), parsed).ec == std::errc() && parsed == ft)
+    text += ftt;
+  else
+    append_number(text, ft, false);
+  text += '\n';
+  out << text;
+  text.clear();
+
+  // MOTION rows.
+  std::vector<RotationPlan> plans(n);
+  std::vector<Vec3> previous(n, Vec3::Zero());
+  for (std::size_t j = 0; j < n; ++j) plans[j] = plan_rotation(layout[j]);
+  std::vector<double> row;
+  for (std::size_t f = 0; f < frames; ++f) {
+    for (std::size_t j : order) {
+      const RotationTrack& rt = clip.rotations[j];
+      const Quat q = rt.keys[rt.keys.size() == 1 ? 0 : f];
+      Vec3 t = sk.joints[j].offset;
+      if (clip.translations[j]) t = clip.translations[j]->keys[clip.translations[j]->keys.size() == 1 ? 0 : f];
+      const RotationPlan& p = plans[j];
+      row.assign(layout[j].size(), 0.0);
+      for (std::size_t c = 0; c < layout[j].size(); ++c)
+        if (!is_rotation(layout[j][c])) row[c] = t[axis_of(layout[j][c])];
+      Quat written = Quat::Identity();
+      if (p.triple[0] >= 0) {
+        const Vec3 e = euler_nearest(q, p.triple_axes, previous[j]);
+        previous[j] = e;
+        for (int i = 0; i < 3; ++i) row[p.columns[static_cast<std::size_t>(p.triple[i])]] = e[i] * (180.0 / kPi);
+        written = euler_to_quat(p.triple_axes, e);
+      } else if (!p.reduced_pos.empty()) {
+        // One or two distinct axes: complete them to a Tait–Bryan triple, keep the
+        // leading angles and check that the dropped one is zero.
+        const int a0 = p.axes[static_cast<std::size_t>(p.reduced_pos[0])];
+        const int a1 = p.reduced_pos.size() > 1 ? p.axes[static_cast<std::size_t>(p.reduced_pos[1])] : (a0 + 1) % 3;
+        const EulerAxes full{a0, a1, 3 - a0 - a1};
+        Vec3 e = euler_nearest(q, full, previous[j]);
+        if (p.reduced_pos.size() == 1) {
+          // A hinge: the twist angle about its axis.
+          const double twist = 2.0 * std::atan2(q.vec()[a0], q.w());
+          e = Vec3(previous[j][0] + std::remainder(twist - previous[j][0], kTwoPi), 0.0, 0.0);
+        } else {
+          e[2] = 0.0;
+        }
+        previous[j] = e;
+        for (std::size_t i = 0; i < p.reduced_pos.size(); ++i)
+          row[p.columns[static_cast<std::size_t>(p.reduced_pos[i])]] = e[static_cast<Eigen::Index>(i)] * (180.0 / kPi);
+        written = euler_to_quat(full, e);
+      }
+      if (p.triple[0] < 0) {
+        const double off = angular_distance(q, written);
+        if (off > kReducedLayoutTolerance)
+          return make_error(label + ": frame " + std::to_string(f) + ", joint '" + sk.joints[j].name +
+                            "': its BVH channels cannot express the rotation (off by " +
+                            std::to_string(off * 180.0 / kPi) + " degrees)");
+      }
+      for (std::size_t c = 0; c < row.size(); ++c) {
+        if (!text.empty() && text.back() != '\n') text += ' ';
+        append_number(text, row[c], true);
+      }
+    }
+    text += '\n';
+    if (text.size() > (1u << 20)) {
+      out << text;
+      text.clear();
+    }
+  }
+  out << text;
+  return Ok{};
+}
+
+}  // namespace rotinterp

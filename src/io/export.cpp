@@ -1,0 +1,189 @@
+#include "export.h"
+
+#include "assimp_text.h"
+#include "rotinterp/io/atomic_file.h"
+
+#include <assimp/Exporter.hpp>
+#include <assimp/scene.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+namespace rotinterp {
+
+namespace {
+
+constexpr double kExportTicksPerSecond = 1.0;
+
+aiMatrix4x4 node_matrix(const Vec3& t, const Quat& r) {
+  const Mat3 m = r.toRotationMatrix();
+  return aiMatrix4x4(static_cast<ai_real>(m(0, 0)), static_cast<ai_real>(m(0, 1)), static_cast<ai_real>(m(0, 2)),
+                     static_cast<ai_real>(t.x()), static_cast<ai_real>(m(1, 0)), static_cast<ai_real>(m(1, 1)),
+                     static_cast<ai_real>(m(1, 2)), static_cast<ai_real>(t.y()), static_cast<ai_real>(m(2, 0)),
+                     static_cast<ai_real>(m(2, 1)), static_cast<ai_real>(m(2, 2)), static_cast<ai_real>(t.z()), 0, 0, 0, 1);
+}
+
+aiQuaternion to_ai(const Quat& q) {
+  return aiQuaternion(static_cast<ai_real>(q.w()), static_cast<ai_real>(q.x()), static_cast<ai_real>(q.y()),
+                      static_cast<ai_real>(q.z()));
+}
+aiVector3D to_ai(const Vec3& v) {
+  return aiVector3D(static_cast<ai_real>(v.x()), static_cast<ai_real>(v.y()), static_cast<ai_real>(v.z()));
+}
+
+// The track at time t: its key where it has one, slerp/lerp between keys (the
+// reading every importer applies), clamped outside.
+template <class Track, class Mix>
+auto sample_track(const Track& track, double t, Mix mix) {
+  const auto& ts = track.times;
+  if (t <= ts.front()) return track.keys.front();
+  if (t >= ts.back()) return track.keys.back();
+  const auto hi = static_cast<std::size_t>(std::upper_bound(ts.begin(), ts.end(), t) - ts.begin());
+  if (ts[hi - 1] == t) return track.keys[hi - 1];
+  return mix(track.keys[hi - 1], track.keys[hi], (t - ts[hi - 1]) / (ts[hi] - ts[hi - 1]));
+}
+Quat sample_rotation(const RotationTrack& r, double t) {
+  return sample_track(r, t, [](const Quat& a, const Quat& b, double u) { return Quat(a.slerp(u, b).normalized()); });
+}
+Vec3 sample_translation(const TranslationTrack& tr, double t) {
+  return sample_track(tr, t, [](const Vec3& a, const Vec3& b, double u) { return Vec3((1 - u) * a + u * b); });
+}
+
+std::unique_ptr<aiScene> build_scene(const Clip& clip) {
+  auto scene = std::make_unique<aiScene>();
+  const Skeleton& sk = clip.skeleton;
+  const std::size_t n = sk.joints.size();
+  scene->mRootNode = new aiNode("RootNode");
+  std::vector<aiNode*> nodes(n);
+  std::vector<std::vector<aiNode*>> kids(n);
+  std::vector<aiNode*> roots;
+  for (std::size_t j = 0; j < n; ++j) {
+    nodes[j] = new aiNode(sk.joints[j].name);
+    nodes[j]->mTransformation = node_matrix(sk.joints[j].offset, sk.joints[j].rest_rotation);
+  }
+  for (std::size_t j = 0; j < n; ++j) {
+    const int p = sk.joints[j].parent;
+    if (p < 0) roots.push_back(nodes[j]);
+    else kids[static_cast<std::size_t>(p)].push_back(nodes[j]);
+  }
+  auto attach = [](aiNode* parent, const std::vector<aiNode*>& children) {
+    if (children.empty()) return;
+    parent->mNumChildren = static_cast<unsigned>(children.size());
+    parent->mChildren = new aiNode*[children.size()];
+    for (std::size_t i = 0; i < children.size(); ++i) {
+      parent->mChildren[i] = children[i];
+      children[i]->mParent = parent;
+    }
+  };
+  attach(scene->mRootNode, roots);
+  for (std::size_t j = 0; j < n; ++j) attach(nodes[j], kids[j]);
+
+  // Ticks are seconds: assimp 5.2.5's FBX and Collada exporters write mTime as
+  // seconds whatever mTicksPerSecond says (glTF divides by it, so 1 suits all three).
+  const double tps = kExportTicksPerSecond;
+  auto* anim = new aiAnimation();
+  anim->mName = aiString(clip.name.empty() ? std::string("clip") : clip.name);
+  anim->mTicksPerSecond = tps;
+  // Whole ticks: the FBX exporter truncates the take's end to an integer tick count.
+  anim->mDuration = std::ceil(clip.end_time() * tps);
+  anim->mNumChannels = static_cast<unsigned>(n);
+  anim->mChannels = new aiNodeAnim*[n];
+  for (std::size_t j = 0; j < n; ++j) {
+    // Position, rotation and scaling keys at the same times: assimp's Collada
+    // exporter skips channels whose key counts differ.
+    const RotationTrack& r = clip.rotations[j];
+    const std::optional<TranslationTrack>& tr = clip.translations[j];
+    std::vector<double> times = r.times;
+    if (tr) {
+      times.insert(times.end(), tr->times.begin(), tr->times.end());
+      std::sort(times.begin(), times.end());
+      times.erase(std::unique(times.begin(), times.end()), times.end());
+    }
+    auto* ch = new aiNodeAnim();
+    anim->mChannels[j] = ch;
+    ch->mNodeName = aiString(sk.joints[j].name);
+    const auto count = static_cast<unsigned>(times.size());
+    ch->mNumRotationKeys = ch->mNumPositionKeys = ch->mNumScalingKeys = count;
+    ch->mRotationKeys = new aiQuatKey[count];
+    ch->mPositionKeys = new aiVectorKey[count];
+    ch->mScalingKeys = new aiVectorKey[count];
+    for (unsigned k = 0; k < count; ++k) {
+      const double tick = times[k] * tps;
+      ch->mRotationKeys[k] = aiQuatKey(tick, to_ai(sample_rotation(r, times[k])));
+      ch->mPositionKeys[k] = aiVectorKey(tick, to_ai(tr ? sample_translation(*tr, times[k]) : sk.joints[j].offset));
+      ch->mScalingKeys[k] = aiVectorKey(tick, aiVector3D(1, 1, 1));
+    }
+  }
+  scene->mNumAnimations = 1;
+  scene->mAnimations = new aiAnimation*[1];
+  scene->mAnimations[0] = anim;
+  return scene;
+}
+
+}  // namespace
+
+std::optional<std::string> assimp_export_format(const std::string& ext) {
+  if (ext == ".fbx") return std::string("fbxa");
+  if (ext == ".gltf") return std::string("gltf2");
+  if (ext == ".glb") return std::string("glb2");
+  if (ext == ".dae") return std::string("collada");
+  return std::nullopt;
+}
+
+Status export_with_assimp(const Clip& clip, const std::filesystem::path& path, const std::string& format) {
+  const std::string label = path.string();
+  if (Status s = clip.validate(); !s) return make_error(label + ": cannot write an invalid clip: " + s.error());
+  const std::unique_ptr<aiScene> scene = build_scene(clip);
+  AtomicOutput out(path);
+  Assimp::Exporter exporter;
+  aiReturn ret = aiReturn_FAILURE;
+  try {
+    ret = exporter.Export(scene.get(), format, out.temp_path().string(), 0);
+  } catch (const std::exception& e) {
+    return make_error(label + ": assimp could not export: " + one_line(e.what()));
+  }
+  // A .gltf comes with a .bin buffer that assimp names after the temporary file:
+  // give it the target's name (atomically too), point the .gltf at it, then commit.
+  const std::filesystem::path temp_bin = std::filesystem::path(out.temp_path()).replace_extension(".bin");
+  std::error_code ec;
+  const bool has_bin = std::filesystem::exists(temp_bin, ec);
+  AtomicOutput bin_out(std::filesystem::path(path).replace_extension(".bin"));
+  if (has_bin) {
+    std::filesystem::rename(temp_bin, bin_out.temp_path(), ec);
+    if (ec) {
+      std::filesystem::remove(temp_bin, ec);
+      return make_error(label + ": cannot write its buffer file: " + ec.message());
+    }
+  }
+  if (ret != aiReturn_SUCCESS) return make_error(label + ": assimp could not export: " + one_line(exporter.GetErrorString()));
+  if (has_bin) {
+    std::string text;
+    {
+      std::ifstream in(out.temp_path(), std::ios::binary);
+      std::ostringstream ss;
+      ss << in.rdbuf();
+      text = ss.str();
+    }
+    const std::string from = "\"" + temp_bin.filename().string() + "\"";
+    const std::string to = "\"" + bin_out.target().filename().string() + "\"";
+    std::size_t replaced = 0;
+    for (std::size_t p = text.find(from); p != std::string::npos; p = text.find(from, p + to.size())) {
+      text.replace(p, from.size(), to);
+      ++replaced;
+    }
+    if (replaced == 0) return make_error(label + ": assimp wrote a buffer file the .gltf does not name");
+    std::ofstream rewrite(out.temp_path(), std::ios::binary | std::ios::trunc);
+    rewrite << text;
+    rewrite.close();
+    if (!rewrite) return make_error(label + ": cannot write: " + std::strerror(errno));
+    if (Status s = bin_out.commit(); !s) return s;
+  }
+  return out.commit();
+}
+
+}  // namespace rotinterp

@@ -1,0 +1,67 @@
+#include "rotinterp/io/info.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <string>
+
+namespace rotinterp {
+
+namespace {
+
+// Key spacing differing from the median spacing by more than this fraction of it
+// counts as non-uniform.
+constexpr double kUniformSpacingTolerance = 1e-3;
+
+std::string seconds(double s) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.6g s", s);
+  return buf;
+}
+
+bool uniform(const std::vector<double>& t) {
+  if (t.size() < 3) return true;
+  std::vector<double> d(t.size() - 1);
+  for (std::size_t k = 1; k < t.size(); ++k) d[k - 1] = t[k] - t[k - 1];
+  std::vector<double> sorted = d;
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
+  const double median = sorted[sorted.size() / 2];
+  for (double x : d)
+    if (std::abs(x - median) > kUniformSpacingTolerance * median) return false;
+  return true;
+}
+
+}  // namespace
+
+std::vector<std::string> clip_oddities(const Clip& clip) {
+  std::vector<std::string> out;
+  const Skeleton& sk = clip.skeleton;
+  std::vector<std::string> static_joints, uneven;
+  std::size_t min_keys = SIZE_MAX, max_keys = 0;
+  for (std::size_t j = 0; j < clip.rotations.size() && j < sk.joints.size(); ++j) {
+    const RotationTrack& r = clip.rotations[j];
+    if (r.times.size() == 1) static_joints.push_back(sk.joints[j].name);
+    else {
+      min_keys = std::min(min_keys, r.times.size());
+      max_keys = std::max(max_keys, r.times.size());
+    }
+    if (!uniform(r.times)) uneven.push_back(sk.joints[j].name);
+  }
+  auto list = [](const std::vector<std::string>& names) {
+    std::string s;
+    for (std::size_t i = 0; i < names.size() && i < 8; ++i) s += (i ? ", " : "") + names[i];
+    if (names.size() > 8) s += ", … (" + std::to_string(names.size()) + " in all)";
+    return s;
+  };
+  if (!static_joints.empty())
+    out.push_back(std::to_string(static_joints.size()) + " joint(s) without rotation keys (static): " + list(static_joints));
+  if (!uneven.empty()) out.push_back("non-uniform key spacing in " + std::to_string(uneven.size()) + " joint(s): " + list(uneven));
+  if (max_keys > 0 && min_keys != max_keys)
+    out.push_back("rotation key counts differ between joints: " + std::to_string(min_keys) + " to " + std::to_string(max_keys));
+  if (clip.start_time() < 0.0) out.push_back("keys before time 0 (first at " + seconds(clip.start_time()) + ")");
+  if (clip.frame_time == 0.0) out.push_back("no uniform frame rate: resample before writing BVH");
+  return out;
+}
+
+}  // namespace rotinterp

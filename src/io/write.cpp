@@ -1,0 +1,26 @@
+// write_clip: BVH by our writer, FBX/glTF/GLB/Collada through assimp's exporter.
+#include "rotinterp/io/write.h"
+
+#include "rotinterp/io/atomic_file.h"
+#include "rotinterp/io/bvh.h"
+#include "export.h"
+
+#include <cctype>
+
+namespace rotinterp {
+
+Status write_clip(const Clip& clip, const std::filesystem::path& path, const WriteOptions& options) {
+  const std::string label = path.string();
+  std::string ext = path.extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext == ".bvh") {
+    return write_file_atomically(path, [&](std::ostream& out) { return write_bvh(clip, out, options, label); });
+  }
+  const std::optional<std::string> format = assimp_export_format(ext);
+  if (!format)
+    return make_error(label + ": cannot write '" + (ext.empty() ? std::string("(no extension)") : ext) +
+                      "' files; use .bvh, .fbx, .gltf, .glb or .dae");
+  return export_with_assimp(clip, path, *format);
+}
+
+}  // namespace rotinterp

@@ -1,0 +1,45 @@
+// Helpers shared by the io tests: temp dirs, clip comparison, sampling, FK.
+#pragma once
+
+#include "rotinterp/clip/clip.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace rotinterp::test {
+
+inline const std::filesystem::path kData = ROTINTERP_SHARED_DATA;
+
+// A fresh empty directory under the system temp dir, removed by the destructor.
+class TempDir {
+ public:
+  TempDir();
+  ~TempDir();
+  const std::filesystem::path& path() const { return path_; }
+  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
+  // Names of the files in the directory.
+  std::vector<std::string> files() const;
+
+ private:
+  std::filesystem::path path_;
+};
+
+void write_text(const std::filesystem::path& path, const std::string& text);
+std::string read_text(const std::filesystem::path& path);
+
+// Slerp/lerp of a track at time t (clamped), for tests only.
+Quat sample(const RotationTrack& track, double t);
+Vec3 sample(const std::optional<TranslationTrack>& track, const Vec3& offset, double t);
+
+// World pose of `clip` at time t.
+WorldPose pose_at(const Clip& clip, double t);
+
+// The clip resampled on the grid start + k·frame_time (test-side resampler).
+Clip resample_uniform(const Clip& clip, double frame_time);
+
+// Largest distance between joint origins over all pairs in the clip's rest pose
+// (a skeleton size for relative tolerances).
+double skeleton_size(const Clip& clip);
+
+}  // namespace rotinterp::test

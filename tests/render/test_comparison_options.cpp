@@ -75,3 +75,27 @@ TEST(ComparisonFrames, DefaultIsEightFramesHalfwayBetweenKeys) {
 
 }  // namespace
 }  // namespace rotinterp::render
+
+namespace rotinterp::render {
+namespace {
+
+TEST(Backend, NamesRoundTripAndUnknownNamesListTheChoices) {
+  for (Backend b : {Backend::osmesa, Backend::egl}) {
+    auto parsed = parse_backend(backend_name(b));
+    ASSERT_TRUE(parsed.ok());
+    EXPECT_EQ(*parsed, b);
+  }
+  auto bad = parse_backend("vulkan");
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(bad.error().find("osmesa or egl"), std::string::npos) << bad.error();
+}
+
+TEST(Backend, BothBackendsAreAvailableHereAndOSMesaIsTheDefault) {
+  // This machine has Mesa 22.3 with OSMesa and the surfaceless EGL platform.
+  EXPECT_TRUE(backend_available(Backend::osmesa));
+  EXPECT_TRUE(backend_available(Backend::egl));
+  EXPECT_EQ(default_backend(), Backend::osmesa);
+}
+
+}  // namespace
+}  // namespace rotinterp::render

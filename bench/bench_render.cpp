@@ -26,39 +26,35 @@ using namespace rotinterp::render;
 
 // A 31-joint humanoid (CMU-like topology: hips, spine ×3, neck ×2, head, two arms
 // of 7 and two legs of 5), 240 frames at 120 Hz of swinging limbs.
+struct JointSpec {
+  const char* name;
+  int parent;
+  double x, y, z;  // rest offset
+};
+constexpr JointSpec kHumanoid[] = {
+    {"Hips", -1, 0, 17, 0},          {"LowerBack", 0, 0, 2, 0},        {"Spine", 1, 0, 2, 0},
+    {"Spine1", 2, 0, 2, 0},          {"Neck", 3, 0, 1.5, 0},           {"Neck1", 4, 0, 1.5, 0},
+    {"Head", 5, 0, 1.5, 0},          {"LeftShoulder", 3, 1.5, 1, 0},   {"LeftArm", 7, 3, 0, 0},
+    {"LeftForeArm", 8, 5, 0, 0},     {"LeftHand", 9, 4.5, 0, 0},       {"LeftThumb", 10, 0.6, 0, 0.6},
+    {"LeftFingers", 10, 0.8, 0, 0},  {"LeftFingerTip", 12, 0.7, 0, 0}, {"RightShoulder", 3, -1.5, 1, 0},
+    {"RightArm", 14, -3, 0, 0},      {"RightForeArm", 15, -5, 0, 0},   {"RightHand", 16, -4.5, 0, 0},
+    {"RightThumb", 17, -0.6, 0, 0.6}, {"RightFingers", 17, -0.8, 0, 0}, {"RightFingerTip", 19, -0.7, 0, 0},
+    {"LeftHipJoint", 0, 1.5, -1, 0}, {"LeftUpLeg", 21, 0, -7, 0},      {"LeftLeg", 22, 0, -7, 0},
+    {"LeftFoot", 23, 0, -1, 1.5},    {"LeftToeBase", 24, 0, 0, 1},     {"RightHipJoint", 0, -1.5, -1, 0},
+    {"RightUpLeg", 26, 0, -7, 0},    {"RightLeg", 27, 0, -7, 0},       {"RightFoot", 28, 0, -1, 1.5},
+    {"RightToeBase", 29, 0, 0, 1},
+};
+
 Clip humanoid_clip() {
   Clip clip;
   clip.name = "bench";
   clip.frame_time = 1.0 / 120.0;
-  auto add = [&](const std::string& name, int parent, Vec3 offset) {
+  for (const JointSpec& spec : kHumanoid) {
     Joint j;
-    j.name = name;
-    j.parent = parent;
-    j.offset = offset;
+    j.name = spec.name;
+    j.parent = spec.parent;
+    j.offset = Vec3(spec.x, spec.y, spec.z);
     clip.skeleton.joints.push_back(j);
-    return static_cast<int>(clip.skeleton.joints.size()) - 1;
-  };
-  const int hips = add("Hips", -1, Vec3(0, 17, 0));
-  int s = add("LowerBack", hips, Vec3(0, 2, 0));
-  s = add("Spine", s, Vec3(0, 2, 0));
-  s = add("Spine1", s, Vec3(0, 2, 0));
-  int n = add("Neck", s, Vec3(0, 1.5, 0));
-  n = add("Neck1", n, Vec3(0, 1.5, 0));
-  add("Head", n, Vec3(0, 1.5, 0));
-  for (int side : {1, -1}) {
-    const std::string p = side > 0 ? "Left" : "Right";
-    int a = add(p + "Shoulder", s, Vec3(side * 1.5, 1, 0));
-    a = add(p + "Arm", a, Vec3(side * 3, 0, 0));
-    a = add(p + "ForeArm", a, Vec3(side * 5, 0, 0));
-    a = add(p + "Hand", a, Vec3(side * 4.5, 0, 0));
-    add(p + "Thumb", a, Vec3(side * 0.6, 0, 0.6));
-    a = add(p + "Fingers", a, Vec3(side * 0.8, 0, 0));
-    add(p + "FingerTip", a, Vec3(side * 0.7, 0, 0));
-    int l = add(p + "HipJoint", hips, Vec3(side * 1.5, -1, 0));
-    l = add(p + "UpLeg", l, Vec3(0, -7, 0));
-    l = add(p + "Leg", l, Vec3(0, -7, 0));
-    l = add(p + "Foot", l, Vec3(0, -1, 1.5));
-    add(p + "ToeBase", l, Vec3(0, 0, 1));
   }
   const std::size_t joints = clip.skeleton.joints.size();  // 31
   clip.rotations.resize(joints);

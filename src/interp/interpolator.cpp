@@ -1,5 +1,12 @@
 #include "rotinterp/interp/interpolator.h"
 
+#include "rotinterp/interp/bf.h"
+#include "rotinterp/interp/c2.h"
+#include "rotinterp/interp/expmap.h"
+#include "rotinterp/interp/nlerp.h"
+#include "rotinterp/interp/slerp.h"
+#include "rotinterp/interp/squad.h"
+
 namespace rotinterp {
 
 void Interpolator::evaluate(const double* t, std::size_t n, Quat* out) const {
@@ -9,8 +16,27 @@ void Interpolator::evaluate(const double* t, std::size_t n, Quat* out) const {
 Vec3 Interpolator::angular_velocity(double) const { return Vec3::Zero(); }
 
 const std::vector<MethodInfo>& methods() {
-  // Filled by the interpolator implementations (interp/*.h).
-  static const std::vector<MethodInfo> all;
+  using Made = Result<std::unique_ptr<Interpolator>>;
+  static const std::vector<MethodInfo> all = {
+      {"slerp", "piecewise geodesic (shortest arc) between neighbouring keys", 0, true,
+       [](const RotationTrack& t) -> Made { return make_slerp(t); }},
+      {"squad", "Shoemake's spherical quadrangle, control points scaled for non-uniform times", 1, true,
+       [](const RotationTrack& t) -> Made { return make_squad(t); }},
+      {"expmap", "Catmull-Rom spline of the unwrapped rotation vectors (Grassia), mapped back with exp", 1, false,
+       [](const RotationTrack& t) -> Made { return make_expmap(t); }},
+      {"nlerp", "normalized linear blend of neighbouring keys (not constant speed)", 0, true,
+       [](const RotationTrack& t) -> Made { return make_nlerp(t); }},
+      {"bf", "Buss-Fillmore spherical cubic B-spline through the keys (weighted spherical averages)", 2, true,
+       [](const RotationTrack& t) -> Made { return make_bf(t); }},
+      {"c2", "cubic in the local rotation vector with continuous angular acceleration (as scipy RotationSpline)", 2,
+       true, [](const RotationTrack& t) -> Made { return make_c2(t); }},
+      {"expmap-c2", "natural cubic spline of the unwrapped rotation vectors, mapped back with exp", 2, false,
+       [](const RotationTrack& t) -> Made {
+         ExpmapOptions o;
+         o.spline = ExpmapOptions::Spline::natural;
+         return make_expmap(t, o);
+       }},
+  };
   return all;
 }
 
@@ -29,7 +55,8 @@ std::string method_names() {
 Result<std::unique_ptr<Interpolator>> make_interpolator(std::string_view method, const RotationTrack& track) {
   const MethodInfo* m = find_method(method);
   if (!m) return make_error("unknown method '" + std::string(method) + "' (valid: " + method_names() + ")");
-  if (Status s = track.validate(); !s) return make_error(s.error());
+  // Every method validates the track itself (rules 1–3 of RotationTrack; signs
+  // are aligned there, so keys may come in either hemisphere).
   return m->make(track);
 }
 

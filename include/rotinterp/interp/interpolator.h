@@ -1,9 +1,10 @@
 // The interpolator interface and the registry of methods.
 //
 // An interpolator is built once from one joint's RotationTrack (strictly
-// increasing times, unit, sign-continuous keys — see clip/clip.h) and evaluated
-// at any time; times outside [t₀, tₙ] are clamped. Every method passes through
-// every key, returns unit quaternions and never NaN.
+// increasing times, unit keys — see clip/clip.h) and evaluated at any time; times
+// outside [t₀, tₙ] (and NaN) are clamped. Every method passes through every key
+// (< 1e-9 rad), returns unit quaternions and never NaN. One method per header:
+// slerp.h, squad.h, expmap.h, nlerp.h, bf.h, c2.h.
 #pragma once
 
 #include "rotinterp/clip/clip.h"
@@ -42,13 +43,17 @@ struct MethodInfo {
   std::function<Result<std::unique_ptr<Interpolator>>(const RotationTrack&)> make;
 };
 
-// All methods, in a stable order.
+// All methods, in a stable order: slerp, squad, expmap, nlerp, bf, c2, expmap-c2.
 const std::vector<MethodInfo>& methods();
 // The method called `name`, or nullptr.
 const MethodInfo* find_method(std::string_view name);
 // Comma-separated names of all methods, for error messages.
 std::string method_names();
-// Builds `method` on `track` (validated first).
+// Builds `method` on `track`. The track must satisfy rules 1–3 of RotationTrack
+// (times strictly increasing, finite unit keys); rule 4 (sign continuity) is not
+// required: every method aligns neighbouring keys to one hemisphere itself and
+// so always takes the short way (a key pair 338° apart "as stored" is followed
+// as the 22° it is).
 Result<std::unique_ptr<Interpolator>> make_interpolator(std::string_view method, const RotationTrack& track);
 
 }  // namespace rotinterp

@@ -2,6 +2,7 @@
 
 #include "rotinterp/core/rotation.h"
 #include "rotinterp/interp/interpolator.h"
+#include "rotinterp/interp/slerp.h"
 #include "rotinterp/render/layout.h"
 
 #include <fmt/format.h>
@@ -72,7 +73,7 @@ Quat sample_rotation(const RotationTrack& track, double t, double tolerance) {
   const std::size_t i = segment(track, t + tolerance);
   if (i + 1 >= track.keys.size() || std::abs(track.times[i] - t) <= tolerance) return track.keys[i];
   const double u = std::clamp((t - track.times[i]) / (track.times[i + 1] - track.times[i]), 0.0, 1.0);
-  return track.keys[i].slerp(u, track.keys[i + 1]).normalized();
+  return slerp(track.keys[i], track.keys[i + 1], u);
 }
 
 Vec3 sample_translation(const TranslationTrack& track, double t, double tolerance) {

@@ -101,6 +101,104 @@ std::vector<std::size_t> key_frames(std::size_t frames, std::size_t every) {
   return keys;
 }
 
+// Mean and max angular error of a frame, degrees, over the animated joints (all
+// joints when none is animated).
+struct FrameError {
+  double mean = 0.0;
+  double max = 0.0;
+};
+
+// The clip's reference frame by frame, and every method rebuilt from its keys.
+struct Rebuild {
+  const Clip* clip = nullptr;
+  std::vector<double> times;                  // per frame
+  double tolerance = 0.0;                     // s: a key this close to a frame is the frame's
+  std::vector<std::vector<Quat>> reference;   // [frame][joint] local rotations
+  std::vector<std::size_t> keys;              // frames kept as keys
+  std::vector<bool> animated;                 // [joint]: more than one key in the source
+  bool any_animated = false;
+  std::vector<std::vector<std::unique_ptr<Interpolator>>> interpolators;  // [method][joint]
+
+  static Result<Rebuild> build(const Clip& clip, const std::vector<std::string>& methods, std::size_t keep_every) {
+    Rebuild r;
+    r.clip = &clip;
+    r.times = frame_times(clip);
+    // Key times within a thousandth of a frame are the frame's (float-parsed times).
+    r.tolerance = 1e-3 * (clip.frame_time > 0.0 ? clip.frame_time : 1e-3);
+    const std::size_t joints = clip.skeleton.joints.size();
+    r.reference.assign(r.times.size(), std::vector<Quat>(joints));
+    for (std::size_t f = 0; f < r.times.size(); ++f)
+      for (std::size_t j = 0; j < joints; ++j) r.reference[f][j] = sample_rotation(clip.rotations[j], r.times[f], r.tolerance);
+    r.keys = key_frames(r.times.size(), keep_every);
+    r.interpolators.resize(methods.size());
+    r.animated.resize(joints);
+    for (std::size_t j = 0; j < joints; ++j) {
+      r.animated[j] = clip.rotations[j].keys.size() > 1;
+      r.any_animated = r.any_animated || r.animated[j];
+      RotationTrack track;
+      for (std::size_t k : r.animated[j] ? r.keys : std::vector<std::size_t>{0}) {
+        track.times.push_back(r.times[k]);
+        track.keys.push_back(r.reference[k][j]);
+      }
+      track.make_sign_continuous();
+      for (std::size_t m = 0; m < methods.size(); ++m) {
+        auto made = make_interpolator(methods[m], track);
+        if (!made) return make_error(methods[m] + ", joint " + clip.skeleton.joints[j].name + ": " + made.error());
+        r.interpolators[m].push_back(std::move(made).value());
+      }
+    }
+    return r;
+  }
+
+  // Translations are the reference's for every method (only rotations are rebuilt).
+  std::vector<Vec3> translations(std::size_t f) const {
+    std::vector<Vec3> t(clip->skeleton.joints.size());
+    for (std::size_t j = 0; j < t.size(); ++j)
+      t[j] = clip->translations[j] ? sample_translation(*clip->translations[j], times[f], tolerance)
+                                   : clip->skeleton.joints[j].offset;
+    return t;
+  }
+
+  void reference_pose(std::size_t f, WorldPose& out) const {
+    forward_kinematics(clip->skeleton, reference[f], translations(f), out);
+  }
+
+  FrameError method_pose(std::size_t m, std::size_t f, WorldPose& out) const {
+    std::vector<Quat> local(reference[f].size());
+    FrameError error;
+    std::size_t counted = 0;
+    for (std::size_t j = 0; j < local.size(); ++j) {
+      local[j] = interpolators[m][j]->evaluate(times[f]);
+      if (animated[j] || !any_animated) {
+        const double e = angular_distance(reference[f][j], local[j]) * 180.0 / kPi;
+        error.mean += e;
+        error.max = std::max(error.max, e);
+        ++counted;
+      }
+    }
+    if (counted) error.mean /= static_cast<double>(counted);
+    forward_kinematics(clip->skeleton, local, translations(f), out);
+    return error;
+  }
+
+  // Method m's trail of `joint`'s bone direction over frames first…last.
+  std::shared_ptr<const Trail> trail(std::size_t m, int joint, std::size_t first, std::size_t last,
+                                     std::string label) const {
+    const auto j = static_cast<std::size_t>(joint);
+    const Vec3 axis = bone_direction(clip->skeleton, joint);
+    auto t = std::make_shared<Trail>();
+    t->label = std::move(label);
+    for (std::size_t f = first; f <= last; ++f) {
+      t->reference.push_back(reference[f][j] * axis);
+      t->method.push_back(interpolators[m][j]->evaluate(times[f]) * axis);
+    }
+    if (animated[j])
+      for (std::size_t k : keys)
+        if (k >= first && k <= last) t->keys.push_back(k - first);
+    return t;
+  }
+};
+
 // Writes PNGs on worker threads while the GL thread draws the next frame.
 class PngWriters {
  public:
@@ -285,77 +383,24 @@ Result<ComparisonResult> render_comparison(const Clip& clip, const fs::path& out
     return make_error(probe ? std::string(backend_name(backend)) + " is not available" : probe.error());
   }
 
-  // ---- the reference: every joint's local rotation at every frame ----
-  const std::vector<double> times = frame_times(clip);
-  const std::size_t frame_count = times.size(), joints = clip.skeleton.joints.size();
-  // Key times within a thousandth of a frame are the frame's (float-parsed times).
-  const double tolerance = 1e-3 * (clip.frame_time > 0.0 ? clip.frame_time : 1e-3);
-  std::vector<std::vector<Quat>> reference(frame_count, std::vector<Quat>(joints));
-  for (std::size_t f = 0; f < frame_count; ++f)
-    for (std::size_t j = 0; j < joints; ++j) reference[f][j] = sample_rotation(clip.rotations[j], times[f], tolerance);
-  auto translations_at = [&](std::size_t f) {
-    std::vector<Vec3> t(joints);
-    for (std::size_t j = 0; j < joints; ++j)
-      t[j] = clip.translations[j] ? sample_translation(*clip.translations[j], times[f], tolerance)
-                                  : clip.skeleton.joints[j].offset;
-    return t;
-  };
+  auto built = Rebuild::build(clip, options.methods, options.keep_every);
+  if (!built) return make_error(built.error());
+  const Rebuild& rebuild = *built;
+  const std::size_t frame_count = rebuild.times.size();
 
-  // ---- keys and interpolators: method × joint ----
-  const std::vector<std::size_t> keys = key_frames(frame_count, options.keep_every);
-  std::vector<std::vector<std::unique_ptr<Interpolator>>> interpolators(options.methods.size());
-  std::vector<bool> animated(joints);
-  for (std::size_t j = 0; j < joints; ++j) {
-    animated[j] = clip.rotations[j].keys.size() > 1;
-    RotationTrack track;
-    for (std::size_t k : animated[j] ? keys : std::vector<std::size_t>{0}) {
-      track.times.push_back(times[k]);
-      track.keys.push_back(reference[k][j]);
-    }
-    track.make_sign_continuous();
-    for (std::size_t m = 0; m < options.methods.size(); ++m) {
-      auto made = make_interpolator(options.methods[m], track);
-      if (!made) return make_error(options.methods[m] + ", joint " + clip.skeleton.joints[j].name + ": " + made.error());
-      interpolators[m].push_back(std::move(made).value());
-    }
-  }
-  const bool any_animated = std::find(animated.begin(), animated.end(), true) != animated.end();
-
-  // ---- trails: the bone direction over the frames shown ----
+  // Trails and camera bounds cover the frames drawn; the whole clip for one frame.
+  const bool one_frame = frames.front() == frames.back();
+  const std::size_t first = one_frame ? 0 : frames.front(), last = one_frame ? frame_count - 1 : frames.back();
   std::vector<std::shared_ptr<const Trail>> trails(options.methods.size());
-  std::size_t trail_first = 0;
-  if (trail_joint >= 0) {
-    const auto tj = static_cast<std::size_t>(trail_joint);
-    const Vec3 axis = bone_direction(clip.skeleton, trail_joint);
-    std::size_t last = frames.back();
-    trail_first = frames.front();
-    if (trail_first == last) {
-      trail_first = 0;
-      last = frame_count - 1;
-    }
-    for (std::size_t m = 0; m < options.methods.size(); ++m) {
-      auto trail = std::make_shared<Trail>();
-      trail->label = options.trail_joint + " bone direction";
-      for (std::size_t f = trail_first; f <= last; ++f) {
-        trail->reference.push_back(reference[f][tj] * axis);
-        trail->method.push_back(interpolators[m][tj]->evaluate(times[f]) * axis);
-      }
-      if (animated[tj])
-        for (std::size_t k : keys)
-          if (k >= trail_first && k <= last) trail->keys.push_back(k - trail_first);
-      trails[m] = trail;
-    }
-  }
-
-  // ---- scene: bounds of the reference over the whole range shown ----
+  if (trail_joint >= 0)
+    for (std::size_t m = 0; m < options.methods.size(); ++m)
+      trails[m] = rebuild.trail(m, trail_joint, first, last, options.trail_joint + " bone direction");
   Scene scene;
   scene.skeleton = clip.skeleton;
   {
-    const std::size_t from = frames.front() == frames.back() ? 0 : frames.front();
-    const std::size_t to = frames.front() == frames.back() ? frame_count - 1 : frames.back();
     WorldPose pose;
-    for (std::size_t f = from; f <= to; ++f) {
-      forward_kinematics(clip.skeleton, reference[f], translations_at(f), pose);
+    for (std::size_t f = first; f <= last; ++f) {
+      rebuild.reference_pose(f, pose);
       for (const Vec3& p : pose.position) scene.bounds.extend(p);
       for (const Vec3& p : pose.end_site_position) scene.bounds.extend(p);
     }
@@ -377,38 +422,25 @@ Result<ComparisonResult> render_comparison(const Clip& clip, const fs::path& out
   std::vector<Panel> sheet(options.sheet ? frames.size() * options.methods.size() : 0);
   for (std::size_t i = 0; i < frames.size(); ++i) {
     const std::size_t f = frames[i];
-    const std::vector<Vec3> translation = translations_at(f);
     WorldPose ghost;
-    forward_kinematics(clip.skeleton, reference[f], translation, ghost);
-    const bool is_key = std::binary_search(keys.begin(), keys.end(), f);
+    rebuild.reference_pose(f, ghost);
+    const bool is_key = std::binary_search(rebuild.keys.begin(), rebuild.keys.end(), f);
     std::vector<Panel> panels(options.methods.size());
-    std::vector<Quat> local(joints);
     for (std::size_t m = 0; m < options.methods.size(); ++m) {
-      double sum = 0.0, worst = 0.0;
-      std::size_t counted = 0;
-      for (std::size_t j = 0; j < joints; ++j) {
-        local[j] = interpolators[m][j]->evaluate(times[f]);
-        if (animated[j] || !any_animated) {
-          const double e = angular_distance(reference[f][j], local[j]) * 180.0 / kPi;
-          sum += e;
-          worst = std::max(worst, e);
-          ++counted;
-        }
-      }
-      const double mean = counted ? sum / static_cast<double>(counted) : 0.0;
       Panel& p = panels[m];
-      p.title = fmt::format("{}  mean {:.2f}°  max {:.2f}°{}", options.methods[m], mean, worst, is_key ? "  (key)" : "");
+      const FrameError error = rebuild.method_pose(m, f, p.pose);
+      p.title = fmt::format("{}  mean {:.2f}°  max {:.2f}°{}", options.methods[m], error.mean, error.max,
+                            is_key ? "  (key)" : "");
       p.color = method_colour(options.methods[m]);
       p.ghost = ghost;
-      forward_kinematics(clip.skeleton, local, translation, p.pose);
       if (trails[m]) {
         auto trail = std::make_shared<Trail>(*trails[m]);
-        trail->current = f - trail_first;
+        trail->current = f - first;
         p.trail = std::move(trail);
       }
       if (options.sheet) {
         Panel cell = p;
-        cell.title = fmt::format("{} #{}  {:.2f}° / {:.2f}°", options.methods[m], f, mean, worst);
+        cell.title = fmt::format("{} #{}  {:.2f}° / {:.2f}°", options.methods[m], f, error.mean, error.max);
         sheet[m * frames.size() + i] = std::move(cell);
       }
     }

@@ -10,6 +10,7 @@ packages=(
   nlohmann-json3-dev       # JSON reports
   libfmt-dev               # formatting
   libstb-dev               # PNG writing, TrueType text
+  zlib1g-dev               # PNG deflate for rendered frames
   fonts-dejavu-core        # the font for titles and labels
   libplplot-dev plplot-driver-cairo   # eval plots
   libosmesa6-dev libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri   # offscreen rendering

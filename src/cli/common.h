@@ -31,5 +31,8 @@ void add_resample_command(CLI::App& app, int& exit_code);
 void add_synth_command(CLI::App& app, int& exit_code);
 void add_eval_command(CLI::App& app, int& exit_code);
 void add_info_command(CLI::App& app, int& exit_code);
+#if ROTINTERP_HAVE_RENDER
+void add_render_command(CLI::App& app, int& exit_code);
+#endif
 
 }  // namespace rotinterp::cli

@@ -1,0 +1,464 @@
+#include "rotinterp/render/comparison.h"
+
+#include "rotinterp/core/rotation.h"
+#include "rotinterp/interp/interpolator.h"
+#include "rotinterp/interp/slerp.h"
+#include "rotinterp/render/layout.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <atomic>
+#include <charconv>
+#include <cmath>
+#include <condition_variable>
+#include <deque>
+#include <memory>
+#include <mutex>
+#include <thread>
+
+namespace rotinterp::render {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+Result<std::size_t> parse_count(std::string_view text, const char* what) {
+  std::size_t value = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || ec != std::errc() || end != text.data() + text.size())
+    return make_error(std::string(what) + " '" + std::string(text) + "' is not a non-negative integer");
+  return value;
+}
+
+// Solid colours of the methods (then repeating).
+constexpr Color kPalette[] = {{0.96f, 0.56f, 0.20f}, {0.26f, 0.62f, 0.96f}, {0.40f, 0.80f, 0.38f},
+                              {0.90f, 0.36f, 0.62f}, {0.94f, 0.82f, 0.28f}, {0.36f, 0.84f, 0.84f},
+                              {0.66f, 0.52f, 0.94f}, {0.92f, 0.40f, 0.34f}};
+
+// A method's colour follows its place in the registry, so a method looks the same
+// in every image, whatever else is compared with it.
+Color method_colour(const std::string& method) {
+  const auto& all = methods();
+  std::size_t i = 0;
+  while (i < all.size() && all[i].name != method) ++i;
+  return kPalette[i % std::size(kPalette)];
+}
+
+// The times of the source's frames: the key times of its densest track when that
+// track has a key on every frame (BVH: exactly the reader's times), else the grid
+// start + k·frame_time.
+std::vector<double> frame_times(const Clip& clip) {
+  const std::size_t count = clip.frame_count();
+  const RotationTrack* densest = nullptr;
+  for (const RotationTrack& t : clip.rotations)
+    if (!densest || t.times.size() > densest->times.size()) densest = &t;
+  if (densest && (densest->times.size() >= count || !(clip.frame_time > 0.0))) return densest->times;
+  std::vector<double> times;
+  const double start = clip.start_time();
+  for (std::size_t k = 0; k < count; ++k) times.push_back(start + static_cast<double>(k) * clip.frame_time);
+  return times;
+}
+
+// Index of the last key at or before t (0 if t is before the first).
+template <class Track>
+std::size_t segment(const Track& track, double t) {
+  const auto it = std::upper_bound(track.times.begin(), track.times.end(), t);
+  return it == track.times.begin() ? 0 : static_cast<std::size_t>(it - track.times.begin()) - 1;
+}
+
+// A track's value at t: its key there, the geodesic between its keys in between,
+// clamped outside. `tolerance` (s) absorbs round-off in key times.
+Quat sample_rotation(const RotationTrack& track, double t, double tolerance) {
+  const std::size_t i = segment(track, t + tolerance);
+  if (i + 1 >= track.keys.size() || std::abs(track.times[i] - t) <= tolerance) return track.keys[i];
+  const double u = std::clamp((t - track.times[i]) / (track.times[i + 1] - track.times[i]), 0.0, 1.0);
+  return slerp(track.keys[i], track.keys[i + 1], u);
+}
+
+Vec3 sample_translation(const TranslationTrack& track, double t, double tolerance) {
+  const std::size_t i = segment(track, t + tolerance);
+  if (i + 1 >= track.keys.size() || std::abs(track.times[i] - t) <= tolerance) return track.keys[i];
+  const double u = std::clamp((t - track.times[i]) / (track.times[i + 1] - track.times[i]), 0.0, 1.0);
+  return (1.0 - u) * track.keys[i] + u * track.keys[i + 1];
+}
+
+// The direction of a joint's bone in its own frame: towards its farthest child
+// (joint or End Site); +x for a joint without a child of non-zero length.
+Vec3 bone_direction(const Skeleton& skeleton, int joint) {
+  Vec3 best = Vec3::Zero();
+  for (const Joint& j : skeleton.joints)
+    if (j.parent == joint && j.offset.norm() > best.norm()) best = j.offset;
+  for (const EndSite& e : skeleton.end_sites)
+    if (e.parent == joint && e.offset.norm() > best.norm()) best = e.offset;
+  return best.norm() > 0.0 ? Vec3(best.normalized()) : Vec3::UnitX();
+}
+
+std::vector<std::size_t> key_frames(std::size_t frames, std::size_t every) {
+  std::vector<std::size_t> keys;
+  for (std::size_t k = 0; k < frames; k += every) keys.push_back(k);
+  if (!keys.empty() && keys.back() != frames - 1) keys.push_back(frames - 1);
+  return keys;
+}
+
+// Mean and max angular error of a frame, degrees, over the animated joints (all
+// joints when none is animated).
+struct FrameError {
+  double mean = 0.0;
+  double max = 0.0;
+};
+
+// The clip's reference frame by frame, and every method rebuilt from its keys.
+struct Rebuild {
+  const Clip* clip = nullptr;
+  std::vector<double> times;                  // per frame
+  double tolerance = 0.0;                     // s: a key this close to a frame is the frame's
+  std::vector<std::vector<Quat>> reference;   // [frame][joint] local rotations
+  std::vector<std::size_t> keys;              // frames kept as keys
+  std::vector<bool> animated;                 // [joint]: more than one key in the source
+  bool any_animated = false;
+  std::vector<std::vector<std::unique_ptr<Interpolator>>> interpolators;  // [method][joint]
+
+  static Result<Rebuild> build(const Clip& clip, const std::vector<std::string>& methods, std::size_t keep_every) {
+    Rebuild r;
+    r.clip = &clip;
+    r.times = frame_times(clip);
+    // Key times within a thousandth of a frame are the frame's (float-parsed times).
+    r.tolerance = 1e-3 * (clip.frame_time > 0.0 ? clip.frame_time : 1e-3);
+    const std::size_t joints = clip.skeleton.joints.size();
+    r.reference.assign(r.times.size(), std::vector<Quat>(joints));
+    for (std::size_t f = 0; f < r.times.size(); ++f)
+      for (std::size_t j = 0; j < joints; ++j) r.reference[f][j] = sample_rotation(clip.rotations[j], r.times[f], r.tolerance);
+    r.keys = key_frames(r.times.size(), keep_every);
+    r.interpolators.resize(methods.size());
+    r.animated.resize(joints);
+    for (std::size_t j = 0; j < joints; ++j) {
+      r.animated[j] = clip.rotations[j].keys.size() > 1;
+      r.any_animated = r.any_animated || r.animated[j];
+      RotationTrack track;
+      for (std::size_t k : r.animated[j] ? r.keys : std::vector<std::size_t>{0}) {
+        track.times.push_back(r.times[k]);
+        track.keys.push_back(r.reference[k][j]);
+      }
+      track.make_sign_continuous();
+      for (std::size_t m = 0; m < methods.size(); ++m) {
+        auto made = make_interpolator(methods[m], track);
+        if (!made) return make_error(methods[m] + ", joint " + clip.skeleton.joints[j].name + ": " + made.error());
+        r.interpolators[m].push_back(std::move(made).value());
+      }
+    }
+    return r;
+  }
+
+  // Translations are the reference's for every method (only rotations are rebuilt).
+  std::vector<Vec3> translations(std::size_t f) const {
+    std::vector<Vec3> t(clip->skeleton.joints.size());
+    for (std::size_t j = 0; j < t.size(); ++j)
+      t[j] = clip->translations[j] ? sample_translation(*clip->translations[j], times[f], tolerance)
+                                   : clip->skeleton.joints[j].offset;
+    return t;
+  }
+
+  void reference_pose(std::size_t f, WorldPose& out) const {
+    forward_kinematics(clip->skeleton, reference[f], translations(f), out);
+  }
+
+  FrameError method_pose(std::size_t m, std::size_t f, WorldPose& out) const {
+    std::vector<Quat> local(reference[f].size());
+    FrameError error;
+    std::size_t counted = 0;
+    for (std::size_t j = 0; j < local.size(); ++j) {
+      local[j] = interpolators[m][j]->evaluate(times[f]);
+      if (animated[j] || !any_animated) {
+        const double e = angular_distance(reference[f][j], local[j]) * 180.0 / kPi;
+        error.mean += e;
+        error.max = std::max(error.max, e);
+        ++counted;
+      }
+    }
+    if (counted) error.mean /= static_cast<double>(counted);
+    forward_kinematics(clip->skeleton, local, translations(f), out);
+    return error;
+  }
+
+  // Method m's trail of `joint`'s bone direction over frames first…last.
+  std::shared_ptr<const Trail> trail(std::size_t m, int joint, std::size_t first, std::size_t last,
+                                     std::string label) const {
+    const auto j = static_cast<std::size_t>(joint);
+    const Vec3 axis = bone_direction(clip->skeleton, joint);
+    auto t = std::make_shared<Trail>();
+    t->label = std::move(label);
+    for (std::size_t f = first; f <= last; ++f) {
+      t->reference.push_back(reference[f][j] * axis);
+      t->method.push_back(interpolators[m][j]->evaluate(times[f]) * axis);
+    }
+    if (animated[j])
+      for (std::size_t k : keys)
+        if (k >= first && k <= last) t->keys.push_back(k - first);
+    return t;
+  }
+};
+
+// Writes PNGs on worker threads while the GL thread draws the next frame.
+class PngWriters {
+ public:
+  PngWriters(unsigned threads, ProgressFn progress, std::size_t total)
+      : progress_(std::move(progress)), total_(total) {
+    for (unsigned i = 0; i < threads; ++i) workers_.emplace_back([this] { run(); });
+  }
+  ~PngWriters() { (void)finish(); }
+
+  // Blocks while the queue is full (bounded memory).
+  void push(fs::path path, Image image) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    space_.wait(lock, [&] { return queue_.size() < kQueue || !error_.empty(); });
+    queue_.push_back({std::move(path), std::move(image)});
+    ready_.notify_one();
+  }
+  // Waits for every image to be written; the first error, if any.
+  Status finish() {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      closing_ = true;
+    }
+    ready_.notify_all();
+    for (auto& w : workers_)
+      if (w.joinable()) w.join();
+    workers_.clear();
+    if (!error_.empty()) return make_error(error_);
+    return Ok{};
+  }
+  bool failed() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return !error_.empty();
+  }
+
+ private:
+  static constexpr std::size_t kQueue = 4;
+  struct Job {
+    fs::path path;
+    Image image;
+  };
+  void run() {
+    for (;;) {
+      Job job;
+      {
+        std::unique_lock<std::mutex> lock(mutex_);
+        ready_.wait(lock, [&] { return !queue_.empty() || closing_; });
+        if (queue_.empty()) return;
+        job = std::move(queue_.front());
+        queue_.pop_front();
+      }
+      space_.notify_one();
+      Status s = error_seen_ ? Status(Ok{}) : write_png(job.image, job.path);
+      if (!s) {
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (error_.empty()) error_ = s.error();
+        error_seen_ = true;
+        space_.notify_all();
+        continue;
+      }
+      const std::size_t done = ++done_;
+      if (progress_) progress_(done, total_);
+    }
+  }
+
+  ProgressFn progress_;
+  std::size_t total_;
+  std::atomic<std::size_t> done_{0};
+  std::atomic<bool> error_seen_{false};
+  std::mutex mutex_;
+  std::condition_variable ready_, space_;
+  std::deque<Job> queue_;
+  bool closing_ = false;
+  std::string error_;
+  std::vector<std::thread> workers_;
+};
+
+}  // namespace
+
+Result<FrameRange> parse_frame_range(std::string_view text) {
+  std::vector<std::string_view> parts;
+  for (std::size_t begin = 0;;) {
+    const std::size_t colon = text.find(':', begin);
+    parts.push_back(text.substr(begin, colon == std::string_view::npos ? std::string_view::npos : colon - begin));
+    if (colon == std::string_view::npos) break;
+    begin = colon + 1;
+  }
+  if (parts.size() > 3) return make_error("--frames '" + std::string(text) + "' is not START[:END[:STEP]]");
+  FrameRange r;
+  auto start = parse_count(parts[0], "--frames start");
+  if (!start) return make_error(start.error());
+  r.start = r.end = *start;
+  if (parts.size() > 1) {
+    auto end = parse_count(parts[1], "--frames end");
+    if (!end) return make_error(end.error());
+    r.end = *end;
+  }
+  if (parts.size() > 2) {
+    auto step = parse_count(parts[2], "--frames step");
+    if (!step) return make_error(step.error());
+    r.step = *step;
+  }
+  if (r.end < r.start) return make_error("--frames '" + std::string(text) + "': END is before START");
+  if (r.step == 0) return make_error("--frames '" + std::string(text) + "': STEP must be at least 1");
+  return r;
+}
+
+Result<std::pair<int, int>> parse_size(std::string_view text) {
+  const std::size_t x = text.find_first_of("xX");
+  if (x == std::string_view::npos) return make_error("--size '" + std::string(text) + "' is not WxH (e.g. 960x540)");
+  auto w = parse_count(text.substr(0, x), "--size width");
+  auto h = parse_count(text.substr(x + 1), "--size height");
+  if (!w || !h) return make_error("--size '" + std::string(text) + "' is not WxH (e.g. 960x540)");
+  if (*w > 1000000 || *h > 1000000 || *w == 0 || *h == 0)
+    return make_error("--size '" + std::string(text) + "' is outside 1…" + std::to_string(kMaxImageSide) + " per side");
+  return std::pair<int, int>(static_cast<int>(*w), static_cast<int>(*h));
+}
+
+Result<std::vector<std::size_t>> comparison_frames(const Clip& clip, const ComparisonOptions& options) {
+  const std::size_t count = frame_times(clip).size();
+  if (count == 0) return make_error("the clip has no frames");
+  std::vector<std::size_t> frames;
+  if (options.frames) {
+    const FrameRange& r = *options.frames;
+    if (r.end >= count)
+      return make_error(fmt::format("--frames {}:{}:{} is outside the clip (frames 0…{})", r.start, r.end, r.step,
+                                    count - 1));
+    for (std::size_t k = r.start; k <= r.end; k += r.step) frames.push_back(k);
+    return frames;
+  }
+  constexpr std::size_t kDefaultFrames = 8;
+  const auto keys = key_frames(count, std::max<std::size_t>(1, options.keep_every));
+  std::vector<std::size_t> midpoints;
+  for (std::size_t i = 0; i + 1 < keys.size(); ++i)
+    if (keys[i + 1] - keys[i] >= 2) midpoints.push_back((keys[i] + keys[i + 1]) / 2);
+  std::vector<std::size_t> pool = midpoints;
+  if (pool.empty())
+    for (std::size_t k = 0; k < count; ++k) pool.push_back(k);
+  if (pool.size() <= kDefaultFrames) return pool;
+  for (std::size_t i = 0; i < kDefaultFrames; ++i) {
+    const std::size_t k = pool[(i * (pool.size() - 1) + (kDefaultFrames - 1) / 2) / (kDefaultFrames - 1)];
+    if (frames.empty() || frames.back() != k) frames.push_back(k);
+  }
+  return frames;
+}
+
+Result<ComparisonResult> render_comparison(const Clip& clip, const fs::path& out_dir, const ComparisonOptions& options) {
+  // ---- validate everything before drawing anything ----
+  if (Status s = clip.validate(); !s) return make_error(s.error());
+  if (options.methods.empty()) return make_error("no methods to compare");
+  for (const std::string& m : options.methods)
+    if (!find_method(m)) return make_error("unknown method '" + m + "' (valid: " + method_names() + ")");
+  if (options.keep_every < 1) return make_error("--keep-every must be at least 1");
+  const int methods = static_cast<int>(options.methods.size());
+  if (Status s = check_image_size(options.width, options.height, methods); !s) return make_error(s.error());
+  int trail_joint = -1;
+  if (!options.trail_joint.empty()) {
+    trail_joint = clip.skeleton.find(options.trail_joint);
+    if (trail_joint < 0) return make_error("--trail: no joint '" + options.trail_joint + "' in the clip");
+  }
+  auto selected = comparison_frames(clip, options);
+  if (!selected) return make_error(selected.error());
+  const std::vector<std::size_t>& frames = *selected;
+
+  // Sheet cells: the frame images' panels, shrunk to fit kMaxImageSide.
+  const int columns = automatic_columns(methods, options.width, options.height);
+  const Rect panel = grid_layout(methods, columns, options.width, options.height).front();
+  int cell_w = panel.width, cell_h = panel.height;
+  const int sheet_columns = static_cast<int>(frames.size());
+  if (options.sheet) {
+    const double scale = std::min({1.0, static_cast<double>(kMaxImageSide) / (static_cast<double>(cell_w) * sheet_columns),
+                                   static_cast<double>(kMaxImageSide) / (static_cast<double>(cell_h) * methods)});
+    cell_w = static_cast<int>(std::floor(cell_w * scale));
+    cell_h = static_cast<int>(std::floor(cell_h * scale));
+    if (Status s = check_image_size(cell_w * sheet_columns, cell_h * methods, sheet_columns * methods, sheet_columns); !s)
+      return make_error(fmt::format("--sheet: {} frames × {} methods do not fit {}x{} at a legible size; select "
+                                    "fewer frames with --frames",
+                                    frames.size(), methods, kMaxImageSide, kMaxImageSide));
+  }
+  const Backend backend = options.backend ? *options.backend : default_backend();
+  if (options.backend && !backend_available(backend)) {
+    auto probe = create_context(backend);
+    return make_error(probe ? std::string(backend_name(backend)) + " is not available" : probe.error());
+  }
+
+  auto built = Rebuild::build(clip, options.methods, options.keep_every);
+  if (!built) return make_error(built.error());
+  const Rebuild& rebuild = *built;
+  const std::size_t frame_count = rebuild.times.size();
+
+  // Trails and camera bounds cover the frames drawn; the whole clip for one frame.
+  const bool one_frame = frames.front() == frames.back();
+  const std::size_t first = one_frame ? 0 : frames.front(), last = one_frame ? frame_count - 1 : frames.back();
+  std::vector<std::shared_ptr<const Trail>> trails(options.methods.size());
+  if (trail_joint >= 0)
+    for (std::size_t m = 0; m < options.methods.size(); ++m)
+      trails[m] = rebuild.trail(m, trail_joint, first, last, options.trail_joint + " bone direction");
+  Scene scene;
+  scene.skeleton = clip.skeleton;
+  {
+    WorldPose pose;
+    for (std::size_t f = first; f <= last; ++f) {
+      rebuild.reference_pose(f, pose);
+      for (const Vec3& p : pose.position) scene.bounds.extend(p);
+      for (const Vec3& p : pose.end_site_position) scene.bounds.extend(p);
+    }
+  }
+
+  std::error_code ec;
+  fs::create_directories(out_dir, ec);
+  if (ec || !fs::is_directory(out_dir)) return make_error(out_dir.string() + ": cannot create the output directory");
+
+  auto context = create_context(backend);
+  if (!context) return make_error(context.error());
+  auto renderer = Renderer::create(std::move(context).value(), std::move(scene));
+  if (!renderer) return make_error(renderer.error());
+
+  ComparisonResult result;
+  result.gl = (*renderer)->gl_description();
+  const std::size_t total = frames.size() + (options.sheet ? 1 : 0);
+  PngWriters writers(2, options.progress, total);
+  std::vector<Panel> sheet(options.sheet ? frames.size() * options.methods.size() : 0);
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    const std::size_t f = frames[i];
+    WorldPose ghost;
+    rebuild.reference_pose(f, ghost);
+    const bool is_key = std::binary_search(rebuild.keys.begin(), rebuild.keys.end(), f);
+    std::vector<Panel> panels(options.methods.size());
+    for (std::size_t m = 0; m < options.methods.size(); ++m) {
+      Panel& p = panels[m];
+      const FrameError error = rebuild.method_pose(m, f, p.pose);
+      p.title = fmt::format("{}  mean {:.2f}°  max {:.2f}°{}", options.methods[m], error.mean, error.max,
+                            is_key ? "  (key)" : "");
+      p.color = method_colour(options.methods[m]);
+      p.ghost = ghost;
+      if (trails[m]) {
+        auto trail = std::make_shared<Trail>(*trails[m]);
+        trail->current = f - first;
+        p.trail = std::move(trail);
+      }
+      if (options.sheet) {
+        Panel cell = p;
+        cell.title = fmt::format("{} #{}  {:.2f}° / {:.2f}°", options.methods[m], f, error.mean, error.max);
+        sheet[m * frames.size() + i] = std::move(cell);
+      }
+    }
+    auto image = (*renderer)->render(panels, options.width, options.height, columns);
+    if (!image) return make_error(image.error());
+    fs::path path = out_dir / fmt::format("frame_{:06d}.png", f);
+    result.files.push_back(path);
+    writers.push(std::move(path), std::move(image).value());
+    if (writers.failed()) break;
+  }
+  if (options.sheet && !writers.failed()) {
+    auto image = (*renderer)->render(sheet, cell_w * sheet_columns, cell_h * methods, sheet_columns);
+    if (!image) return make_error(image.error());
+    result.files.push_back(out_dir / "sheet.png");
+    writers.push(result.files.back(), std::move(image).value());
+  }
+  if (Status s = writers.finish(); !s) return make_error(s.error());
+  return result;
+}
+
+}  // namespace rotinterp::render

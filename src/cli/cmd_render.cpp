@@ -1,0 +1,121 @@
+// rotinterp render IN -o DIR …: comparison frames of several interpolators, drawn
+// offscreen (render/comparison.h does the work). Built only with the renderer.
+#if ROTINTERP_HAVE_RENDER
+#include "common.h"
+#include "rotinterp/interp/interpolator.h"
+#include "rotinterp/io/read.h"
+#include "rotinterp/render/comparison.h"
+#include "rotinterp/render/context.h"
+
+#include <fmt/core.h>
+
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace rotinterp::cli {
+
+namespace {
+
+struct RenderArgs {
+  std::string input;
+  std::string out_dir;
+  std::string methods;
+  std::size_t keep_every = 10;
+  std::string frames;
+  std::string size = "960x540";
+  std::string trail;
+  bool sheet = false;
+  std::string backend;
+  bool quiet = false;
+};
+
+std::vector<std::string> split_list(const std::string& text) {
+  std::vector<std::string> out;
+  std::stringstream in(text);
+  for (std::string item; std::getline(in, item, ',');)
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+int usage_error(const std::string& message) {
+  fail(message);
+  return kExitUsage;
+}
+
+int run_render(const RenderArgs& a) {
+  render::ComparisonOptions options;
+  if (a.methods.empty()) {
+    for (const MethodInfo& m : methods()) options.methods.push_back(m.name);
+  } else {
+    options.methods = split_list(a.methods);
+  }
+  if (options.methods.empty()) return usage_error("--methods: no method given (valid: " + method_names() + ")");
+  for (const std::string& m : options.methods)
+    if (!find_method(m)) return usage_error("--methods: unknown method '" + m + "' (valid: " + method_names() + ")");
+  if (a.keep_every < 1) return usage_error("--keep-every must be at least 1");
+  options.keep_every = a.keep_every;
+  if (!a.frames.empty()) {
+    auto range = render::parse_frame_range(a.frames);
+    if (!range) return usage_error(range.error());
+    options.frames = *range;
+  }
+  auto size = render::parse_size(a.size);
+  if (!size) return usage_error(size.error());
+  options.width = size->first;
+  options.height = size->second;
+  if (Status s = render::check_image_size(options.width, options.height, static_cast<int>(options.methods.size()));
+      !s)
+    return usage_error("--size: " + s.error());
+  if (!a.backend.empty()) {
+    auto backend = render::parse_backend(a.backend);
+    if (!backend) return usage_error("--backend: " + backend.error());
+    if (!render::backend_available(*backend)) {
+      auto probe = render::create_context(*backend);
+      return fail(probe ? std::string(render::backend_name(*backend)) + " is not available" : probe.error());
+    }
+    options.backend = *backend;
+  }
+  options.trail_joint = a.trail;
+  options.sheet = a.sheet;
+
+  auto clip = read_clip(a.input);
+  if (!clip) return fail(clip.error());
+  options.progress = make_progress("render", a.quiet);
+  auto result = render::render_comparison(*clip, a.out_dir, options);
+  end_progress(a.quiet);
+  if (!result) return fail(a.input + ": " + result.error());
+  if (!a.quiet) fmt::print(stderr, "wrote {} image(s) to {} ({})\n", result->files.size(), a.out_dir, result->gl);
+  for (const auto& f : result->files) fmt::print("{}\n", f.string());
+  return kExitOk;
+}
+
+}  // namespace
+
+void add_render_command(CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<RenderArgs>();
+  auto* sub = app.add_subcommand(
+      "render", "Draw comparison frames offscreen: the clip rebuilt by several interpolators, side by side, as PNGs");
+  sub->add_option("input", args->input, "Clip to read (BVH, FBX, glTF, Collada, …)")->required();
+  sub->add_option("-o,--out", args->out_dir, "Output directory (created if missing)")->required();
+  sub->add_option("--methods", args->methods, "Comma-separated interpolators to compare (default: all)");
+  sub->add_option("--keep-every", args->keep_every,
+                  "Keep every Nth source frame (and the last) as keys; the methods rebuild the rest")
+      ->default_val(10);
+  sub->add_option("--frames", args->frames,
+                  "Frames to draw, START:END:STEP (END included; frame 0 = first frame). Default: 8 frames spread "
+                  "over the clip, each halfway between two keys");
+  sub->add_option("--size", args->size, "Image size WxH in pixels, at most 8192 per side")->default_val("960x540");
+  sub->add_option("--trail", args->trail,
+                  "Also draw this joint's bone direction over the frames on a unit sphere (reference vs method)");
+  sub->add_flag("--sheet", args->sheet, "Also write sheet.png: a row per method, a column per frame");
+  sub->add_option("--backend", args->backend, "OpenGL context: osmesa or egl (default: osmesa where present)")
+      ->check(CLI::IsMember({"osmesa", "egl"}));
+  sub->add_flag("-q,--quiet", args->quiet, "No progress or summary on stderr");
+  sub->callback([args, &exit_code] { exit_code = run_render(*args); });
+}
+
+}  // namespace rotinterp::cli
+
+#endif  // ROTINTERP_HAVE_RENDER

@@ -72,7 +72,7 @@ struct BfSplineOptions {
   Solver solver = Solver::newton;
   // Converged when every key is missed by less than this (rad).
   double tolerance = 1e-13;
-  int max_iterations = 1000;  // S1 needs hundreds on widely spaced keys; Newton < 20
+  int max_iterations = 1000;  // S1 needs hundreds on widely spaced keys; Newton < 10
   // Largest angle (rad) between neighbouring knots. The four control points of a
   // span must lie in one open hemisphere of S³, and interpolating control points
   // overshoot the keys, so neighbours far apart (≳ 80°, and every 180° pair) have

@@ -10,3 +10,8 @@ out=out/demo
 mkdir -p "$out"
 ./build/rotinterp methods | tee "$out/methods.txt"
 echo "wrote: $out/methods.txt"
+# The bundled sample (samples/README.md): change its rate, and rebuild it from every 4th frame.
+./build/rotinterp resample samples/walk.bvh -o "$out/walk_50hz.bvh" --fps 50
+echo "wrote: $out/walk_50hz.bvh"
+./build/rotinterp resample samples/walk.bvh -o "$out/walk_keep4.bvh" --keep-every 4
+echo "wrote: $out/walk_keep4.bvh"

@@ -27,6 +27,9 @@ void end_progress(bool quiet);
 
 // Each subcommand adds itself to `app`; when it runs, it stores its exit code.
 void add_methods_command(CLI::App& app, int& exit_code);
+void add_resample_command(CLI::App& app, int& exit_code);
+void add_synth_command(CLI::App& app, int& exit_code);
+void add_eval_command(CLI::App& app, int& exit_code);
 void add_info_command(CLI::App& app, int& exit_code);
 #if ROTINTERP_HAVE_RENDER
 void add_render_command(CLI::App& app, int& exit_code);

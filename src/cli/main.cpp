@@ -19,6 +19,9 @@ int main(int argc, char** argv) {
 
   int exit_code = kExitOk;
   add_methods_command(app, exit_code);
+  add_resample_command(app, exit_code);
+  add_synth_command(app, exit_code);
+  add_eval_command(app, exit_code);
   add_info_command(app, exit_code);
 #if ROTINTERP_HAVE_RENDER
   add_render_command(app, exit_code);

@@ -197,7 +197,7 @@ SwingTwist swing_twist(const Quat& q_in, const Vec3& axis_in) {
   const Vec3 proj = q.vec().dot(axis) * axis;
   Quat twist(q.w(), proj.x(), proj.y(), proj.z());
   const double tn = twist.norm();
-  if (tn < 1e-300) {
+  if (tn < kSwingTwistDegenerate) {
     twist = Quat::Identity();  // a pure 180° swing: no twist
   } else {
     twist.coeffs() /= tn;

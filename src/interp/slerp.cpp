@@ -6,21 +6,7 @@
 
 namespace rotinterp {
 
-Quat slerp(const Quat& a, const Quat& b_in, double t) {
-  const Quat b = detail::align_pair(a, b_in);
-  const double w = a.dot(b);  // cos φ ≥ 0, φ half the rotation angle
-  // u ⟂ a with |u| = sin φ. For nearly equal keys w rounds to 1 and b − a is an
-  // exact (Sterbenz) difference, so u keeps every digit the inputs have.
-  const Eigen::Vector4d u = b.coeffs() - w * a.coeffs();
-  const double s = u.norm();
-  if (!(s > 0.0) || !std::isfinite(t)) return a;
-  const double phi = std::atan2(s, w);
-  const double tp = t * phi;
-  Quat r;
-  // sin(tφ)/s → t as s → 0 with both factors accurate: no cancellation.
-  r.coeffs() = std::cos(tp) * a.coeffs() + (std::sin(tp) / s) * u;
-  return r;
-}
+Quat detail::slerp_tie_sign(const Quat& a, const Quat& b) { return align_pair(a, b); }
 
 namespace {
 

@@ -233,7 +233,9 @@ TEST_P(Contract, KeysExactlyHalfATurnApartFollowTheDocumentedPath) {
         EXPECT_LT(std::hypot(local.x(), local.z()), 1e-9) << s << " " << sign;  // about y …
         const double angle = 2.0 * std::atan2(local.y(), local.w());          // … positively
         EXPECT_GT(angle, previous) << s << " " << sign;
-        if (GetParam() != "nlerp") EXPECT_NEAR(angle, kPi * s / 64, 1e-9) << s << " " << sign;
+        if (GetParam() != "nlerp") {
+          EXPECT_NEAR(angle, kPi * s / 64, 1e-9) << s << " " << sign;
+        }
         previous = angle;
       }
     }

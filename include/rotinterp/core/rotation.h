@@ -146,7 +146,10 @@ Quat integrate_angular_velocity(const Quat& q, const Vec3& omega, double dt);
 
 // q = swing · twist, twist a rotation about `axis` (in the moving frame), swing a
 // rotation about an axis perpendicular to it. For a pure 180° swing the twist is
-// the identity.
+// the identity; so it is when the twist part (w, q·axis) has a norm below
+// kSwingTwistDegenerate: there the twist is ill-conditioned (round-off δ ≈ 1e-16
+// turns it by δ/norm), and a swing within √ε of 180° carries the whole rotation.
+constexpr double kSwingTwistDegenerate = 1.5e-8;  // ≈ √ε: kept twists are exact to ~1e-8 rad
 struct SwingTwist {
   Quat swing;
   Quat twist;

@@ -1,0 +1,149 @@
+// bench_eval: the cost of `rotinterp eval` against assimp importing the same files.
+//
+//   bench_eval [--repeat R] [PATH...]      (default PATH: the shared real clips)
+//
+// In one run, for the same files: (1) assimp alone — Assimp::Importer::ReadFile
+// with the flags read_clip uses, one file after another; (2) the whole evaluation
+// (read_clip + all methods × keep-every 2,4,8,16, CSV + summary, no plots) with
+// --jobs 1 and (3) with --jobs 2. Each is the best of R runs (default 3). Prints
+// the ratio eval/import (goal ≤ 2), clip-frames per second, and the --jobs 2
+// speedup (goal ≥ 1.7 on a machine with two free cores); then where the time goes:
+// read_clip alone and each method alone beyond it (CPU seconds).
+#include "rotinterp/eval/batch.h"
+#include "rotinterp/eval/inputs.h"
+#include "rotinterp/interp/interpolator.h"
+#include "rotinterp/io/read.h"
+
+#include <unistd.h>
+
+#include <assimp/Importer.hpp>
+#include <assimp/config.h>
+#include <assimp/scene.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <filesystem>
+#include <string>
+#include <thread>
+#include <utility>
+#include <vector>
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+// CPU seconds of the whole process (all threads): less sensitive than wall time to
+// other work on a shared machine, for the single-threaded ratio.
+double cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
+
+double import_all(const std::vector<std::string>& files, double& cpu) {
+  const auto t0 = Clock::now();
+  const double c0 = cpu_seconds();
+  for (const std::string& f : files) {
+    Assimp::Importer importer;
+    importer.SetPropertyBool(AI_CONFIG_IMPORT_NO_SKELETON_MESHES, true);
+    const aiScene* scene = importer.ReadFile(f, 0);
+    if (scene && scene->mNumAnimations == 0) std::fprintf(stderr, "note: %s has no animation\n", f.c_str());
+  }
+  cpu = cpu_seconds() - c0;
+  return seconds_since(t0);
+}
+
+double eval_all(const std::vector<fs::path>& inputs, int jobs, const fs::path& out, std::size_t& frames, double& cpu,
+                const std::string& only_method = "") {
+  rotinterp::EvalOptions o;
+  o.inputs = inputs;
+  o.output_dir = out;
+  for (const rotinterp::MethodInfo& m : rotinterp::methods())
+    if (only_method.empty() || m.name == only_method) o.clip.methods.push_back(m.name);
+  o.clip.keep_every = {2, 4, 8, 16};
+  o.jobs = jobs;
+  o.plots = false;
+  const auto t0 = Clock::now();
+  const double c0 = cpu_seconds();
+  auto r = rotinterp::run_eval(o);
+  const double s = seconds_since(t0);
+  cpu = cpu_seconds() - c0;
+  if (!r) {
+    std::fprintf(stderr, "bench_eval: %s\n", r.error().c_str());
+    std::exit(1);
+  }
+  frames = 0;
+  for (const rotinterp::SummaryEntry& e : r->summary.entries)
+    if (e.method == o.clip.methods.front() && e.keep_every == 2) frames = e.samples;  // joint-frames
+  return s;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int repeat = 3;
+  std::vector<fs::path> inputs;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--repeat" && i + 1 < argc)
+      repeat = std::max(1, std::atoi(argv[++i]));
+    else
+      inputs.emplace_back(a);
+  }
+  if (inputs.empty()) inputs.emplace_back(ROTINTERP_SHARED_DATA);
+  auto files = rotinterp::discover_inputs(inputs);
+  if (!files || files->empty()) {
+    std::fprintf(stderr, "bench_eval: %s\n", files ? "no input files" : files.error().c_str());
+    return 1;
+  }
+  // Clip-frames: frames of every clip that loads.
+  std::size_t clip_frames = 0, clips = 0;
+  for (const std::string& f : *files)
+    if (auto c = rotinterp::read_clip(f)) clip_frames += c->frame_count(), ++clips;
+
+  const fs::path out = fs::temp_directory_path() / ("rotinterp_bench_eval_" + std::to_string(::getpid()));
+  double t_import = 1e300, t_j1 = 1e300, t_j2 = 1e300, c_import = 1e300, c_j1 = 1e300, c;
+  std::size_t joint_frames = 0;
+  for (int r = 0; r < repeat; ++r) {
+    t_import = std::min(t_import, import_all(*files, c));
+    c_import = std::min(c_import, c);
+    t_j1 = std::min(t_j1, eval_all(inputs, 1, out, joint_frames, c));
+    c_j1 = std::min(c_j1, c);
+    t_j2 = std::min(t_j2, eval_all(inputs, 2, out, joint_frames, c));
+  }
+  // Where the time goes: read_clip alone, then each method alone (read included).
+  double c_read = 1e300;
+  for (int r = 0; r < repeat; ++r) {
+    const double c0 = cpu_seconds();
+    for (const std::string& f : *files) (void)rotinterp::read_clip(f);
+    c_read = std::min(c_read, cpu_seconds() - c0);
+  }
+  std::vector<std::pair<std::string, double>> per_method;
+  for (const rotinterp::MethodInfo& m : rotinterp::methods()) {
+    double best = 1e300;
+    for (int r = 0; r < repeat; ++r) {
+      eval_all(inputs, 1, out, joint_frames, c, m.name);
+      best = std::min(best, c);
+    }
+    per_method.emplace_back(m.name, best - c_read);
+  }
+  eval_all(inputs, 1, out, joint_frames, c);  // joint_frames of the full run again
+  fs::remove_all(out);
+  const std::size_t combos = rotinterp::methods().size() * 4;
+  std::printf("files %zu (clips loaded %zu), clip-frames %zu, methods %zu x keep-every {2,4,8,16}, best of %d\n",
+              files->size(), clips, clip_frames, rotinterp::methods().size(), repeat);
+  std::printf("assimp import alone       %8.3f s wall  %8.3f s CPU\n", t_import, c_import);
+  std::printf("eval --jobs 1             %8.3f s wall  %8.3f s CPU   ratio eval/import %.2f wall, %.2f CPU (goal <= 2)\n",
+              t_j1, c_j1, t_j1 / t_import, c_j1 / c_import);
+  std::printf("eval --jobs 2             %8.3f s   speedup %.2fx (goal >= 1.7; %u hardware threads)\n", t_j2,
+              t_j1 / t_j2, std::thread::hardware_concurrency());
+  std::printf("throughput (--jobs 1)     %8.0f clip-frames/s (each rebuilt %zu times), %.0f joint-frames/s per rebuild\n",
+              static_cast<double>(clip_frames) / t_j1, combos,
+              static_cast<double>(joint_frames) * static_cast<double>(combos) / t_j1);
+  std::printf("read_clip alone (CPU)     %8.3f s   (assimp + our BVH pass + clip building)\n", c_read);
+  for (const auto& [name, cpu] : per_method)
+    std::printf("  %-10s CPU beyond read_clip, 4 spacings: %7.3f s\n", name.c_str(), cpu);
+  return 0;
+}

@@ -1,0 +1,68 @@
+// The batch behind `rotinterp eval`: many clips, in parallel, into DIR/errors.csv,
+// DIR/summary.json and PNG plots; and the merge of shard outputs.
+//
+// `jobs` worker threads take (clip, method) pairs in input order — a clip is read
+// and its reference prepared once, by the first of its pairs — so a long clip is
+// shared by the workers too. Results are written in input order as they complete,
+// and no worker starts clip i until clip i − 2·jobs has been written, so memory is
+// bounded by the clips in flight, not by the batch. A file that fails to load is
+// reported (on_failure, summary.json "failed") and skipped; so is a clip on which
+// a method fails, whole, so that every method is compared on the same clips.
+#pragma once
+
+#include "rotinterp/core/progress.h"
+#include "rotinterp/core/result.h"
+#include "rotinterp/eval/evaluate_clip.h"
+#include "rotinterp/eval/summary.h"
+
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace rotinterp {
+
+struct EvalFailure {
+  std::string file;
+  std::string message;  // one line, names the file
+};
+
+struct EvalOptions {
+  std::vector<std::filesystem::path> inputs;  // files and directories (see eval/inputs.h)
+  std::filesystem::path output_dir;           // created if missing
+  ClipEvalOptions clip;                       // methods, keep_every, subframe, shell distance
+  int jobs = 0;                               // worker threads; 0 = all cores
+  int shard_index = 1, shard_count = 1;       // evaluate shard_of(files, index, count)
+  bool plots = true;                          // write the PNG plots
+  // Analytic truth for a clip file (synth clips); an error fails that clip. Unset:
+  // every clip is compared with its own frames. Called from worker threads.
+  std::function<Result<TruthFn>(const std::string& file, const Clip& clip)> truth_for;
+  ProgressFn progress;                                     // clips done / clips in all
+  std::function<void(const EvalFailure&)> on_failure;      // called in input order, from the calling thread
+};
+
+struct EvalReport {
+  Summary summary;
+  std::vector<EvalFailure> failures;
+  std::size_t files = 0;           // files in this run (this shard)
+  std::size_t clips_evaluated = 0;
+  double seconds = 0;              // wall time
+};
+
+// File names inside the output directory.
+constexpr const char* kErrorsCsvName = "errors.csv";
+constexpr const char* kSummaryJsonName = "summary.json";
+
+// Runs the batch. Errors (nothing written) for bad options, no input files, or an
+// output that cannot be written; load failures are in the report instead.
+Result<EvalReport> run_eval(const EvalOptions& options);
+
+// Combines the outputs of shard runs (directories holding errors.csv and
+// summary.json) into `output_dir`: errors.csv byte-identical to a single run's,
+// summary.json with the same results (run metadata: inputs and failures of all
+// shards, time summed). Errors for missing files, runs with different options, or a
+// clip present in two shards.
+Result<EvalReport> merge_eval(const std::vector<std::filesystem::path>& shard_dirs,
+                              const std::filesystem::path& output_dir, bool plots = true);
+
+}  // namespace rotinterp

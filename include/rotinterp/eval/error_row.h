@@ -1,0 +1,58 @@
+// One row of DIR/errors.csv: the error of one joint (or End Site) of one clip,
+// rebuilt by one method from every keep_every-th frame. Plain data plus the CSV
+// form, written and read back exactly (numbers in the shortest form that reads
+// back as the same double), so shard outputs merge into the same files.
+#pragma once
+
+#include "rotinterp/core/result.h"
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace rotinterp {
+
+struct ErrorRow {
+  std::string clip;    // the input path as discovered
+  std::string method;  // interpolator name
+  int keep_every = 1;  // keys at every keep_every-th frame and the last
+  std::string joint;   // joint or End Site name
+  bool end_site = false;  // End Site rows carry only position columns
+  std::size_t frames = 0;   // frames of the original clip
+  std::size_t samples = 0;  // times compared: frames + (frames − 1)·subframe
+
+  // Geodesic angle, degrees (joints only).
+  double mean_deg = 0, rms_deg = 0, p95_deg = 0, max_deg = 0;
+  double swing_rms_deg = 0, twist_rms_deg = 0;
+  // World position error by forward kinematics, clip units and % of skeleton height.
+  double pos_rms = 0, pos_max = 0, pos_rms_pct = 0, pos_max_pct = 0;
+  // Virtual-vertex (shell) error at the shell distance, clip units (joints only).
+  double shell_rms = 0, shell_max = 0;
+  // Smoothness (joints only): RMS angular acceleration of the rebuilt and of the
+  // original curve (deg/s²), largest velocity (deg/s) and acceleration (deg/s²) jump at keys.
+  double acc_rms = 0, acc_rms_ref = 0, vel_jump_max = 0, acc_jump_max = 0;
+  double height = 0;  // skeleton height used for the percentages, clip units
+};
+
+// The CSV header line (no newline): clip,method,keep_every,joint,frames,mean_deg,…
+std::string error_csv_header();
+// One CSV line (no newline). Text fields are quoted when they hold a comma, quote or
+// line break; End Site rows leave the joint-only columns empty.
+std::string format_error_row(const ErrorRow& row);
+
+// Reads CSV lines back. Construct from the header line; columns are found by name.
+class ErrorRowParser {
+ public:
+  static Result<ErrorRowParser> from_header(std::string_view header);
+  // `line` is one data line; the error names the problem (the caller adds file:line).
+  Result<ErrorRow> parse(std::string_view line) const;
+
+ private:
+  std::vector<int> column_;  // field index per known column, −1 when absent
+};
+
+// Splits one CSV line into fields (RFC 4180 quoting). Error on an unterminated quote.
+Result<std::vector<std::string>> split_csv_line(std::string_view line);
+
+}  // namespace rotinterp

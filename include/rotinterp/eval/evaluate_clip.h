@@ -1,0 +1,70 @@
+// Evaluating one clip: decimate, rebuild with each method, measure (eval/metrics.h).
+//
+// The clip's frames are t_k = start + k·frame_time, k < frame_count() (for a clip
+// without a frame time: the key times of its longest rotation track). The
+// original's value at a frame is its key there, or the slerp of its two
+// neighbouring keys for sparse tracks; translations are linear between keys. For
+// keep_every N the keys are frames 0, N, 2N, … and always the last; each method is
+// built per joint on those keys and evaluated at every frame and, with subframe K,
+// at K evenly spaced times between consecutive frames, where the reference is the
+// slerp of the two original frames (or `truth`, when given, everywhere).
+#pragma once
+
+#include "rotinterp/clip/clip.h"
+#include "rotinterp/core/result.h"
+#include "rotinterp/eval/error_row.h"
+#include "rotinterp/eval/metrics.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace rotinterp {
+
+// The exact local rotation and translation of every joint at time t (seconds):
+// analytic truth for synthetic clips.
+using TruthFn = std::function<void(double t, std::vector<Quat>& rotation, std::vector<Vec3>& translation)>;
+
+struct ClipEvalOptions {
+  std::vector<std::string> methods;  // registry names, evaluated in this order
+  std::vector<int> keep_every;       // each ≥ 1, in this order
+  int subframe = 0;                  // extra samples between consecutive frames (0 … 1000)
+  double shell_distance_m = kDefaultShellDistanceMetres;  // metres, converted by Clip::unit_scale
+  TruthFn truth;                     // optional reference instead of the clip's frames
+};
+
+// The reference side of one clip, computed once and shared (read-only) by the
+// methods: frame and sample times, the original at its frames, the reference at
+// every sample (joint-major) and its world poses, and the per-clip constants.
+struct ClipReference {
+  std::string clip_id;
+  Skeleton skeleton;
+  std::vector<double> frames;                 // frame times, seconds
+  std::vector<double> times;                  // sample times: frames and subframes
+  std::size_t per_frame = 1;                  // samples per frame interval (subframe + 1)
+  double sample_dt = 0;                       // uniform sample spacing (s), 0 if the clip has no frame time
+  std::vector<std::vector<Quat>> original;    // [joint][frame]: where keys are taken
+  std::vector<std::vector<Quat>> reference;   // [joint][sample]
+  std::vector<std::vector<Vec3>> translation; // [joint][sample]: used for both sides
+  std::vector<WorldPose> world;               // [sample]: forward kinematics of the reference
+  std::vector<Vec3> bone_axis;                // [joint], see bone_axes()
+  std::vector<double> reference_acc_rms;      // [joint], rad/s²
+  double height = 1;                          // clip units
+  double shell_distance = 0;                  // clip units
+};
+
+// Builds the reference of `clip` (validated first). Errors name the clip id.
+Result<ClipReference> prepare_reference(const Clip& clip, const std::string& clip_id,
+                                        const ClipEvalOptions& options);
+
+// Rows of one method for every keep_every × joint, then End Site. Errors name the
+// clip, the joint and the method.
+Result<std::vector<ErrorRow>> evaluate_method(const ClipReference& reference, const std::string& method,
+                                              const ClipEvalOptions& options);
+
+// Rows for every method × keep_every × joint, then End Site, in that order: the
+// two steps above. The first error ends it.
+Result<std::vector<ErrorRow>> evaluate_clip(const Clip& clip, const std::string& clip_id,
+                                            const ClipEvalOptions& options);
+
+}  // namespace rotinterp

@@ -1,0 +1,27 @@
+// Finding the clips of an evaluation and splitting them into shards.
+#pragma once
+
+#include "rotinterp/core/result.h"
+
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace rotinterp {
+
+// Every file named in `paths`, and every regular file under a named directory
+// (recursively, following no symlinked directories, skipping hidden entries) whose
+// extension assimp can import. Paths as strings in the form they were found
+// ("data/bvh/a.bvh" under "data"), duplicates removed, sorted bytewise — the order
+// of errors.csv. Error for a path that does not exist.
+Result<std::vector<std::string>> discover_inputs(const std::vector<std::filesystem::path>& paths);
+
+// Shard `index` of `count` (1 ≤ index ≤ count): files[i] for i ≡ index − 1 (mod count).
+// Deterministic and balanced; the shards of one list partition it.
+std::vector<std::string> shard_of(const std::vector<std::string>& files, int index, int count);
+
+// Parses "I/N" (1 ≤ I ≤ N ≤ 1 000 000).
+Result<std::pair<int, int>> parse_shard(const std::string& text);
+
+}  // namespace rotinterp

@@ -1,0 +1,147 @@
+// Error metrics between a reference motion and a rebuilt one: the building blocks
+// of `rotinterp eval`. Eigen and the core only; no file formats, no threads.
+//
+// Units: angles in radians, angular velocity in rad/s, angular acceleration in
+// rad/s², distances in clip units (the caller converts for reports).
+//
+// What is measured, per joint:
+//  * the geodesic angle between reference and rebuilt orientation
+//    (rotinterp::angular_distance — atan2 form, exact near 0);
+//  * its split into swing and twist about the joint's bone axis: the error
+//    rotation e = q_ref⁻¹·q_test (in the joint's own frame) is factored as
+//    e = swing·twist (core swing_twist), twist about the bone axis;
+//  * world-space position error of every joint and End Site by forward kinematics;
+//  * the ACL "virtual vertex" (shell) error: points at distance d along each of the
+//    joint's local x, y, z axes, carried to object space by the joint's world
+//    transform; per sample the largest of the three displacements;
+//  * smoothness of a rebuilt curve: RMS angular acceleration from uniform samples,
+//    and the largest jump of angular velocity and of angular acceleration at keys.
+#pragma once
+
+#include "rotinterp/clip/clip.h"
+#include "rotinterp/core/rotation.h"
+#include "rotinterp/interp/interpolator.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace rotinterp {
+
+// Default shell (virtual vertex) distance: 3 cm, ACL's default for characters.
+constexpr double kDefaultShellDistanceMetres = 0.03;
+
+// ---- statistics -----------------------------------------------------------------
+
+// Summary of a set of non-negative errors. All zero for an empty set.
+struct ErrorStats {
+  std::size_t count = 0;
+  double mean = 0.0;
+  double rms = 0.0;
+  double p95 = 0.0;  // 95th percentile, see percentile()
+  double max = 0.0;
+};
+
+// The p-th quantile (p in [0, 1]) of values[0..n): linear interpolation between the
+// order statistics at rank p·(n − 1) (NumPy's default, Hyndman–Fan type 7). Reorders
+// `values`. 0 for n = 0; non-finite entries are read as 0 (none should reach here).
+double percentile(double* values, std::size_t n, double p);
+// count, mean, RMS, p95 and max of values[0..n); reorders `values`.
+ErrorStats error_stats(double* values, std::size_t n);
+
+// A running RMS/max/mean without storing the samples (for position errors, where no
+// percentile is reported).
+struct RunningError {
+  std::size_t count = 0;
+  double sum = 0.0;
+  double sum_sq = 0.0;
+  double max = 0.0;
+
+  void add(double e) {
+    ++count;
+    sum += e;
+    sum_sq += e * e;
+    if (e > max) max = e;
+  }
+  double mean() const;
+  double rms() const;
+};
+
+// ---- skeleton geometry ------------------------------------------------------------
+
+// The bone axis of every joint, a unit vector in the joint's own frame: the
+// direction to its farthest child (joint or End Site rest offset). A joint without
+// a child of non-zero length continues its parent bone: its own offset carried into
+// its frame by the inverse rest rotation. Falls back to +x when that is zero too.
+std::vector<Vec3> bone_axes(const Skeleton& skeleton);
+
+// The rest pose: every joint at its rest rotation and offset.
+WorldPose rest_pose(const Skeleton& skeleton);
+
+// The height used to express position errors as a percentage: the largest side of
+// the bounding box of all joint and End Site positions in `pose`. 0 for a skeleton
+// of one point (the caller then reports percentages against 1 unit).
+double skeleton_height(const WorldPose& pose);
+
+// `metres` in the clip's units (Clip::unit_scale metres per unit; a unit_scale that
+// is not a positive finite number is read as 1).
+double metres_in_clip_units(const Clip& clip, double metres);
+
+// ---- rotation error of one joint ----------------------------------------------------
+
+struct RotationError {
+  ErrorStats angle;    // geodesic angle between reference and test, rad
+  RunningError swing;  // swing part of the error rotation, rad (no percentile needed)
+  RunningError twist;  // twist part about the bone axis, rad
+};
+
+// Compares ref[i] with test[i] for i < n. `bone_axis` is in the joint's frame (see
+// bone_axes()). `scratch` is reused between calls to avoid allocation.
+RotationError rotation_error(const Quat* ref, const Quat* test, std::size_t n, const Vec3& bone_axis,
+                             std::vector<double>& scratch);
+
+// ---- position and shell error ----------------------------------------------------------
+
+// Accumulators over the samples of a clip, one per joint / End Site.
+struct PoseError {
+  std::vector<RunningError> joint_position;     // |p_ref − p_test| of each joint
+  std::vector<RunningError> end_site_position;  // |p_ref − p_test| of each End Site
+  std::vector<RunningError> joint_shell;        // virtual-vertex error of each joint
+};
+
+// Empty accumulators sized for `skeleton`.
+PoseError make_pose_error(const Skeleton& skeleton);
+// Adds one sample: two world poses of the same skeleton (forward_kinematics output).
+// `shell_distance` in clip units (> 0).
+void accumulate_pose_error(const WorldPose& ref, const WorldPose& test, double shell_distance, PoseError& acc);
+
+// ---- smoothness -------------------------------------------------------------------------
+
+struct Smoothness {
+  double acceleration_rms = 0.0;  // rad/s²
+  double acceleration_max = 0.0;  // rad/s²
+};
+
+// From n samples q[0..n) uniformly spaced by dt > 0: ω_k = log(q_{k+1} q_k⁻¹)/dt (fixed
+// frame), α_k = (ω_{k+1} − ω_k)/dt; RMS and max of |α_k| over the n − 2 values. Zero
+// for n < 3 or dt ≤ 0.
+Smoothness sampled_smoothness(const Quat* q, std::size_t n, double dt);
+
+struct KeyJumps {
+  double velocity = 0.0;      // largest |ω(t_k⁺) − ω(t_k⁻)| over interior keys, rad/s
+  double acceleration = 0.0;  // largest |α(t_k⁺) − α(t_k⁻)| over interior keys, rad/s²
+};
+
+// Relative step of the one-sided differences at a key: h = kKeyJumpStep times the
+// shorter adjacent key interval. Small enough that the O(h²·jerk) bias of the
+// extrapolated one-sided velocity stays far below any real jump, large enough that
+// double round-off in the curve (ε ≈ 1e-16) adds only ~ε/h² to the second
+// differences: 1e-6 rad/s² for a 10 ms key interval.
+constexpr double kKeyJumpStep = 1e-3;
+
+// The jumps of `curve`'s angular velocity and acceleration at the interior keys
+// key_times[1..n−2] (sorted, strictly increasing): one-sided differences at steps
+// h, 2h on each side, the velocity extrapolated to the key to second order. A C¹
+// curve reads ~0 velocity jump, a C² curve ~0 acceleration jump.
+KeyJumps key_jumps(const Interpolator& curve, const std::vector<double>& key_times);
+
+}  // namespace rotinterp

@@ -1,0 +1,140 @@
+// rotinterp eval PATH... | eval --merge DIR... -o DIR: batch angular-error evaluation.
+#include "common.h"
+#include "rotinterp/eval/batch.h"
+#include "rotinterp/eval/inputs.h"
+#include "rotinterp/interp/interpolator.h"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace rotinterp::cli {
+
+namespace {
+
+struct EvalArgs {
+  std::vector<std::string> paths;
+  std::string methods = "all";
+  std::string keep_every = "2,4,8,16";
+  int jobs = 0;
+  std::string output = "eval-out";
+  std::string shard;
+  std::vector<std::string> merge;
+  int subframe = 0;
+  double shell_m = kDefaultShellDistanceMetres;
+  bool no_plots = false;
+  bool quiet = false;
+};
+
+std::vector<std::string> split_list(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream ss(s);
+  std::string item;
+  while (std::getline(ss, item, ','))
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+// A bad option value: the message, and the usage exit code.
+int usage(const std::string& message) {
+  fail(message);
+  return kExitUsage;
+}
+
+int run(const EvalArgs& a) {
+  const bool quiet = a.quiet;
+  auto print_failure = [](const EvalFailure& f) { std::fprintf(stderr, "rotinterp: %s\n", f.message.c_str()); };
+  Result<EvalReport> report = make_error("");
+  if (!a.merge.empty()) {
+    if (!a.paths.empty()) return usage("eval --merge takes directories after --merge, not input paths");
+    std::vector<std::filesystem::path> dirs(a.merge.begin(), a.merge.end());
+    report = merge_eval(dirs, a.output, !a.no_plots);
+    if (report)
+      for (const EvalFailure& f : report->failures) print_failure(f);
+  } else {
+    if (a.paths.empty()) return usage("eval needs at least one input file or directory");
+    EvalOptions o;
+    o.inputs.assign(a.paths.begin(), a.paths.end());
+    o.output_dir = a.output;
+    if (a.methods == "all") {
+      for (const MethodInfo& m : methods()) o.clip.methods.push_back(m.name);
+    } else {
+      for (const std::string& m : split_list(a.methods)) {
+        if (!find_method(m)) return usage("unknown method '" + m + "' (valid: " + method_names() + ")");
+        if (std::find(o.clip.methods.begin(), o.clip.methods.end(), m) == o.clip.methods.end())
+          o.clip.methods.push_back(m);
+      }
+    }
+    if (o.clip.methods.empty()) return fail("no methods to evaluate");
+    for (const std::string& k : split_list(a.keep_every)) {
+      if (k.empty() || k.size() > 7 || k.find_first_not_of("0123456789") != std::string::npos || std::stoi(k) < 1)
+        return usage("--keep-every '" + k + "' is not a whole number ≥ 1");
+      o.clip.keep_every.push_back(std::stoi(k));
+    }
+    std::sort(o.clip.keep_every.begin(), o.clip.keep_every.end());
+    o.clip.keep_every.erase(std::unique(o.clip.keep_every.begin(), o.clip.keep_every.end()), o.clip.keep_every.end());
+    if (o.clip.keep_every.empty()) return usage("--keep-every needs at least one value");
+    o.clip.subframe = a.subframe;
+    o.clip.shell_distance_m = a.shell_m;
+    o.jobs = a.jobs;
+    if (!a.shard.empty()) {
+      auto s = parse_shard(a.shard);
+      if (!s) return usage(s.error());
+      o.shard_index = s->first;
+      o.shard_count = s->second;
+    }
+    o.plots = !a.no_plots;
+    o.progress = make_progress("eval", quiet);
+    o.on_failure = print_failure;
+    report = run_eval(o);
+    end_progress(quiet);
+  }
+  if (!report) return fail(report.error());
+  if (!quiet) {
+    fmt::print("{}", format_summary_table(report->summary));
+    fmt::print("wrote {}/{}, {}/{}{}\n", a.output, kErrorsCsvName, a.output, kSummaryJsonName,
+               a.no_plots || report->summary.clips == 0 ? "" : ", and PNG plots");
+  }
+  if (!report->failures.empty()) {
+    std::vector<std::string> bad;
+    for (const EvalFailure& f : report->failures)
+      if (std::find(bad.begin(), bad.end(), f.file) == bad.end()) bad.push_back(f.file);
+    std::fprintf(stderr, "rotinterp: %zu of %zu files had failures (listed above and in %s/%s)\n", bad.size(),
+                 report->files, a.output.c_str(), kSummaryJsonName);
+    return kExitPartial;
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+void add_eval_command(CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<EvalArgs>();
+  auto* sub = app.add_subcommand(
+      "eval", "Decimate clips, rebuild them with each method and measure the error: DIR/errors.csv, summary.json, plots");
+  sub->add_option("paths", args->paths, "Clip files or directories (searched recursively for every format assimp reads)");
+  sub->add_option("--methods", args->methods, "Comma-separated methods, or 'all'")->capture_default_str();
+  sub->add_option("--keep-every", args->keep_every, "Comma-separated key spacings N: keys at every Nth frame and the last")
+      ->capture_default_str();
+  sub->add_option("-j,--jobs", args->jobs, "Worker threads over (clip, method) pairs (0 = all cores)")->capture_default_str()
+      ->check(CLI::Range(0, 4096));
+  sub->add_option("-o,--output", args->output, "Output directory")->capture_default_str();
+  sub->add_option("--shard", args->shard, "Evaluate shard I of N (I/N) of the sorted inputs, for a cluster");
+  sub->add_option("--merge", args->merge, "Combine the output directories of shard runs into -o DIR");
+  sub->add_option("--subframe", args->subframe,
+                  "Also measure K evenly spaced times between frames, against the original's slerp")
+      ->capture_default_str()->check(CLI::Range(0, 1000));
+  sub->add_option("--shell-distance", args->shell_m,
+                  "Virtual-vertex distance in metres (converted by each clip's unit scale)")
+      ->capture_default_str()->check(CLI::PositiveNumber);
+  sub->add_flag("--no-plots", args->no_plots, "Skip the PNG plots");
+  sub->add_flag("-q,--quiet", args->quiet, "No progress and no table on stdout");
+  sub->callback([args, &exit_code] { exit_code = run(*args); });
+}
+
+}  // namespace rotinterp::cli

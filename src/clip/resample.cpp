@@ -1,0 +1,266 @@
+#include "rotinterp/clip/resample.h"
+
+#include "rotinterp/interp/interpolator.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <memory>
+#include <mutex>
+#include <sstream>
+#include <thread>
+
+namespace rotinterp {
+
+namespace {
+
+// A key within this fraction of a frame of start + i·frame_time belongs to frame i.
+constexpr double kSnapFraction = 0.05;
+// Output size limit: frames × joints (≈ 40 bytes each, 4 GB).
+constexpr std::size_t kMaxOutputKeys = 100000000;
+
+std::string seconds_text(double s) {
+  std::ostringstream os;
+  os.precision(6);
+  os << s;
+  return os.str();
+}
+
+// The source's frame grid, when it has one.
+struct SourceGrid {
+  double start = 0.0;
+  double frame_time = 0.0;  // as read (for snapping)
+  Rate rate;                // exact
+  std::size_t frames = 0;
+  double time(std::size_t i) const { return start + rate.time_of(static_cast<std::int64_t>(i)); }
+  // The time of output frame i in a clip that keeps the source's frame time: what a
+  // reader of the written file gives (start + i·frame_time), so the output's key
+  // times sit on its own frame grid.
+  double label(std::size_t i) const { return start + static_cast<double>(i) * frame_time; }
+};
+
+// Snaps key times onto the exact grid when every key is on it (within
+// kSnapFraction of a frame and no two keys on one frame); otherwise leaves them.
+template <class Track>
+void snap_times(Track& track, const SourceGrid& grid) {
+  std::vector<double> snapped(track.times.size());
+  long long previous = -1;
+  for (std::size_t k = 0; k < track.times.size(); ++k) {
+    const double frames = (track.times[k] - grid.start) / grid.frame_time;
+    const long long i = std::llround(frames);
+    if (i < 0 || i <= previous || std::abs(frames - static_cast<double>(i)) > kSnapFraction) return;
+    snapped[k] = grid.time(static_cast<std::size_t>(i));
+    previous = i;
+  }
+  track.times = std::move(snapped);
+}
+
+// The key at exactly time t, if the track has one.
+template <class Track>
+const typename decltype(Track::keys)::value_type* key_at(const Track& track, double t) {
+  const auto it = std::lower_bound(track.times.begin(), track.times.end(), t);
+  if (it == track.times.end() || *it != t) return nullptr;
+  return &track.keys[static_cast<std::size_t>(it - track.times.begin())];
+}
+
+// What to compute, shared by all joints.
+struct Plan {
+  std::vector<double> eval_times;  // where the output frames are sampled (source timeline)
+  std::vector<double> out_times;   // their times in the output clip
+  // keep-every only: the source frame times that become keys.
+  std::vector<double> key_times;
+  bool keep_every = false;
+};
+
+Status resample_joint(const Clip& in, std::size_t j, const std::string& method, const ResampleOptions& opt,
+                      const std::optional<SourceGrid>& grid, const Plan& plan, Clip& out) {
+  RotationTrack source = in.rotations[j];
+  if (grid) snap_times(source, *grid);
+
+  RotationTrack keys_track;
+  const RotationTrack* build_from = &source;
+  if (plan.keep_every) {
+    std::unique_ptr<Interpolator> source_curve;  // only for keys between source keys
+    keys_track.times = plan.key_times;
+    keys_track.keys.reserve(plan.key_times.size());
+    for (double t : plan.key_times) {
+      if (const Quat* q = key_at(source, t)) {
+        keys_track.keys.push_back(*q);
+        continue;
+      }
+      if (!source_curve) {
+        auto made = make_interpolator(method, source);
+        if (!made) return make_error(made.error());
+        source_curve = std::move(made.value());
+      }
+      keys_track.keys.push_back(source_curve->evaluate(t));
+    }
+    keys_track.make_sign_continuous();
+    build_from = &keys_track;
+  }
+
+  RotationTrack& rot = out.rotations[j];
+  rot.times = plan.out_times;
+  rot.keys.resize(plan.eval_times.size());
+  if (build_from->keys.size() == 1) {
+    std::fill(rot.keys.begin(), rot.keys.end(), build_from->keys.front());
+  } else {
+    auto made = make_interpolator(method, *build_from);
+    if (!made) return make_error(made.error());
+    made.value()->evaluate(plan.eval_times.data(), plan.eval_times.size(), rot.keys.data());
+  }
+  rot.make_sign_continuous();
+
+  if (in.translations[j]) {
+    TranslationTrack tsource = *in.translations[j];
+    if (grid) snap_times(tsource, *grid);
+    TranslationTrack tkeys;
+    const TranslationTrack* tbuild = &tsource;
+    if (plan.keep_every) {
+      std::optional<TranslationCurve> source_curve;
+      tkeys.times = plan.key_times;
+      for (double t : plan.key_times) {
+        if (const Vec3* p = key_at(tsource, t)) {
+          tkeys.keys.push_back(*p);
+          continue;
+        }
+        if (!source_curve) source_curve.emplace(tsource, opt.translation);
+        tkeys.keys.push_back(source_curve->evaluate(t));
+      }
+      tbuild = &tkeys;
+    }
+    const TranslationCurve curve(*tbuild, opt.translation);
+    TranslationTrack& tr = out.translations[j].emplace();
+    tr.times = plan.out_times;
+    tr.keys.resize(plan.eval_times.size());
+    for (std::size_t k = 0; k < plan.eval_times.size(); ++k) tr.keys[k] = curve.evaluate(plan.eval_times[k]);
+  }
+  return Ok{};
+}
+
+}  // namespace
+
+std::optional<Rate> clip_rate(const Clip& clip) {
+  if (!(clip.frame_time > 0.0)) return std::nullopt;
+  auto r = rate_from_frame_time(clip.frame_time);
+  if (!r) return std::nullopt;
+  return r.value();
+}
+
+Result<Clip> resample_clip(const Clip& in, const ResampleOptions& opt) {
+  if (Status s = in.validate(); !s) return make_error(s.error());
+  if (opt.fps && opt.keep_every) return make_error("give either a frame rate or keep-every, not both");
+  if (opt.keep_every && *opt.keep_every < 1) return make_error("keep-every must be at least 1");
+  if (opt.fps && (opt.fps->num <= 0 || opt.fps->den <= 0)) return make_error("frame rate must be greater than 0");
+
+  // Methods per joint.
+  const std::size_t n = in.skeleton.joints.size();
+  if (!find_method(opt.method))
+    return make_error("unknown method '" + opt.method + "' (valid: " + method_names() + ")");
+  std::vector<std::string> method(n, opt.method);
+  for (const auto& [joint, name] : opt.method_for) {
+    const int j = in.skeleton.find(joint);
+    if (j < 0) return make_error("no joint '" + joint + "' in the clip (method override " + joint + "=" + name + ")");
+    if (!find_method(name))
+      return make_error("unknown method '" + name + "' for joint '" + joint + "' (valid: " + method_names() + ")");
+    method[static_cast<std::size_t>(j)] = name;
+  }
+
+  // The source grid.
+  std::optional<SourceGrid> grid;
+  const double start = in.start_time();
+  double duration = in.end_time() - start;
+  if (const std::optional<Rate> rate = clip_rate(in)) {
+    grid = SourceGrid{start, in.frame_time, *rate, in.frame_count()};
+    duration = grid->time(grid->frames - 1) - start;
+  }
+  if (!opt.fps && !grid)
+    return make_error(opt.keep_every ? "the clip has no frame rate, so it has no frames to keep (give --fps instead)"
+                                     : "the clip has no frame rate; give an output rate (--fps)");
+
+  // The range, in seconds from the first frame.
+  double a = 0.0, b = duration;
+  if (opt.range) {
+    const double slack = 1e-9 * std::max(1.0, duration);
+    const double ra = opt.range->start, rb = std::isinf(opt.range->end) ? duration : opt.range->end;
+    if (!std::isfinite(ra) || std::isnan(rb) || ra < -slack || rb > duration + slack || !(rb > ra))
+      return make_error("range " + seconds_text(ra) + ":" + seconds_text(rb) + " s is outside the clip (0:" +
+                        seconds_text(duration) + " s)");
+    a = std::max(0.0, ra);
+    b = std::min(duration, rb);
+  }
+
+  auto too_many = [n](std::size_t frames) {
+    return make_error("resampling would give " + std::to_string(frames) + " frames × " + std::to_string(n) +
+                      " joints, more than " + std::to_string(kMaxOutputKeys) + " keys; give a lower --fps or a --range");
+  };
+  Plan plan;
+  Clip out;
+  out.name = in.name;
+  out.skeleton = in.skeleton;
+  out.unit_scale = in.unit_scale;
+  out.source_format = in.source_format;
+  if (opt.keep_every) {
+    const Rate& r = grid->rate;
+    const double fa = a * static_cast<double>(r.num) / static_cast<double>(r.den);
+    const double fb = b * static_cast<double>(r.num) / static_cast<double>(r.den);
+    const auto i0 = static_cast<std::size_t>(std::max(0.0, std::ceil(fa - 1e-6)));
+    const auto i1 = std::min(grid->frames - 1, static_cast<std::size_t>(std::floor(fb + 1e-6)));
+    if (i1 < i0) return make_error("range " + seconds_text(a) + ":" + seconds_text(b) + " s holds no frame");
+    if (i1 - i0 + 1 > kMaxOutputKeys / n) return too_many(i1 - i0 + 1);
+    plan.keep_every = true;
+    for (std::size_t i = i0; i <= i1; ++i) {
+      plan.eval_times.push_back(grid->time(i));
+      plan.out_times.push_back(grid->label(i - i0));
+    }
+    for (std::size_t k : keep_every_indices(i1 - i0 + 1, *opt.keep_every)) plan.key_times.push_back(grid->time(i0 + k));
+    out.frame_time = in.frame_time;
+    out.frame_time_text = in.frame_time_text;
+  } else {
+    const Rate rate = opt.fps ? *opt.fps : grid->rate;
+    TimeGrid g;
+    g.start = start;
+    g.offset = a;
+    g.end = start + b;
+    g.rate = rate;
+    g.count = (!opt.range && grid) ? sample_count(grid->frames, grid->rate, rate) : sample_count(b - a, rate);
+    if (g.count > kMaxOutputKeys / n) return too_many(g.count);
+    plan.eval_times = g.times();
+    if (opt.fps) {
+      TimeGrid o = g;
+      o.offset = 0.0;
+      o.end = start + (b - a);
+      plan.out_times = o.times();
+      out.frame_time = rate.period();
+    } else {
+      for (std::size_t k = 0; k < g.count; ++k) plan.out_times.push_back(grid->label(k));
+      out.frame_time = in.frame_time;
+      out.frame_time_text = in.frame_time_text;
+    }
+  }
+
+  out.rotations.resize(n);
+  out.translations.resize(n);
+  std::vector<Status> status(n, Status(Ok{}));
+  std::atomic<std::size_t> next{0}, done{0};
+  auto work = [&] {
+    for (std::size_t j = next++; j < n; j = next++) {
+      status[j] = resample_joint(in, j, method[j], opt, grid, plan, out);
+      const std::size_t d = ++done;
+      if (opt.progress) opt.progress(d, n);
+    }
+  };
+  unsigned threads = opt.threads ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
+  threads = static_cast<unsigned>(std::min<std::size_t>(threads, n));
+  // Tiny jobs are faster on one thread.
+  if (plan.eval_times.size() * n < 20000) threads = 1;
+  std::vector<std::thread> pool;
+  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work);
+  work();
+  for (auto& t : pool) t.join();
+  for (std::size_t j = 0; j < n; ++j)
+    if (!status[j]) return make_error("joint '" + in.skeleton.joints[j].name + "': " + status[j].error());
+  return out;
+}
+
+}  // namespace rotinterp

@@ -1,0 +1,159 @@
+#include "rotinterp/eval/error_row.h"
+
+#include <fmt/format.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+
+namespace rotinterp {
+
+namespace {
+
+// Columns in file order. The first thirteen are the documented minimum.
+enum Col {
+  kClip, kMethod, kKeepEvery, kJoint, kFrames, kMeanDeg, kRmsDeg, kP95Deg, kMaxDeg, kSwingRmsDeg, kTwistRmsDeg,
+  kPosRms, kPosMax, kPosRmsPct, kPosMaxPct, kShellRms, kShellMax, kAccRms, kAccRmsRef, kVelJumpMax, kAccJumpMax,
+  kSamples, kHeight, kKind, kColumnCount
+};
+
+constexpr const char* kColumnNames[kColumnCount] = {
+    "clip", "method", "keep_every", "joint", "frames", "mean_deg", "rms_deg", "p95_deg", "max_deg",
+    "swing_rms_deg", "twist_rms_deg", "pos_rms", "pos_max", "pos_rms_pct", "pos_max_pct", "shell_rms",
+    "shell_max", "acc_rms_dps2", "acc_rms_ref_dps2", "vel_jump_max_dps", "acc_jump_max_dps2", "samples",
+    "height", "kind"};
+
+bool is_joint_only(int c) {
+  return (c >= kMeanDeg && c <= kTwistRmsDeg) || (c >= kShellRms && c <= kAccJumpMax);
+}
+
+std::string quote(std::string_view s) {
+  if (s.find_first_of(",\"\r\n") == std::string_view::npos) return std::string(s);
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"') out += '"';
+    out += c;
+  }
+  return out + "\"";
+}
+
+// Shortest text that reads back as the same double; finite by construction.
+std::string number(double v) { return fmt::format("{}", std::isfinite(v) ? v : 0.0); }
+
+Result<double> to_double(const std::string& s, const char* column) {
+  if (s.empty()) return make_error(std::string("empty ") + column);
+  char* end = nullptr;
+  errno = 0;
+  const double v = std::strtod(s.c_str(), &end);
+  if (end != s.c_str() + s.size() || errno == ERANGE || !std::isfinite(v))
+    return make_error(std::string("bad number '") + s + "' in column " + column);
+  return v;
+}
+
+}  // namespace
+
+std::string error_csv_header() {
+  std::string h;
+  for (int c = 0; c < kColumnCount; ++c) h += (c ? "," : "") + std::string(kColumnNames[c]);
+  return h;
+}
+
+std::string format_error_row(const ErrorRow& r) {
+  const double values[kColumnCount] = {0, 0, 0, 0, 0, r.mean_deg, r.rms_deg, r.p95_deg, r.max_deg,
+                                       r.swing_rms_deg, r.twist_rms_deg, r.pos_rms, r.pos_max, r.pos_rms_pct,
+                                       r.pos_max_pct, r.shell_rms, r.shell_max, r.acc_rms, r.acc_rms_ref,
+                                       r.vel_jump_max, r.acc_jump_max, 0, r.height, 0};
+  std::string line = quote(r.clip) + "," + quote(r.method) + "," + std::to_string(r.keep_every) + "," +
+                     quote(r.joint) + "," + std::to_string(r.frames);
+  for (int c = kMeanDeg; c < kSamples; ++c) {
+    line += ',';
+    if (!(r.end_site && is_joint_only(c))) line += number(values[c]);
+  }
+  line += "," + std::to_string(r.samples) + "," + number(r.height) + "," + (r.end_site ? "end_site" : "joint");
+  return line;
+}
+
+Result<std::vector<std::string>> split_csv_line(std::string_view line) {
+  std::vector<std::string> fields(1);
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted) {
+      if (c == '"') {
+        if (i + 1 < line.size() && line[i + 1] == '"') {
+          fields.back() += '"';
+          ++i;
+        } else {
+          quoted = false;
+        }
+      } else {
+        fields.back() += c;
+      }
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == ',') {
+      fields.emplace_back();
+    } else if (c != '\r') {
+      fields.back() += c;
+    }
+  }
+  if (quoted) return make_error("unterminated quote");
+  return fields;
+}
+
+Result<ErrorRowParser> ErrorRowParser::from_header(std::string_view header) {
+  auto fields = split_csv_line(header);
+  if (!fields) return make_error("header: " + fields.error());
+  ErrorRowParser p;
+  p.column_.assign(kColumnCount, -1);
+  for (std::size_t i = 0; i < fields->size(); ++i)
+    for (int c = 0; c < kColumnCount; ++c)
+      if ((*fields)[i] == kColumnNames[c]) p.column_[c] = static_cast<int>(i);
+  for (int c = 0; c < kColumnCount; ++c)
+    if (p.column_[c] < 0) return make_error(std::string("header has no column '") + kColumnNames[c] + "'");
+  return p;
+}
+
+Result<ErrorRow> ErrorRowParser::parse(std::string_view line) const {
+  auto fields = split_csv_line(line);
+  if (!fields) return make_error(fields.error());
+  auto field = [&](int c) -> const std::string& {
+    static const std::string empty;
+    const int i = column_[c];
+    return i < static_cast<int>(fields->size()) ? (*fields)[i] : empty;
+  };
+  ErrorRow r;
+  r.clip = field(kClip);
+  r.method = field(kMethod);
+  r.joint = field(kJoint);
+  if (r.clip.empty() || r.method.empty() || r.joint.empty()) return make_error("empty clip, method or joint");
+  const std::string& kind = field(kKind);
+  if (kind != "joint" && kind != "end_site") return make_error("kind is '" + kind + "', not joint or end_site");
+  r.end_site = kind == "end_site";
+  double* targets[kColumnCount] = {};
+  targets[kMeanDeg] = &r.mean_deg, targets[kRmsDeg] = &r.rms_deg, targets[kP95Deg] = &r.p95_deg;
+  targets[kMaxDeg] = &r.max_deg, targets[kSwingRmsDeg] = &r.swing_rms_deg, targets[kTwistRmsDeg] = &r.twist_rms_deg;
+  targets[kPosRms] = &r.pos_rms, targets[kPosMax] = &r.pos_max, targets[kPosRmsPct] = &r.pos_rms_pct;
+  targets[kPosMaxPct] = &r.pos_max_pct, targets[kShellRms] = &r.shell_rms, targets[kShellMax] = &r.shell_max;
+  targets[kAccRms] = &r.acc_rms, targets[kAccRmsRef] = &r.acc_rms_ref, targets[kVelJumpMax] = &r.vel_jump_max;
+  targets[kAccJumpMax] = &r.acc_jump_max, targets[kHeight] = &r.height;
+  for (int c = 0; c < kColumnCount; ++c) {
+    if (!targets[c] || (r.end_site && is_joint_only(c))) continue;
+    auto v = to_double(field(c), kColumnNames[c]);
+    if (!v) return make_error(v.error());
+    *targets[c] = *v;
+  }
+  for (int c : {kKeepEvery, kFrames, kSamples}) {
+    auto v = to_double(field(c), kColumnNames[c]);
+    if (!v) return make_error(v.error());
+    const double limit = c == kKeepEvery ? 1e9 : 1e15;  // keep_every is an int
+    if (*v < 0 || *v != std::floor(*v) || *v > limit)
+      return make_error(std::string("column ") + kColumnNames[c] + " is not a count");
+    if (c == kKeepEvery) r.keep_every = static_cast<int>(*v);
+    if (c == kFrames) r.frames = static_cast<std::size_t>(*v);
+    if (c == kSamples) r.samples = static_cast<std::size_t>(*v);
+  }
+  return r;
+}
+
+}  // namespace rotinterp

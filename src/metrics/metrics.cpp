@@ -1,0 +1,212 @@
+#include "rotinterp/eval/metrics.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rotinterp {
+
+// ---- statistics -------------------------------------------------------------------
+
+double percentile(double* values, std::size_t n, double p) {
+  if (n == 0) return 0.0;
+  for (std::size_t i = 0; i < n; ++i)
+    if (!std::isfinite(values[i])) values[i] = 0.0;
+  p = std::clamp(std::isfinite(p) ? p : 1.0, 0.0, 1.0);
+  const double rank = p * static_cast<double>(n - 1);
+  const std::size_t lo = static_cast<std::size_t>(std::floor(rank));
+  const double frac = rank - static_cast<double>(lo);
+  std::nth_element(values, values + lo, values + n);
+  const double a = values[lo];
+  if (frac == 0.0 || lo + 1 >= n) return a;
+  // The next order statistic is the smallest of the upper part.
+  const double b = *std::min_element(values + lo + 1, values + n);
+  return a + frac * (b - a);
+}
+
+ErrorStats error_stats(double* values, std::size_t n) {
+  ErrorStats s;
+  if (n == 0) return s;
+  double sum = 0.0, sum_sq = 0.0, mx = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double v = std::isfinite(values[i]) ? values[i] : 0.0;
+    sum += v;
+    sum_sq += v * v;
+    mx = std::max(mx, v);
+  }
+  s.count = n;
+  s.mean = sum / static_cast<double>(n);
+  s.rms = std::sqrt(sum_sq / static_cast<double>(n));
+  s.max = mx;
+  s.p95 = percentile(values, n, 0.95);
+  return s;
+}
+
+double RunningError::mean() const { return count ? sum / static_cast<double>(count) : 0.0; }
+double RunningError::rms() const { return count ? std::sqrt(sum_sq / static_cast<double>(count)) : 0.0; }
+
+// ---- skeleton geometry -------------------------------------------------------------
+
+std::vector<Vec3> bone_axes(const Skeleton& skeleton) {
+  const std::size_t n = skeleton.joints.size();
+  std::vector<Vec3> axis(n, Vec3::Zero());
+  std::vector<double> longest(n, 0.0);
+  auto consider = [&](int parent, const Vec3& offset) {
+    if (parent < 0 || static_cast<std::size_t>(parent) >= n || !offset.allFinite()) return;
+    const double len = offset.norm();
+    if (len > longest[parent]) {
+      longest[parent] = len;
+      axis[parent] = offset / len;
+    }
+  };
+  for (const Joint& j : skeleton.joints) consider(j.parent, j.offset);
+  for (const EndSite& e : skeleton.end_sites) consider(e.parent, e.offset);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (longest[i] > 0.0) continue;
+    const Joint& j = skeleton.joints[i];
+    const Vec3 own = normalized_or_identity(j.rest_rotation).conjugate() * j.offset;
+    const double len = own.norm();
+    axis[i] = (len > 0.0 && std::isfinite(len)) ? Vec3(own / len) : Vec3::UnitX();
+  }
+  return axis;
+}
+
+WorldPose rest_pose(const Skeleton& skeleton) {
+  std::vector<Quat> r(skeleton.joints.size());
+  std::vector<Vec3> t(skeleton.joints.size());
+  for (std::size_t i = 0; i < skeleton.joints.size(); ++i) {
+    r[i] = normalized_or_identity(skeleton.joints[i].rest_rotation);
+    t[i] = skeleton.joints[i].offset;
+  }
+  WorldPose pose;
+  forward_kinematics(skeleton, r, t, pose);
+  return pose;
+}
+
+double skeleton_height(const WorldPose& pose) {
+  if (pose.position.empty() && pose.end_site_position.empty()) return 0.0;
+  Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
+  auto grow = [&](const Vec3& p) {
+    if (!p.allFinite()) return;
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  };
+  for (const Vec3& p : pose.position) grow(p);
+  for (const Vec3& p : pose.end_site_position) grow(p);
+  if (!(hi.x() >= lo.x())) return 0.0;
+  return (hi - lo).maxCoeff();
+}
+
+double metres_in_clip_units(const Clip& clip, double metres) {
+  const double scale = (std::isfinite(clip.unit_scale) && clip.unit_scale > 0.0) ? clip.unit_scale : 1.0;
+  return metres / scale;
+}
+
+// ---- rotation error -------------------------------------------------------------------
+
+RotationError rotation_error(const Quat* ref, const Quat* test, std::size_t n, const Vec3& bone_axis_in,
+                             std::vector<double>& scratch) {
+  RotationError out;
+  scratch.resize(n);
+  double* angle = scratch.data();
+  const double an = bone_axis_in.norm();
+  const bool has_axis = an > 0.0 && std::isfinite(an);
+  const Vec3 axis = has_axis ? Vec3(bone_axis_in / an) : Vec3::Zero();
+  for (std::size_t i = 0; i < n; ++i) {
+    // e = q_ref⁻¹·q_test = (w, v), taken with w ≥ 0. Its angle is 2·atan2(|v|, w) —
+    // the same number as angular_distance(ref, test), without its normalizations.
+    // The twist about the axis is (w, p·axis)/n with p = v·axis, n = √(w² + p²); the
+    // swing e·twist⁻¹ has real part n, so its angle is 2·atan2(|v − p·axis|, n).
+    // These are the angles of core swing_twist(e, axis), in closed form (tested).
+    Quat e = ref[i].conjugate() * test[i];
+    const double en = e.norm();
+    if (!(en > 0.0) || !std::isfinite(en)) e = Quat::Identity(); else e.coeffs() /= en;
+    double w = e.w();
+    Vec3 v = e.vec();
+    if (w < 0.0) w = -w, v = -v;
+    angle[i] = 2.0 * std::atan2(v.norm(), w);
+    const double p = v.dot(axis);
+    const double tw = std::sqrt(w * w + p * p);
+    if (!has_axis || tw < kSwingTwistDegenerate) {
+      out.swing.add(angle[i]);  // no axis, or a swing within √ε of 180°: all swing
+      out.twist.add(0.0);
+    } else {
+      out.twist.add(2.0 * std::atan2(std::abs(p), w));
+      out.swing.add(2.0 * std::atan2((v - p * axis).norm(), tw));
+    }
+  }
+  out.angle = error_stats(angle, n);
+  return out;
+}
+
+// ---- position and shell error ------------------------------------------------------------
+
+PoseError make_pose_error(const Skeleton& skeleton) {
+  PoseError acc;
+  acc.joint_position.assign(skeleton.joints.size(), RunningError{});
+  acc.joint_shell.assign(skeleton.joints.size(), RunningError{});
+  acc.end_site_position.assign(skeleton.end_sites.size(), RunningError{});
+  return acc;
+}
+
+void accumulate_pose_error(const WorldPose& ref, const WorldPose& test, double shell_distance, PoseError& acc) {
+  const std::size_t n = std::min({ref.position.size(), test.position.size(), acc.joint_position.size()});
+  for (std::size_t j = 0; j < n; ++j) {
+    const Vec3 dp = ref.position[j] - test.position[j];
+    acc.joint_position[j].add(dp.norm());
+    // Vertices p + R·(d·eᵢ): their displacement is dp + d·(R_ref − R_test)·eᵢ, the
+    // columns of the difference of the two rotation matrices.
+    const Mat3 dr = shell_distance * (ref.rotation[j].toRotationMatrix() - test.rotation[j].toRotationMatrix());
+    double worst = 0.0;
+    for (int c = 0; c < 3; ++c) worst = std::max(worst, (dp + dr.col(c)).norm());
+    acc.joint_shell[j].add(worst);
+  }
+  const std::size_t m =
+      std::min({ref.end_site_position.size(), test.end_site_position.size(), acc.end_site_position.size()});
+  for (std::size_t e = 0; e < m; ++e) acc.end_site_position[e].add((ref.end_site_position[e] - test.end_site_position[e]).norm());
+}
+
+// ---- smoothness ------------------------------------------------------------------------------
+
+Smoothness sampled_smoothness(const Quat* q, std::size_t n, double dt) {
+  Smoothness s;
+  if (n < 3 || !(dt > 0.0) || !std::isfinite(dt)) return s;
+  Vec3 prev = displacement_fixed(q[0], q[1]).vec() / dt;
+  double sum_sq = 0.0;
+  for (std::size_t k = 1; k + 1 < n; ++k) {
+    const Vec3 w = displacement_fixed(q[k], q[k + 1]).vec() / dt;
+    const double a = (w - prev).norm() / dt;
+    sum_sq += a * a;
+    s.acceleration_max = std::max(s.acceleration_max, a);
+    prev = w;
+  }
+  s.acceleration_rms = std::sqrt(sum_sq / static_cast<double>(n - 2));
+  return s;
+}
+
+KeyJumps key_jumps(const Interpolator& curve, const std::vector<double>& key_times) {
+  KeyJumps out;
+  if (key_times.size() < 3) return out;
+  for (std::size_t k = 1; k + 1 < key_times.size(); ++k) {
+    const double t = key_times[k];
+    const double interval = std::min(t - key_times[k - 1], key_times[k + 1] - t);
+    if (!(interval > 0.0) || !std::isfinite(interval)) continue;
+    const double h = kKeyJumpStep * interval;
+    double times[5] = {t - 2 * h, t - h, t, t + h, t + 2 * h};
+    Quat q[5];
+    curve.evaluate(times, 5, q);
+    Vec3 w[4];
+    for (int i = 0; i < 4; ++i) w[i] = displacement_fixed(q[i], q[i + 1]).vec() / h;
+    // w[i] is the mean velocity over [tᵢ, tᵢ₊₁]: the velocity at its midpoint to O(h²).
+    const Vec3 a_minus = (w[1] - w[0]) / h;
+    const Vec3 a_plus = (w[3] - w[2]) / h;
+    const Vec3 w_minus = w[1] + 0.5 * h * a_minus;  // extrapolated from t − h/2 to t
+    const Vec3 w_plus = w[2] - 0.5 * h * a_plus;    // from t + h/2 back to t
+    const double dv = (w_plus - w_minus).norm();
+    const double da = (a_plus - a_minus).norm();
+    if (std::isfinite(dv)) out.velocity = std::max(out.velocity, dv);
+    if (std::isfinite(da)) out.acceleration = std::max(out.acceleration, da);
+  }
+  return out;
+}
+
+}  // namespace rotinterp

@@ -1,0 +1,148 @@
+// `rotinterp eval` end to end: outputs, shards + merge, a bad file in a directory.
+#include "support/run_cli.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+namespace rotinterp {
+namespace {
+
+namespace fs = std::filesystem;
+using test::run_cli;
+using test::slurp;
+
+// A fresh directory under the test temp dir.
+fs::path fresh_dir(const std::string& name) {
+  const fs::path d = fs::path(testing::TempDir()) / ("rotinterp_eval_" + name);
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+// A directory of symlinks to a few short real clips (never copies of them).
+fs::path clip_dir(const std::string& name, bool with_bad_file) {
+  const fs::path d = fresh_dir(name);
+  const fs::path data = ROTINTERP_SHARED_DATA;
+  fs::create_directories(d / "sub");
+  fs::create_symlink(data / "bvh/NC_bandai1_walk_normal_001.bvh", d / "walk.bvh");
+  fs::create_symlink(data / "bvh/NC_bandai2_raise-up-both-hands_active_031.bvh", d / "sub/raise.bvh");
+  fs::create_symlink(data / "bvh/bvhio_example.bvh", d / "sub/two_frames.bvh");
+  fs::create_symlink(data / "fbx/ufbx_maya_game_sausage_7500_binary_wiggle.fbx", d / "sausage.fbx");
+  std::ofstream(d / "notes.txt") << "not a clip, not an assimp extension\n";
+  if (with_bad_file) std::ofstream(d / "sub/broken.bvh") << "HIERARCHY\nROOT Hips\n{\n  OFFSET 0 0\n";
+  return d;
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> out;
+  std::stringstream ss(text);
+  std::string line;
+  while (std::getline(ss, line)) out.push_back(line);
+  return out;
+}
+
+TEST(EvalCli, WritesCsvSummaryAndPlotsForADirectory) {
+  const fs::path in = clip_dir("outputs", false), out = fresh_dir("outputs_out");
+  const auto r = run_cli("eval " + in.string() + " --methods slerp,squad --keep-every 4,2 -j 2 -o " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("slerp"), std::string::npos) << r.out;
+  const auto csv = lines_of(slurp(out / "errors.csv"));
+  ASSERT_GT(csv.size(), 1u);
+  EXPECT_EQ(csv[0].rfind("clip,method,keep_every,joint,frames,mean_deg,rms_deg,p95_deg,max_deg,swing_rms_deg,"
+                         "twist_rms_deg,pos_rms,pos_max",
+                         0),
+            0u);
+  EXPECT_EQ(slurp(out / "errors.csv").find("nan"), std::string::npos);
+  const auto j = nlohmann::json::parse(slurp(out / "summary.json"));
+  EXPECT_EQ(j["clips_evaluated"], 4);
+  EXPECT_EQ(j["results"].size(), 4u);  // 2 methods × 2 spacings
+  EXPECT_EQ(j["results"][0]["keep_every"], 2);
+  EXPECT_TRUE(j.contains("version") && j.contains("seconds") && j.contains("inputs"));
+  EXPECT_TRUE(fs::file_size(out / "error_vs_spacing.png") > 0);
+  EXPECT_TRUE(fs::file_size(out / "worst_clip_joints.png") > 0);
+  for (const auto& e : fs::directory_iterator(out))
+    EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
+}
+
+TEST(EvalCli, ShardsMergedEqualASingleRun) {
+  const fs::path in = clip_dir("shards", false);
+  const fs::path single = fresh_dir("shards_single"), a = fresh_dir("shards_a"), b = fresh_dir("shards_b"),
+                 c = fresh_dir("shards_c"), merged = fresh_dir("shards_merged");
+  const std::string common = "eval " + in.string() + " --methods slerp,squad,expmap --keep-every 2,8 -q --no-plots ";
+  ASSERT_EQ(run_cli(common + "-j 2 -o " + single.string()).exit_code, 0);
+  ASSERT_EQ(run_cli(common + "-j 1 --shard 1/3 -o " + a.string()).exit_code, 0);
+  ASSERT_EQ(run_cli(common + "-j 1 --shard 2/3 -o " + b.string()).exit_code, 0);
+  ASSERT_EQ(run_cli(common + "-j 1 --shard 3/3 -o " + c.string()).exit_code, 0);
+  // Each shard holds a strict part of the clips.
+  EXPECT_LT(slurp(a / "errors.csv").size(), slurp(single / "errors.csv").size());
+  const auto r = run_cli("eval --merge " + c.string() + " " + a.string() + " " + b.string() + " -q -o " + merged.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(slurp(merged / "errors.csv"), slurp(single / "errors.csv"));  // byte-identical, already sorted
+  const auto js = nlohmann::json::parse(slurp(single / "summary.json"));
+  const auto jm = nlohmann::json::parse(slurp(merged / "summary.json"));
+  EXPECT_EQ(jm["results"], js["results"]);
+  EXPECT_EQ(jm["worst_clip"], js["worst_clip"]);
+  EXPECT_EQ(jm["clips_evaluated"], js["clips_evaluated"]);
+  EXPECT_EQ(jm["files"], js["files"]);
+  EXPECT_TRUE(fs::exists(merged / "error_vs_spacing.png"));
+
+  // Merging a shard twice is refused.
+  const auto twice = run_cli("eval --merge " + a.string() + " " + a.string() + " -q -o " + fresh_dir("twice").string());
+  EXPECT_EQ(twice.exit_code, 1);
+  EXPECT_NE(twice.err.find("more than one shard"), std::string::npos) << twice.err;
+}
+
+TEST(EvalCli, ADirectoryWithOneBadFileEvaluatesTheOthersAndExitsThree) {
+  const fs::path in = clip_dir("bad", true), out = fresh_dir("bad_out");
+  const auto r = run_cli("eval " + in.string() + " --methods slerp --keep-every 4 -q -o " + out.string());
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_NE(r.err.find("broken.bvh"), std::string::npos) << r.err;
+  const std::string csv = slurp(out / "errors.csv");
+  EXPECT_NE(csv.find("walk.bvh"), std::string::npos);
+  EXPECT_NE(csv.find("raise.bvh"), std::string::npos);
+  EXPECT_NE(csv.find("sausage.fbx"), std::string::npos);
+  EXPECT_EQ(csv.find("broken.bvh"), std::string::npos);
+  const auto j = nlohmann::json::parse(slurp(out / "summary.json"));
+  ASSERT_EQ(j["failed"].size(), 1u);
+  EXPECT_NE(j["failed"][0]["file"].get<std::string>().find("broken.bvh"), std::string::npos);
+  EXPECT_EQ(j["clips_evaluated"], 4);
+}
+
+TEST(EvalCli, SubframesOfSlerpAtEveryFrameMatchTheOriginalsOwnSlerp) {
+  const fs::path out = fresh_dir("subframe");
+  const std::string clip = std::string(ROTINTERP_SHARED_DATA) + "/bvh/NC_bandai2_raise-up-both-hands_active_031.bvh";
+  const auto r = run_cli("eval " + clip + " --methods slerp,squad --keep-every 1,4 --subframe 3 -q --no-plots -o " +
+                         out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(slurp(out / "summary.json"));
+  ASSERT_EQ(j["results"].size(), 4u);
+  for (const auto& e : j["results"]) {
+    EXPECT_EQ(e["samples"].get<std::size_t>() % (50 * 4 + 1), 0u);  // 51 frames, 3 between each pair
+    if (e["method"] == "slerp" && e["keep_every"] == 1) {
+      EXPECT_LT(e["max_deg"].get<double>(), 1e-6);
+    }
+    if (e["keep_every"] == 4) {
+      EXPECT_GT(e["rms_deg"].get<double>(), 1e-3);
+    }
+  }
+}
+
+TEST(EvalCli, BadOptionValuesAreUsageErrors) {
+  const fs::path out = fresh_dir("usage");
+  const std::string clip = std::string(ROTINTERP_SHARED_DATA) + "/bvh/bvhio_example.bvh";
+  EXPECT_EQ(run_cli("eval " + clip + " --methods nosuch -o " + out.string()).exit_code, 2);
+  EXPECT_EQ(run_cli("eval " + clip + " --keep-every 0 -o " + out.string()).exit_code, 2);
+  EXPECT_EQ(run_cli("eval " + clip + " --shard 3/2 -o " + out.string()).exit_code, 2);
+  const auto missing = run_cli("eval /no/such/dir -o " + out.string());
+  EXPECT_EQ(missing.exit_code, 1);
+  EXPECT_NE(missing.err.find("/no/such/dir"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace rotinterp

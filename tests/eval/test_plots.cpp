@@ -1,0 +1,64 @@
+// The plots are written as real PNG files, atomically.
+#include "rotinterp/eval/plots.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+
+namespace rotinterp {
+namespace {
+
+namespace fs = std::filesystem;
+
+Summary hand_summary() {
+  Summary s;
+  s.clips = 3;
+  const char* methods[] = {"slerp", "squad", "bspline"};
+  for (int m = 0; m < 3; ++m)
+    for (int keep : {2, 4, 8, 16}) {
+      SummaryEntry e;
+      e.method = methods[m];
+      e.keep_every = keep;
+      e.rms_deg = 0.01 * keep * keep / (m + 1);
+      e.max_deg = 10 * e.rms_deg;
+      s.entries.push_back(e);
+    }
+  s.worst_clip = "data/bvh/some_clip.bvh";
+  s.worst_keep_every = 16;
+  for (int m = 0; m < 3; ++m)
+    for (int j = 0; j < 31; ++j) {
+      ErrorRow r;
+      r.clip = s.worst_clip;
+      r.method = methods[m];
+      r.keep_every = 16;
+      r.joint = "Joint" + std::to_string(j);
+      r.rms_deg = (1 + j % 7) * (m + 1) * 0.3;
+      s.worst_clip_rows.push_back(r);
+    }
+  return s;
+}
+
+bool is_png(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  char sig[8] = {};
+  in.read(sig, 8);
+  return in && sig[1] == 'P' && sig[2] == 'N' && sig[3] == 'G';
+}
+
+TEST(Plots, WritesBothPngsAndNoTemporaries) {
+  const fs::path dir = fs::path(testing::TempDir()) / "rotinterp_plots_test";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  ASSERT_TRUE(write_plots(hand_summary(), dir).ok());
+  EXPECT_TRUE(is_png(dir / kSpacingPlotName));
+  EXPECT_TRUE(is_png(dir / kWorstClipPlotName));
+  EXPECT_GT(fs::file_size(dir / kSpacingPlotName), 10000u);  // axes, labels and lines, not a blank page
+  std::size_t files = 0;
+  for (const auto& e : fs::directory_iterator(dir)) files += e.is_regular_file();
+  EXPECT_EQ(files, 2u);
+  if (const char* keep = std::getenv("ROTINTERP_KEEP_PLOTS")) fs::copy(dir, keep, fs::copy_options::overwrite_existing | fs::copy_options::recursive);
+}
+
+}  // namespace
+}  // namespace rotinterp

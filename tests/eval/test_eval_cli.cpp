@@ -133,6 +133,41 @@ TEST(EvalCli, SubframesOfSlerpAtEveryFrameMatchTheOriginalsOwnSlerp) {
   }
 }
 
+TEST(EvalCli, SynthConstantVelocityClipsMatchTheirAnalyticTruthForSlerpSquadAndBf) {
+  const fs::path dir = fresh_dir("truth"), out = fresh_dir("truth_out");
+  const fs::path clip = dir / "constant.bvh";
+  ASSERT_EQ(run_cli("synth " + clip.string() + " --kind constant --seconds 2 --fps 30 --joints 4 --seed 3 -q").exit_code, 0);
+  const auto r = run_cli("eval " + clip.string() +
+                         " --truth --methods slerp,squad,bf --keep-every 2,4,8 --subframe 3 -q --no-plots -o " +
+                         out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(slurp(out / "summary.json"));
+  EXPECT_EQ(j["options"]["truth"], true);
+  ASSERT_EQ(j["results"].size(), 9u);
+  for (const auto& e : j["results"]) EXPECT_LT(e["max_deg"].get<double>(), 1e-3) << e.dump();
+
+  // Smooth random motion: against the truth between frames, error grows with the spacing.
+  const fs::path smooth = dir / "smooth.bvh";
+  ASSERT_EQ(run_cli("synth " + smooth.string() + " --kind smooth --seconds 3 --fps 30 --joints 3 -q").exit_code, 0);
+  ASSERT_EQ(run_cli("eval " + smooth.string() + " --truth --methods squad --keep-every 2,4,8 --subframe 2 -q " +
+                    "--no-plots -o " + out.string())
+                .exit_code,
+            0);
+  const auto js = nlohmann::json::parse(slurp(out / "summary.json"));
+  double previous = 0;
+  for (const auto& e : js["results"]) {
+    EXPECT_GT(e["rms_deg"].get<double>(), previous);
+    previous = e["rms_deg"].get<double>();
+  }
+
+  // A clip without a synth spec cannot be compared with a truth: named, exit 3.
+  const std::string real = std::string(ROTINTERP_SHARED_DATA) + "/bvh/bvhio_example.bvh";
+  const auto none = run_cli("eval " + real + " " + clip.string() + " --truth --methods slerp -q --no-plots -o " +
+                            out.string());
+  EXPECT_EQ(none.exit_code, 3);
+  EXPECT_NE(none.err.find("bvhio_example.bvh"), std::string::npos) << none.err;
+}
+
 TEST(EvalCli, BadOptionValuesAreUsageErrors) {
   const fs::path out = fresh_dir("usage");
   const std::string clip = std::string(ROTINTERP_SHARED_DATA) + "/bvh/bvhio_example.bvh";

@@ -99,6 +99,9 @@ int run(const EvalArgs& a) {
   }
   if (!report) return fail(report.error());
   if (!quiet) {
+    if (!report->skipped.empty())
+      std::fprintf(stderr, "rotinterp: note: %zu file(s) found in directories hold no animation and were skipped "
+                   "(listed in %s/%s)\n", report->skipped.size(), a.output.c_str(), kSummaryJsonName);
     fmt::print("{}", format_summary_table(report->summary));
     fmt::print("wrote {}/{}, {}/{}{}\n", a.output, kErrorsCsvName, a.output, kSummaryJsonName,
                a.no_plots || report->summary.clips == 0 ? "" : ", and PNG plots");

@@ -35,6 +35,8 @@ fs::path clip_dir(const std::string& name, bool with_bad_file) {
   fs::create_symlink(data / "bvh/bvhio_example.bvh", d / "sub/two_frames.bvh");
   fs::create_symlink(data / "fbx/ufbx_maya_game_sausage_7500_binary_wiggle.fbx", d / "sausage.fbx");
   std::ofstream(d / "notes.txt") << "not a clip, not an assimp extension\n";
+  // A mesh without animation next to the clips: skipped quietly, not a failure.
+  std::ofstream(d / "sub/triangle.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
   if (with_bad_file) std::ofstream(d / "sub/broken.bvh") << "HIERARCHY\nROOT Hips\n{\n  OFFSET 0 0\n";
   return d;
 }
@@ -61,6 +63,9 @@ TEST(EvalCli, WritesCsvSummaryAndPlotsForADirectory) {
   EXPECT_EQ(slurp(out / "errors.csv").find("nan"), std::string::npos);
   const auto j = nlohmann::json::parse(slurp(out / "summary.json"));
   EXPECT_EQ(j["clips_evaluated"], 4);
+  EXPECT_EQ(j["failed"].size(), 0u);
+  ASSERT_EQ(j["skipped"].size(), 1u);
+  EXPECT_NE(j["skipped"][0].get<std::string>().find("triangle.obj"), std::string::npos);
   EXPECT_EQ(j["results"].size(), 4u);  // 2 methods × 2 spacings
   EXPECT_EQ(j["results"][0]["keep_every"], 2);
   EXPECT_TRUE(j.contains("version") && j.contains("seconds") && j.contains("inputs"));
@@ -90,6 +95,7 @@ TEST(EvalCli, ShardsMergedEqualASingleRun) {
   EXPECT_EQ(jm["worst_clip"], js["worst_clip"]);
   EXPECT_EQ(jm["clips_evaluated"], js["clips_evaluated"]);
   EXPECT_EQ(jm["files"], js["files"]);
+  EXPECT_EQ(jm["skipped"], js["skipped"]);
   EXPECT_TRUE(fs::exists(merged / "error_vs_spacing.png"));
 
   // Merging a shard twice is refused.

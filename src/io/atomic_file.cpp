@@ -81,6 +81,14 @@ Status AtomicOutput::commit() {
   return Ok{};
 }
 
+ScopedTempFile::ScopedTempFile(std::filesystem::path path) : path_(std::move(path)), slot_(register_live(path_.string())) {}
+
+ScopedTempFile::~ScopedTempFile() {
+  std::error_code ec;
+  std::filesystem::remove(path_, ec);
+  unregister_live(slot_);
+}
+
 Status write_file_atomically(const std::filesystem::path& target, const std::function<Status(std::ostream&)>& write) {
   AtomicOutput out(target);
   {

@@ -34,6 +34,23 @@ class AtomicOutput {
   bool committed_ = false;
 };
 
+// A file some writer creates on its own next to a temporary output (assimp's .gltf
+// exporter writes its .bin buffer so): removed when this goes out of scope, and by
+// the interrupt handler while it lives. Construct it before the writer runs.
+class ScopedTempFile {
+ public:
+  explicit ScopedTempFile(std::filesystem::path path);
+  ~ScopedTempFile();
+  ScopedTempFile(const ScopedTempFile&) = delete;
+  ScopedTempFile& operator=(const ScopedTempFile&) = delete;
+
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+  int slot_ = -1;
+};
+
 // Writes `target` through a stream, atomically. `write` returns an error to abort
 // (nothing is left behind); a stream failure is reported as an error naming the file.
 Status write_file_atomically(const std::filesystem::path& target, const std::function<Status(std::ostream&)>& write);

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -45,6 +46,7 @@ class ExitCodes : public ::testing::Test {
     fs::remove_all(dir_);
     fs::create_directories(dir_ / "adir");
     fs::create_directories(dir_ / "emptydir");
+    fs::create_directories(dir_ / "taken.bvh");  // a directory where an output file should go
     const std::string good = (dir_ / "good.bvh").string();
     const auto r = run_cli("synth " + good + " --kind smooth --seconds 1 --fps 30 --joints 3 -q");
     ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -64,7 +66,10 @@ class ExitCodes : public ::testing::Test {
     const std::string dir = dir_.string();
     for (const Case& c : cases) {
       const std::string args = expand(c.args, dir);
+      const auto start = std::chrono::steady_clock::now();
       const auto r = run_cli(args);
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      EXPECT_LT(seconds, 5.0) << args << ": failures are found before any real work (Frames: 4e9 included)";
       EXPECT_EQ(r.exit_code, c.exit_code) << args << "\n" << r.err;
       EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), c.lines) << args << "\n" << r.err;
       EXPECT_EQ(r.err.rfind("rotinterp: ", 0), 0u) << args << "\n" << r.err;
@@ -80,7 +85,7 @@ class ExitCodes : public ::testing::Test {
         const std::string name = e.path().filename().string();
         EXPECT_TRUE(name == "adir" || name == "emptydir" || name == "good.bvh" || name == "good.bvh.synth" ||
                     name == "beyond.bvh" || name == "huge.bvh" || name == "empty.bvh" || name == "notes.xyz" ||
-                    name == "bad.bvh" || name == "afile" || name == "ev_partial")
+                    name == "bad.bvh" || name == "afile" || name == "taken.bvh" || name == "ev_partial")
             << args << " left " << name;
       }
     }
@@ -129,6 +134,8 @@ TEST_F(ExitCodes, ResampleFailuresLeaveNoOutput) {
       {"resample @/good.bvh -o @/afile/out.bvh --fps 60", 1, {"@/afile/out.bvh: cannot write"}},
       {"resample @/good.bvh -o @/nodir/out.bvh --fps 60", 1, {"@/nodir/out.bvh: cannot write"}, "@/nodir"},
       {"resample @/good.bvh -o @/afile/out.gltf --fps 60", 1, {"@/afile/out.gltf"}},
+      {"resample @/good.bvh -o @/taken.bvh --fps 60", 1, {"@/taken.bvh: cannot write"}},
+      {"synth @/taken.bvh", 1, {"@/taken.bvh: cannot write"}},
       {"resample @/good.bvh --fps 60", 2, {"--output is required"}},
       {"resample -o @/out.bvh", 2, {"IN is required"}, "@/out.bvh"},
   });

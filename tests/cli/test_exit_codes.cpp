@@ -55,6 +55,7 @@ class ExitCodes : public ::testing::Test {
     ASSERT_NE(at, std::string::npos);
     write_text(dir_ / "beyond.bvh", text.substr(0, at) + "Frames: 100" + text.substr(eol));
     write_text(dir_ / "huge.bvh", text.substr(0, at) + "Frames: 4000000000" + text.substr(eol));
+    write_text(dir_ / "nospec.bvh", text);  // a synth clip without its .synth spec
     write_text(dir_ / "empty.bvh", "");
     write_text(dir_ / "notes.xyz", "this is not a motion clip\n");
     write_text(dir_ / "bad.bvh", "HIERARCHY\nROOT Hips\n{\n  OFFSET 0 0\n");
@@ -85,7 +86,7 @@ class ExitCodes : public ::testing::Test {
         const std::string name = e.path().filename().string();
         EXPECT_TRUE(name == "adir" || name == "emptydir" || name == "good.bvh" || name == "good.bvh.synth" ||
                     name == "beyond.bvh" || name == "huge.bvh" || name == "empty.bvh" || name == "notes.xyz" ||
-                    name == "bad.bvh" || name == "afile" || name == "taken.bvh" || name == "ev_partial")
+                    name == "bad.bvh" || name == "afile" || name == "taken.bvh" || name == "nospec.bvh" || name == "ev_partial")
             << args << " left " << name;
       }
     }
@@ -177,6 +178,7 @@ TEST_F(ExitCodes, EvalFailuresNameTheInput) {
       {"eval @/empty.bvh -o @/ev_partial -q", 3, {"@/empty.bvh: the file is empty", "1 of 1 files had failures"}, "", 2},
       {"eval @/huge.bvh -o @/ev_partial -q", 3, {"@/huge.bvh: 'Frames: 4000000000'", "1 of 1 files"}, "", 2},
       {"eval @/bad.bvh -o @/ev_partial -q", 3, {"@/bad.bvh: "}, "", 2},
+      {"eval @/nospec.bvh --truth -o @/ev_partial -q", 3, {"@/nospec.bvh"}, "", 2},
   });
   fs::remove_all(dir_ / "ev_partial");
 }

@@ -28,10 +28,12 @@ namespace {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
-// Starts the CLI with `args` (no shell), stdout and stderr to /dev/null.
-pid_t spawn(const std::vector<std::string>& args) {
+// Starts the CLI with `args` (no shell), stdout and stderr to /dev/null; with
+// `ignored` (a signal) ignored as under nohup.
+pid_t spawn(const std::vector<std::string>& args, int ignored = 0) {
   const pid_t pid = ::fork();
   if (pid == 0) {
+    if (ignored != 0) std::signal(ignored, SIG_IGN);
     std::vector<char*> argv;
     static std::string cli = ROTINTERP_CLI;
     argv.push_back(cli.data());
@@ -120,8 +122,8 @@ class Interrupt : public ::testing::Test {
   // returns its exit status; `delay` later when given.
   int interrupt_while_writing(const std::vector<std::string>& args, const fs::path& watched, int sig,
                               std::chrono::milliseconds delay = std::chrono::milliseconds(0),
-                              const std::string& suffix = "") {
-    const pid_t pid = spawn(args);
+                              const std::string& suffix = "", int ignored = 0) {
+    const pid_t pid = spawn(args, ignored);
     EXPECT_GT(pid, 0);
     const bool writing = wait_until(pid, [&] { return has_temp(watched, suffix); }, 60.0);
     EXPECT_TRUE(writing) << "no temporary file appeared in " << watched;
@@ -143,6 +145,24 @@ TEST_F(Interrupt, SigintDuringABvhWriteLeavesNoFileAndExits130) {
       interrupt_while_writing({"resample", clip().string(), "-o", target.string(), "--fps", "960", "-q"}, out_, SIGINT);
   EXPECT_EQ(status, 128 + SIGINT);
   EXPECT_EQ(names_in(out_), std::vector<std::string>{});
+}
+
+TEST_F(Interrupt, SighupDuringABvhWriteLeavesNoFileAndExits129) {
+  const fs::path target = out_ / "fast.bvh";
+  const int status =
+      interrupt_while_writing({"resample", clip().string(), "-o", target.string(), "--fps", "960", "-q"}, out_, SIGHUP);
+  EXPECT_EQ(status, 128 + SIGHUP);
+  EXPECT_EQ(names_in(out_), std::vector<std::string>{});
+}
+
+TEST_F(Interrupt, AHangupIgnoredAsUnderNohupDoesNotStopTheRun) {
+  const fs::path target = out_ / "fast.bvh";
+  const int status = interrupt_while_writing(
+      {"resample", clip().string(), "-o", target.string(), "--fps", "960", "-q"}, out_, SIGHUP,
+      std::chrono::milliseconds(0), "", SIGHUP);
+  EXPECT_EQ(status, 0);
+  EXPECT_EQ(names_in(out_), std::vector<std::string>{"fast.bvh"});
+  EXPECT_NE(test::slurp(target).find("Frames: 19201\n"), std::string::npos);
 }
 
 TEST_F(Interrupt, SigtermDuringAGltfExportLeavesNeitherGltfNorBuffer) {

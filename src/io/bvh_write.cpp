@@ -2,6 +2,7 @@
 // previous frame, 6 decimals.
 #include "rotinterp/io/bvh.h"
 #include "rotinterp/io/euler.h"
+#include "fixed6.h"
 
 #include <charconv>
 #include <functional>
@@ -29,13 +30,12 @@ int axis_of(Channel c) { return static_cast<int>(c) % 3; }
 Channel rotation_channel(int axis) { return static_cast<Channel>(3 + axis); }
 Channel position_channel(int axis) { return static_cast<Channel>(axis); }
 
-void append_number(std::string& out, double v, bool fixed6) {
+void append_number(std::string& out, double v, bool fixed) {
   char buf[64];
-  if (fixed6) {
+  if (fixed) {
     // Round first so that a value that prints as zero prints as "0.000000", not "-0.000000".
     if (std::abs(v) < 5e-7) v = 0.0;
-    auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, 6);
-    out.append(buf, r.ptr);
+    out.append(buf, write_fixed6(buf, buf + sizeof buf, v));
   } else {
     auto r = std::to_chars(buf, buf + sizeof buf, v);  // shortest text that reads back exactly
     out.append(buf, r.ptr);

@@ -16,7 +16,6 @@
 #include <map>
 #include <new>
 #include <set>
-#include <sstream>
 
 namespace rotinterp {
 
@@ -173,13 +172,16 @@ Status check_file(const fs::path& path, const std::string& label) {
   return Ok{};
 }
 
+// The whole file in one read (BVH text is parsed in place).
 Result<std::string> read_text(const fs::path& path, const std::string& label) {
-  std::ifstream f(path, std::ios::binary);
+  std::ifstream f(path, std::ios::binary | std::ios::ate);
   if (!f) return make_error(label + ": cannot open for reading");
-  std::ostringstream ss;
-  ss << f.rdbuf();
-  if (!f && !f.eof()) return make_error(label + ": read failed");
-  return ss.str();
+  const std::streamoff size = f.tellg();
+  if (size < 0) return make_error(label + ": cannot read: size unknown");
+  std::string text(static_cast<std::size_t>(size), '\0');
+  f.seekg(0);
+  if (!f.read(text.data(), size)) return make_error(label + ": read failed");
+  return text;
 }
 
 bool looks_like_bvh(const std::string& text) {
@@ -206,7 +208,7 @@ Result<std::size_t> select_animation(const aiScene* scene, const std::string& wa
   return make_error(label + ": no animation named '" + want + "' (the file has " + names + ")");
 }
 
-// ---- BVH: our pass, cross-checked against assimp ------------------------------------
+// ---- BVH: our pass, optionally cross-checked against assimp ------------------------------------
 
 // assimp parses BVH values and builds rotations in 32-bit float: its keys differ from
 // the exact ones by up to ~5e-5° on the real clips (370° angles). More than this
@@ -214,8 +216,8 @@ Result<std::size_t> select_animation(const aiScene* scene, const std::string& wa
 constexpr double kAssimpAgreementRadians = 1e-3 * kPi / 180.0;
 
 // The clip comes from our pass: the file's values in double precision (assimp's
-// float keys would use up half of the 1e-4° round-trip budget). assimp's reading
-// of the same file must agree: same joints, one key per frame, same rotations
+// float keys would use up half of the 1e-4° round-trip budget). With `anim`
+// (ReadOptions::cross_check_with_assimp), assimp's reading of the same file must agree: same joints, one key per frame, same rotations
 // within float precision, same positions where it keeps them.
 Status fill_bvh(const BvhFile& bvh, const aiAnimation* anim, Clip& clip, const Warnings& warn, const std::string& label) {
   clip = bvh_to_clip(bvh, clip.name);
@@ -468,25 +470,30 @@ Result<ClipFileInfo> load(const fs::path& path, const ReadOptions& options) {
            " declared frames ignored");
   }
 
+  // assimp: every format but BVH; for BVH only as the optional cross-check.
   Assimp::Importer importer;
   importer.SetPropertyBool(AI_CONFIG_IMPORT_NO_SKELETON_MESHES, true);
   importer.SetPropertyBool(AI_CONFIG_IMPORT_FBX_PRESERVE_PIVOTS, options.fold_fbx_helpers);
   const aiScene* scene = nullptr;
   std::string assimp_error;
-  try {
-    scene = importer.ReadFile(path.string(), 0);
-    if (!scene) assimp_error = one_line(importer.GetErrorString());
-  } catch (const std::bad_alloc&) {
-    assimp_error = "out of memory while importing";
-  } catch (const std::exception& e) {
-    assimp_error = one_line(e.what());
+  if (!bvh || options.cross_check_with_assimp) {
+    try {
+      scene = importer.ReadFile(path.string(), 0);
+      if (!scene) assimp_error = one_line(importer.GetErrorString());
+    } catch (const std::bad_alloc&) {
+      assimp_error = "out of memory while importing";
+    } catch (const std::exception& e) {
+      assimp_error = one_line(e.what());
+    }
   }
 
   if (bvh) {
     AnimationSummary s{"", static_cast<double>(bvh->frames - 1) * bvh->frame_time, 1.0 / bvh->frame_time, false,
                        bvh->joints.size()};
     const aiAnimation* anim = nullptr;
-    if (scene && scene->mNumAnimations > 0) {
+    if (!options.cross_check_with_assimp) {
+      // No assimp: nothing to compare.
+    } else if (scene && scene->mNumAnimations > 0) {
       anim = scene->mAnimations[0];
       s.name = anim->mName.C_Str();
     } else {

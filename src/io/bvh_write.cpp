@@ -31,7 +31,7 @@ Channel rotation_channel(int axis) { return static_cast<Channel>(3 + axis); }
 Channel position_channel(int axis) { return static_cast<Channel>(axis); }
 
 void append_number(std::string& out, double v, bool fixed) {
-  char buf[64];
+  char buf[kFixed6MaxChars];
   if (fixed) {
     // Round first so that a value that prints as zero prints as "0.000000", not "-0.000000".
     if (std::abs(v) < 5e-7) v = 0.0;
@@ -209,7 +209,6 @@ Status write_bvh(const Clip& clip, std::ostream& out, const WriteOptions& option
         const Vec3 e = euler_nearest(q, p.triple_axes, previous[j]);
         previous[j] = e;
         for (int i = 0; i < 3; ++i) row[p.columns[static_cast<std::size_t>(p.triple[i])]] = e[i] * (180.0 / kPi);
-        written = euler_to_quat(p.triple_axes, e);
       } else if (!p.reduced_pos.empty()) {
         // One or two distinct axes: complete them to a Tait–Bryan triple, keep the
         // leading angles and check that the dropped one is zero.

@@ -9,13 +9,21 @@
 #include <assimp/config.h>
 #include <assimp/scene.h>
 
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <map>
 #include <new>
 #include <set>
+#include <sstream>
 
 namespace rotinterp {
 
@@ -172,17 +180,48 @@ Status check_file(const fs::path& path, const std::string& label) {
   return Ok{};
 }
 
-// The whole file in one read (BVH text is parsed in place).
-Result<std::string> read_text(const fs::path& path, const std::string& label) {
-  std::ifstream f(path, std::ios::binary | std::ios::ate);
-  if (!f) return make_error(label + ": cannot open for reading");
-  const std::streamoff size = f.tellg();
-  if (size < 0) return make_error(label + ": cannot read: size unknown");
-  std::string text(static_cast<std::size_t>(size), '\0');
-  f.seekg(0);
-  if (!f.read(text.data(), size)) return make_error(label + ": read failed");
-  return text;
-}
+// A file's bytes, memory-mapped read-only (BVH text is parsed in place, without a
+// copy); read into memory where mapping fails.
+class FileText {
+ public:
+  FileText() = default;
+  FileText(const FileText&) = delete;
+  FileText& operator=(const FileText&) = delete;
+  ~FileText() {
+    if (map_) ::munmap(map_, size_);
+  }
+
+  Status open(const fs::path& path, const std::string& label) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return make_error(label + ": cannot open for reading: " + std::strerror(errno));
+    struct stat st {};
+    if (::fstat(fd, &st) == 0 && st.st_size > 0) {
+      void* m = ::mmap(nullptr, static_cast<std::size_t>(st.st_size), PROT_READ, MAP_PRIVATE, fd, 0);
+      if (m != MAP_FAILED) {
+        map_ = m;
+        size_ = static_cast<std::size_t>(st.st_size);
+        ::madvise(map_, size_, MADV_SEQUENTIAL);
+      }
+    }
+    ::close(fd);
+    if (map_) return Ok{};
+    std::ifstream f(path, std::ios::binary);
+    if (!f) return make_error(label + ": cannot open for reading");
+    std::ostringstream ss;
+    ss << f.rdbuf();
+    if (!f && !f.eof()) return make_error(label + ": read failed");
+    copy_ = ss.str();
+    return Ok{};
+  }
+  std::string_view text() const {
+    return map_ ? std::string_view(static_cast<const char*>(map_), size_) : std::string_view(copy_);
+  }
+
+ private:
+  void* map_ = nullptr;
+  std::size_t size_ = 0;
+  std::string copy_;
+};
 
 bool looks_like_bvh(const std::string& text) {
   std::size_t i = 0;
@@ -459,9 +498,9 @@ Result<ClipFileInfo> load(const fs::path& path, const ReadOptions& options) {
     bvh_content = looks_like_bvh(head);
   }
   if (bvh_content) {
-    Result<std::string> text = read_text(path, label);
-    if (!text) return make_error(text.error());
-    Result<BvhFile> parsed = parse_bvh(*text, label);
+    FileText text;
+    if (Status st = text.open(path, label); !st) return make_error(st.error());
+    Result<BvhFile> parsed = parse_bvh(text.text(), label);
     if (!parsed) return make_error(parsed.error());
     bvh = std::move(*parsed);
     info.format = "bvh";

@@ -15,7 +15,7 @@ namespace rotinterp {
 namespace {
 
 std::string fast(double v) {
-  char buf[64];
+  char buf[kFixed6MaxChars];
   return std::string(buf, write_fixed6(buf, buf + sizeof buf, v));
 }
 

@@ -1,5 +1,6 @@
 #include "rotinterp/render/comparison.h"
 
+#include "rotinterp/clip/sampling.h"
 #include "rotinterp/core/rotation.h"
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/interp/slerp.h"
@@ -94,13 +95,6 @@ Vec3 bone_direction(const Skeleton& skeleton, int joint) {
   return best.norm() > 0.0 ? Vec3(best.normalized()) : Vec3::UnitX();
 }
 
-std::vector<std::size_t> key_frames(std::size_t frames, std::size_t every) {
-  std::vector<std::size_t> keys;
-  for (std::size_t k = 0; k < frames; k += every) keys.push_back(k);
-  if (!keys.empty() && keys.back() != frames - 1) keys.push_back(frames - 1);
-  return keys;
-}
-
 // Mean and max angular error of a frame, degrees, over the animated joints (all
 // joints when none is animated).
 struct FrameError {
@@ -129,7 +123,7 @@ struct Rebuild {
     r.reference.assign(r.times.size(), std::vector<Quat>(joints));
     for (std::size_t f = 0; f < r.times.size(); ++f)
       for (std::size_t j = 0; j < joints; ++j) r.reference[f][j] = sample_rotation(clip.rotations[j], r.times[f], r.tolerance);
-    r.keys = key_frames(r.times.size(), keep_every);
+    r.keys = keep_every_indices(r.times.size(), keep_every);
     r.interpolators.resize(methods.size());
     r.animated.resize(joints);
     for (std::size_t j = 0; j < joints; ++j) {
@@ -329,7 +323,7 @@ Result<std::vector<std::size_t>> comparison_frames(const Clip& clip, const Compa
     return frames;
   }
   constexpr std::size_t kDefaultFrames = 8;
-  const auto keys = key_frames(count, std::max<std::size_t>(1, options.keep_every));
+  const auto keys = keep_every_indices(count, std::max<std::size_t>(1, options.keep_every));
   std::vector<std::size_t> midpoints;
   for (std::size_t i = 0; i + 1 < keys.size(); ++i)
     if (keys[i + 1] - keys[i] >= 2) midpoints.push_back((keys[i] + keys[i + 1]) / 2);

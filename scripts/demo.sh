@@ -1,17 +1,25 @@
 #!/usr/bin/env bash
 # Command (1): install what is missing, build in Release, run the main job on the
-# bundled sample and print the paths of what it wrote.
+# bundled sample (resample + eval + render) and print the paths of what it wrote.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j "$(nproc)" --target rotinterp
 out=out/demo
+rm -rf "$out"
 mkdir -p "$out"
-./build/rotinterp methods | tee "$out/methods.txt"
-echo "wrote: $out/methods.txt"
-# The bundled sample (samples/README.md): change its rate, and rebuild it from every 4th frame.
-./build/rotinterp resample samples/walk.bvh -o "$out/walk_50hz.bvh" --fps 50
-echo "wrote: $out/walk_50hz.bvh"
-./build/rotinterp resample samples/walk.bvh -o "$out/walk_keep4.bvh" --keep-every 4
-echo "wrote: $out/walk_keep4.bvh"
+rotinterp=./build/rotinterp
+sample=samples/walk.bvh   # made by `rotinterp synth` (samples/README.md)
+
+# Resample: a new frame rate, and the clip rebuilt from every 4th frame.
+$rotinterp resample "$sample" -o "$out/walk_50hz.bvh" --fps 50 --quiet
+$rotinterp resample "$sample" -o "$out/walk_keep4.bvh" --keep-every 4 --quiet
+# Eval: every method at key spacings 2, 4, 8, 16 — table on stdout, CSV/JSON/plots in a directory.
+$rotinterp eval "$sample" -o "$out/eval" --quiet
+# Render: three methods side by side for a few frames between keys, a trail and a contact sheet.
+$rotinterp render "$sample" -o "$out/render" --methods slerp,squad,bf --keep-every 8 --frames 20:60:10 \
+  --trail LeftHand --sheet --quiet
+
+echo "wrote:"
+find "$out" -type f | sort | sed 's/^/  /'

@@ -2,6 +2,7 @@
 #include "common.h"
 #include "rotinterp/eval/batch.h"
 #include "rotinterp/eval/inputs.h"
+#include "rotinterp/eval/synth_truth.h"
 #include "rotinterp/interp/interpolator.h"
 
 #include <fmt/core.h>
@@ -28,6 +29,7 @@ struct EvalArgs {
   int subframe = 0;
   double shell_m = kDefaultShellDistanceMetres;
   bool no_plots = false;
+  bool truth = false;
   bool quiet = false;
 };
 
@@ -89,6 +91,7 @@ int run(const EvalArgs& a) {
       o.shard_count = s->second;
     }
     o.plots = !a.no_plots;
+    if (a.truth) o.truth_for = synth_truth;
     o.progress = make_progress("eval", quiet);
     o.on_failure = print_failure;
     report = run_eval(o);
@@ -96,6 +99,9 @@ int run(const EvalArgs& a) {
   }
   if (!report) return fail(report.error());
   if (!quiet) {
+    if (!report->skipped.empty())
+      std::fprintf(stderr, "rotinterp: note: %zu file(s) found in directories hold no animation and were skipped "
+                   "(listed in %s/%s)\n", report->skipped.size(), a.output.c_str(), kSummaryJsonName);
     fmt::print("{}", format_summary_table(report->summary));
     fmt::print("wrote {}/{}, {}/{}{}\n", a.output, kErrorsCsvName, a.output, kSummaryJsonName,
                a.no_plots || report->summary.clips == 0 ? "" : ", and PNG plots");
@@ -132,6 +138,9 @@ void add_eval_command(CLI::App& app, int& exit_code) {
   sub->add_option("--shell-distance", args->shell_m,
                   "Virtual-vertex distance in metres (converted by each clip's unit scale)")
       ->capture_default_str()->check(CLI::PositiveNumber);
+  sub->add_flag("--truth", args->truth,
+                "Compare with the analytic motion of synth clips (CLIP.synth, from rotinterp synth) at every "
+                "frame and subframe; a clip without one fails");
   sub->add_flag("--no-plots", args->no_plots, "Skip the PNG plots");
   sub->add_flag("-q,--quiet", args->quiet, "No progress and no table on stdout");
   sub->callback([args, &exit_code] { exit_code = run(*args); });

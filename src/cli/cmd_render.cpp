@@ -10,7 +10,6 @@
 #include <fmt/core.h>
 
 #include <memory>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -31,46 +30,33 @@ struct RenderArgs {
   bool quiet = false;
 };
 
-std::vector<std::string> split_list(const std::string& text) {
-  std::vector<std::string> out;
-  std::stringstream in(text);
-  for (std::string item; std::getline(in, item, ',');)
-    if (!item.empty()) out.push_back(item);
-  return out;
-}
-
-int usage_error(const std::string& message) {
-  fail(message);
-  return kExitUsage;
-}
-
 int run_render(const RenderArgs& a) {
   render::ComparisonOptions options;
   if (a.methods.empty()) {
     for (const MethodInfo& m : methods()) options.methods.push_back(m.name);
   } else {
-    options.methods = split_list(a.methods);
+    options.methods = split_comma_list(a.methods);
   }
-  if (options.methods.empty()) return usage_error("--methods: no method given (valid: " + method_names() + ")");
+  if (options.methods.empty()) return fail_usage("--methods: no method given (valid: " + method_names() + ")");
   for (const std::string& m : options.methods)
-    if (!find_method(m)) return usage_error("--methods: unknown method '" + m + "' (valid: " + method_names() + ")");
-  if (a.keep_every < 1) return usage_error("--keep-every must be at least 1");
+    if (!find_method(m)) return fail_usage("--methods: unknown method '" + m + "' (valid: " + method_names() + ")");
+  if (a.keep_every < 1) return fail_usage("--keep-every must be at least 1");
   options.keep_every = a.keep_every;
   if (!a.frames.empty()) {
     auto range = render::parse_frame_range(a.frames);
-    if (!range) return usage_error(range.error());
+    if (!range) return fail_usage(range.error());
     options.frames = *range;
   }
   auto size = render::parse_size(a.size);
-  if (!size) return usage_error(size.error());
+  if (!size) return fail_usage(size.error());
   options.width = size->first;
   options.height = size->second;
   if (Status s = render::check_image_size(options.width, options.height, static_cast<int>(options.methods.size()));
       !s)
-    return usage_error("--size: " + s.error());
+    return fail_usage("--size: " + s.error());
   if (!a.backend.empty()) {
     auto backend = render::parse_backend(a.backend);
-    if (!backend) return usage_error("--backend: " + backend.error());
+    if (!backend) return fail_usage("--backend: " + backend.error());
     if (!render::backend_available(*backend)) {
       auto probe = render::create_context(*backend);
       return fail(probe ? std::string(render::backend_name(*backend)) + " is not available" : probe.error());

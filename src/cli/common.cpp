@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -12,6 +13,21 @@ namespace rotinterp::cli {
 int fail(std::string_view message) {
   std::fprintf(stderr, "rotinterp: %.*s\n", static_cast<int>(message.size()), message.data());
   return kExitFailure;
+}
+
+int fail_usage(std::string_view message) {
+  fail(message);
+  return kExitUsage;
+}
+
+std::vector<std::string> split_comma_list(std::string_view text) {
+  std::vector<std::string> items;
+  for (std::size_t begin = 0; begin <= text.size();) {
+    const std::size_t comma = std::min(text.find(',', begin), text.size());
+    if (comma > begin) items.emplace_back(text.substr(begin, comma - begin));
+    begin = comma + 1;
+  }
+  return items;
 }
 
 static bool progress_visible(bool quiet) { return !quiet && ::isatty(STDERR_FILENO); }

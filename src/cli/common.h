@@ -7,6 +7,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace rotinterp::cli {
 
@@ -18,6 +19,11 @@ constexpr int kExitPartial = 3;  // eval: some inputs failed, the rest were writ
 
 // Prints "rotinterp: <message>" on stderr and returns kExitFailure.
 int fail(std::string_view message);
+// The same for a bad option value: returns kExitUsage.
+int fail_usage(std::string_view message);
+
+// "a,b,,c" → {"a", "b", "c"}: the items of a comma-separated option, empty ones dropped.
+std::vector<std::string> split_comma_list(std::string_view text);
 
 // A progress reporter that draws "label  done/total" on stderr when stderr is a
 // terminal and quiet is false; otherwise an empty function.

@@ -129,6 +129,7 @@ Status make_dir(const fs::path& dir) {
 struct Outcome {
   std::vector<ErrorRow> rows;
   std::vector<EvalFailure> failures;
+  bool skipped = false;  // no animation in a file found in a directory
 };
 
 // A clip in flight: read and prepared once (by the first of its tasks to run),
@@ -137,6 +138,7 @@ struct ClipSlot {
   std::once_flag prepared;
   std::shared_ptr<const ClipReference> reference;
   std::optional<EvalFailure> load_failure;
+  bool skipped = false;
   std::vector<std::vector<ErrorRow>> rows;         // per method
   std::vector<std::optional<EvalFailure>> failed;  // per method
   std::size_t remaining = 0;                       // method tasks not yet finished
@@ -182,7 +184,11 @@ Result<EvalReport> run_eval(const EvalOptions& opt) {
   auto prepare = [&](std::size_t i, ClipSlot& slot) {
     auto clip = read_clip(files[i]);
     if (!clip) {
-      slot.load_failure = EvalFailure{files[i], clip.error()};
+      // Only on failure: a mesh found next to the clips is not an error.
+      if (found_in_directory(files[i], opt.inputs) && animation_count(files[i]) == 0)
+        slot.skipped = true;
+      else
+        slot.load_failure = EvalFailure{files[i], clip.error()};
       return;
     }
     ClipEvalOptions copt = opt.clip;
@@ -237,6 +243,7 @@ Result<EvalReport> run_eval(const EvalOptions& opt) {
         slot->failed[m] = std::move(failure);
         if (--slot->remaining == 0) {
           Outcome o;
+          o.skipped = slot->skipped;
           if (slot->load_failure) {
             o.failures.push_back(*slot->load_failure);
           } else {
@@ -269,6 +276,7 @@ Result<EvalReport> run_eval(const EvalOptions& opt) {
       o = std::move(pending[next_to_write]);
       pending.erase(next_to_write);
     }
+    if (o.skipped) report.skipped.push_back(files[next_to_write]);
     for (EvalFailure& f : o.failures) {
       if (opt.on_failure) opt.on_failure(f);
       report.failures.push_back(std::move(f));
@@ -308,7 +316,8 @@ Result<EvalReport> run_eval(const EvalOptions& opt) {
                {"jobs", jobs},
                {"started", started},
                {"seconds", report.seconds},
-               {"failed", failures_json(report.failures)}};
+               {"failed", failures_json(report.failures)},
+               {"skipped", report.skipped}};
   if (Status s = write_outputs(opt.output_dir, std::move(meta), report.summary, opt.plots); !s)
     return make_error(s.error());
   return report;
@@ -398,6 +407,7 @@ Result<EvalReport> merge_eval(const std::vector<fs::path>& dirs, const fs::path&
     try {
       for (const auto& p : j.value("inputs", json::array()))
         if (std::find(inputs.begin(), inputs.end(), p) == inputs.end()) inputs.push_back(p);
+      for (const auto& sk : j.value("skipped", json::array())) report.skipped.push_back(sk.get<std::string>());
       for (const auto& fl : j["failed"])
         report.failures.push_back({fl.at("file").get<std::string>(), fl.at("error").get<std::string>()});
       report.files += j["files"].get<std::size_t>();
@@ -407,8 +417,9 @@ Result<EvalReport> merge_eval(const std::vector<fs::path>& dirs, const fs::path&
       return make_error(f.string() + ": malformed summary (" + std::string(e.what()) + ")");
     }
   }
-  std::sort(report.failures.begin(), report.failures.end(),
-            [](const EvalFailure& a, const EvalFailure& b) { return a.file < b.file; });
+  std::stable_sort(report.failures.begin(), report.failures.end(),
+                   [](const EvalFailure& a, const EvalFailure& b) { return a.file < b.file; });
+  std::sort(report.skipped.begin(), report.skipped.end());
 
   std::vector<std::unique_ptr<ShardReader>> readers;
   for (const fs::path& d : dirs) {
@@ -448,7 +459,8 @@ Result<EvalReport> merge_eval(const std::vector<fs::path>& dirs, const fs::path&
                {"started", utc_now()},
                {"seconds", seconds},
                {"merge_seconds", report.seconds},
-               {"failed", failures_json(report.failures)}};
+               {"failed", failures_json(report.failures)},
+               {"skipped", report.skipped}};
   if (Status s = write_outputs(out_dir, std::move(meta), report.summary, plots); !s) return make_error(s.error());
   return report;
 }

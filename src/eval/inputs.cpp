@@ -1,6 +1,8 @@
 #include "rotinterp/eval/inputs.h"
 
 #include <assimp/Importer.hpp>
+#include <assimp/config.h>
+#include <assimp/scene.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -39,6 +41,19 @@ Result<std::vector<std::string>> discover_inputs(const std::vector<fs::path>& pa
   std::sort(files.begin(), files.end());
   files.erase(std::unique(files.begin(), files.end()), files.end());
   return files;
+}
+
+bool found_in_directory(const std::string& path, const std::vector<fs::path>& named) {
+  for (const fs::path& p : named)
+    if (p.string() == path) return false;
+  return true;
+}
+
+int animation_count(const std::string& path) {
+  Assimp::Importer importer;
+  importer.SetPropertyBool(AI_CONFIG_IMPORT_NO_SKELETON_MESHES, true);
+  const aiScene* scene = importer.ReadFile(path, 0);
+  return scene ? static_cast<int>(scene->mNumAnimations) : -1;
 }
 
 std::vector<std::string> shard_of(const std::vector<std::string>& files, int index, int count) {

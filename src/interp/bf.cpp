@@ -57,8 +57,13 @@ AverageOutcome average_iterate(const Quat* p, const double* w, std::size_t n, Qu
     previous = gn;
     Vec3 step = g;
     if (newton) {
-      const Eigen::FullPivLU<Mat3> lu(H);
-      if (lu.rcond() > 1e-8) step = lu.solve(g);
+      // H = Σ wᵢJ_l⁻¹(vᵢ) is I + O(spread²): a near-zero determinant means the
+      // points are spread over most of the hemisphere; A1 is safe there.
+      bool invertible = false;
+      Mat3 Hinv;
+      double det;
+      H.computeInverseAndDetWithCheck(Hinv, det, invertible, 1e-6);
+      if (invertible) step = Hinv * g;
     }
     m = apply_moving(m, RotVec(step));
   }
@@ -157,7 +162,8 @@ class BfInterpolator final : public detail::SegmentInterpolator<BfInterpolator> 
 
     const bool newton = o.solver == BfSplineOptions::Solver::newton;
     std::vector<Vec3> r(nk), r_try(nk), d(nk), y(nk);
-    std::vector<std::array<Mat3, 3>> G(nk);
+    std::vector<std::array<Mat3, 3>> G(nk), G_try(nk);
+    int short_steps = 0;
     std::vector<Mat3> Dinv(nk);
     double worst = key_residuals(r, newton ? &G : nullptr);
     for (int it = 0; it < o.max_iterations && worst > o.tolerance; ++it) {
@@ -181,20 +187,32 @@ class BfInterpolator final : public detail::SegmentInterpolator<BfInterpolator> 
       } else {
         d = r;
       }
-      // Backtracking: halve the step until the largest key miss decreases.
+      // Backtracking: halve the step until the largest key miss decreases. A
+      // solve that keeps needing short steps is abandoned (make_bf then refines
+      // the knots further and starts again).
       const std::vector<Quat> saved = c_;
       double tried = worst, lambda = 1.0;
-      for (int halving = 0; halving < 30; ++halving, lambda *= 0.5) {
+      for (int halving = 0; halving <= 8; ++halving, lambda *= 0.5) {
         for (std::ptrdiff_t j = 0; j <= n; ++j) c_[j + 1] = apply_fixed(RotVec(lambda * d[j]), saved[j + 1]);
         reflect_ends();
-        tried = key_residuals(r_try, nullptr);
+        // The Jacobian only with the full step (usually taken); a shorter accepted
+        // step gets it below.
+        tried = key_residuals(r_try, newton && halving == 0 ? &G_try : nullptr);
         if (tried < worst) break;
       }
       if (!(tried < worst)) {  // no progress at any step length: keep the best
         c_ = saved;
         break;
       }
-      worst = key_residuals(r, newton ? &G : nullptr);
+      short_steps = lambda < 1.0 / 16.0 ? short_steps + 1 : 0;
+      worst = tried;
+      std::swap(r, r_try);
+      if (newton && lambda == 1.0) {
+        std::swap(G, G_try);
+      } else if (newton) {
+        key_residuals(r, &G);
+      }
+      if (newton && short_steps >= 3) break;
     }
     return worst;
   }

@@ -35,6 +35,8 @@ fs::path clip_dir(const std::string& name, bool with_bad_file) {
   fs::create_symlink(data / "bvh/bvhio_example.bvh", d / "sub/two_frames.bvh");
   fs::create_symlink(data / "fbx/ufbx_maya_game_sausage_7500_binary_wiggle.fbx", d / "sausage.fbx");
   std::ofstream(d / "notes.txt") << "not a clip, not an assimp extension\n";
+  // A mesh without animation next to the clips: skipped quietly, not a failure.
+  std::ofstream(d / "sub/triangle.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
   if (with_bad_file) std::ofstream(d / "sub/broken.bvh") << "HIERARCHY\nROOT Hips\n{\n  OFFSET 0 0\n";
   return d;
 }
@@ -61,6 +63,9 @@ TEST(EvalCli, WritesCsvSummaryAndPlotsForADirectory) {
   EXPECT_EQ(slurp(out / "errors.csv").find("nan"), std::string::npos);
   const auto j = nlohmann::json::parse(slurp(out / "summary.json"));
   EXPECT_EQ(j["clips_evaluated"], 4);
+  EXPECT_EQ(j["failed"].size(), 0u);
+  ASSERT_EQ(j["skipped"].size(), 1u);
+  EXPECT_NE(j["skipped"][0].get<std::string>().find("triangle.obj"), std::string::npos);
   EXPECT_EQ(j["results"].size(), 4u);  // 2 methods × 2 spacings
   EXPECT_EQ(j["results"][0]["keep_every"], 2);
   EXPECT_TRUE(j.contains("version") && j.contains("seconds") && j.contains("inputs"));
@@ -90,6 +95,7 @@ TEST(EvalCli, ShardsMergedEqualASingleRun) {
   EXPECT_EQ(jm["worst_clip"], js["worst_clip"]);
   EXPECT_EQ(jm["clips_evaluated"], js["clips_evaluated"]);
   EXPECT_EQ(jm["files"], js["files"]);
+  EXPECT_EQ(jm["skipped"], js["skipped"]);
   EXPECT_TRUE(fs::exists(merged / "error_vs_spacing.png"));
 
   // Merging a shard twice is refused.
@@ -131,6 +137,41 @@ TEST(EvalCli, SubframesOfSlerpAtEveryFrameMatchTheOriginalsOwnSlerp) {
       EXPECT_GT(e["rms_deg"].get<double>(), 1e-3);
     }
   }
+}
+
+TEST(EvalCli, SynthConstantVelocityClipsMatchTheirAnalyticTruthForSlerpSquadAndBf) {
+  const fs::path dir = fresh_dir("truth"), out = fresh_dir("truth_out");
+  const fs::path clip = dir / "constant.bvh";
+  ASSERT_EQ(run_cli("synth " + clip.string() + " --kind constant --seconds 2 --fps 30 --joints 4 --seed 3 -q").exit_code, 0);
+  const auto r = run_cli("eval " + clip.string() +
+                         " --truth --methods slerp,squad,bf --keep-every 2,4,8 --subframe 3 -q --no-plots -o " +
+                         out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(slurp(out / "summary.json"));
+  EXPECT_EQ(j["options"]["truth"], true);
+  ASSERT_EQ(j["results"].size(), 9u);
+  for (const auto& e : j["results"]) EXPECT_LT(e["max_deg"].get<double>(), 1e-3) << e.dump();
+
+  // Smooth random motion: against the truth between frames, error grows with the spacing.
+  const fs::path smooth = dir / "smooth.bvh";
+  ASSERT_EQ(run_cli("synth " + smooth.string() + " --kind smooth --seconds 3 --fps 30 --joints 3 -q").exit_code, 0);
+  ASSERT_EQ(run_cli("eval " + smooth.string() + " --truth --methods squad --keep-every 2,4,8 --subframe 2 -q " +
+                    "--no-plots -o " + out.string())
+                .exit_code,
+            0);
+  const auto js = nlohmann::json::parse(slurp(out / "summary.json"));
+  double previous = 0;
+  for (const auto& e : js["results"]) {
+    EXPECT_GT(e["rms_deg"].get<double>(), previous);
+    previous = e["rms_deg"].get<double>();
+  }
+
+  // A clip without a synth spec cannot be compared with a truth: named, exit 3.
+  const std::string real = std::string(ROTINTERP_SHARED_DATA) + "/bvh/bvhio_example.bvh";
+  const auto none = run_cli("eval " + real + " " + clip.string() + " --truth --methods slerp -q --no-plots -o " +
+                            out.string());
+  EXPECT_EQ(none.exit_code, 3);
+  EXPECT_NE(none.err.find("bvhio_example.bvh"), std::string::npos) << none.err;
 }
 
 TEST(EvalCli, BadOptionValuesAreUsageErrors) {

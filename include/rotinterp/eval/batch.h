@@ -5,7 +5,9 @@
 // and its reference prepared once, by the first of its pairs — so a long clip is
 // shared by the workers too. Results are written in input order as they complete,
 // and no worker starts clip i until clip i − 2·jobs has been written, so memory is
-// bounded by the clips in flight, not by the batch. A file that fails to load is
+// bounded by the clips in flight, not by the batch. A file found in a directory
+// that holds no animation (a mesh) is skipped quietly (summary.json "skipped"). A
+// file that fails to load is
 // reported (on_failure, summary.json "failed") and skipped; so is a clip on which
 // a method fails, whole, so that every method is compared on the same clips.
 #pragma once
@@ -44,6 +46,7 @@ struct EvalOptions {
 struct EvalReport {
   Summary summary;
   std::vector<EvalFailure> failures;
+  std::vector<std::string> skipped;  // files found in directories that hold no animation
   std::size_t files = 0;           // files in this run (this shard)
   std::size_t clips_evaluated = 0;
   double seconds = 0;              // wall time

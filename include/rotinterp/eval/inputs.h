@@ -17,6 +17,13 @@ namespace rotinterp {
 // of errors.csv. Error for a path that does not exist.
 Result<std::vector<std::string>> discover_inputs(const std::vector<std::filesystem::path>& paths);
 
+// True when `path` was found inside a directory rather than named itself: such a
+// file is skipped quietly when it holds no animation (a mesh next to the clips).
+bool found_in_directory(const std::string& path, const std::vector<std::filesystem::path>& named);
+
+// The number of animations assimp finds in `path`, or −1 when it cannot read it.
+int animation_count(const std::string& path);
+
 // Shard `index` of `count` (1 ≤ index ≤ count): files[i] for i ≡ index − 1 (mod count).
 // Deterministic and balanced; the shards of one list partition it.
 std::vector<std::string> shard_of(const std::vector<std::string>& files, int index, int count);

@@ -40,7 +40,9 @@ struct BfAverageOptions {
 // its two signs are equally near and the mean is not unique — and is refused, as
 // is a result 180° from an input. Weights are divided by their sum; zero-weight
 // inputs are ignored. Starts from the normalized weighted sum (the chordal
-// estimate) and iterates until converged.
+// estimate) and iterates until converged. The iteration uses BF's log on S³ (the
+// signs as aligned, angles up to 2π), which equals the SO(3) log for every input
+// within 180° of the mean — then Σ wᵢ·log(m⁻¹qᵢ) = 0 holds with the core log too.
 Result<Quat> bf_average(const std::vector<Quat>& q, const std::vector<double>& w, const BfAverageOptions& options = {});
 
 // Markley's chordal mean: the unit eigenvector of Σ wᵢ·qᵢqᵢᵀ with the largest
@@ -72,7 +74,7 @@ struct BfSplineOptions {
   Solver solver = Solver::newton;
   // Converged when every key is missed by less than this (rad).
   double tolerance = 1e-13;
-  int max_iterations = 1000;  // S1 needs hundreds on widely spaced keys; Newton < 20
+  int max_iterations = 1000;  // S1 needs hundreds on widely spaced keys; Newton < 10
   // Largest angle (rad) between neighbouring knots. The four control points of a
   // span must lie in one open hemisphere of S³, and interpolating control points
   // overshoot the keys, so neighbours far apart (≳ 80°, and every 180° pair) have
@@ -88,8 +90,9 @@ struct BfSplineOptions {
   BfAverageOptions average;   // for every curve point
 };
 
-// Errors: invalid track; control points that do not converge to 1e-9 rad; a
-// curve point whose control points do not fit a hemisphere.
+// Errors: invalid track; control points that do not converge to 1e-9 rad even at
+// the finest refinement (not seen in the test suite, which includes 10⁶
+// adversarial key pairs).
 Result<std::unique_ptr<Interpolator>> make_bf(const RotationTrack& track, const BfSplineOptions& options = {});
 
 }  // namespace rotinterp

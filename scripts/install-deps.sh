@@ -16,6 +16,7 @@ packages=(
   libosmesa6-dev libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri   # offscreen rendering
   libgtest-dev libgmock-dev libbenchmark-dev   # tests and benchmarks
   libglm-dev               # test-only reference for squad
+  time                     # /usr/bin/time: peak memory in bench/memory.sh
 )
 missing=()
 for p in "${packages[@]}"; do

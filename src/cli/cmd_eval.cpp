@@ -67,7 +67,7 @@ int run(const EvalArgs& a) {
       for (const MethodInfo& m : methods()) o.clip.methods.push_back(m.name);
     } else {
       for (const std::string& m : split_list(a.methods)) {
-        if (!find_method(m)) return usage("unknown method '" + m + "' (valid: " + method_names() + ")");
+        if (!find_method(m)) return usage("--methods: unknown method '" + m + "' (valid: " + method_names() + ")");
         if (std::find(o.clip.methods.begin(), o.clip.methods.end(), m) == o.clip.methods.end())
           o.clip.methods.push_back(m);
       }

@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <memory>
 
 namespace rotinterp::cli {
@@ -24,9 +25,11 @@ void add_methods_command(CLI::App& app, int& exit_code) {
                        {"coordinate_invariant", m.coordinate_invariant}});
       fmt::print("{}\n", out.dump(2));
     } else {
-      fmt::print("{:<8} {:<10} {:<10} {}\n", "method", "continuity", "invariant", "description");
+      std::size_t width = 6;  // "method"
+      for (const MethodInfo& m : methods()) width = std::max(width, m.name.size());
+      fmt::print("{:<{}} {:<10} {:<10} {}\n", "method", width, "continuity", "invariant", "description");
       for (const MethodInfo& m : methods())
-        fmt::print("{:<8} C{:<9} {:<10} {}\n", m.name, m.continuity, m.coordinate_invariant ? "yes" : "no",
+        fmt::print("{:<{}} C{:<9} {:<10} {}\n", m.name, width, m.continuity, m.coordinate_invariant ? "yes" : "no",
                    m.description);
     }
     exit_code = kExitOk;

@@ -48,12 +48,6 @@ bool parse_seconds(const std::string& text, std::optional<double>& out) {
   return true;
 }
 
-bool known_output_extension(const std::filesystem::path& p) {
-  std::string ext = p.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext == ".bvh" || ext == ".fbx" || ext == ".glb" || ext == ".gltf" || ext == ".dae";
-}
-
 bool valid_bvh_order(std::string order) {
   std::sort(order.begin(), order.end());
   return order == "XYZ";
@@ -104,7 +98,7 @@ int run_resample(const ResampleArgs& a) {
     opt.range = r;
   }
   if (!valid_bvh_order(a.bvh_order)) return usage_error("--bvh-order '" + a.bvh_order + "' must be a permutation of XYZ, e.g. ZXY");
-  if (!known_output_extension(a.output))
+  if (!can_write_format(a.output))
     return usage_error("output '" + a.output + "': unknown format (use .bvh, .fbx, .glb, .gltf or .dae)");
 
   // Stage names on the progress line (reading and writing long clips take seconds).

@@ -61,12 +61,27 @@ int run_synth(const SynthArgs& a) {
       return usage_error("--joints '" + a.joints + "' must be a whole number from 1 to 10000");
     o.joints = static_cast<int>(n);
   }
+  if (!can_write_format(a.output))
+    return usage_error("output '" + a.output + "': unknown format (use .bvh, .fbx, .glb, .gltf or .dae)");
   auto clip = make_synth_clip(o);
   if (!clip) return usage_error(clip.error());
-  if (Status s = write_clip(*clip, a.output); !s) return fail(s.error());
   // The spec next to the clip, so the analytic truth can be rebuilt (eval --truth).
+  // An older spec is moved aside while the clip is written: put back if the write
+  // fails, dropped if it succeeds or the run is interrupted, so a new clip never
+  // sits beside the spec of another one.
   const std::filesystem::path spec_path = synth_spec_path(a.output);
   const std::string spec = synth_spec(o);
+  {
+    AtomicOutput old_spec(spec_path);
+    std::error_code ec;
+    const bool had_spec = std::filesystem::exists(spec_path, ec);
+    if (had_spec) std::filesystem::rename(spec_path, old_spec.temp_path(), ec);
+    if (ec) return fail(spec_path.string() + ": cannot replace: " + ec.message());
+    if (Status s = write_clip(*clip, a.output); !s) {
+      if (had_spec) (void)old_spec.commit();
+      return fail(s.error());
+    }
+  }
   if (Status s = write_file_atomically(spec_path, [&](std::ostream& os) -> Status {
         os << spec << "\n";
         return Ok{};

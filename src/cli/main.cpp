@@ -7,6 +7,7 @@
 
 #include <cstdio>
 #include <exception>
+#include <string>
 
 int main(int argc, char** argv) {
   using namespace rotinterp::cli;
@@ -36,7 +37,11 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "rotinterp: %s\nRun 'rotinterp --help' for usage.\n", e.what());
+    // One line, like every other error (CLI11 messages may span several).
+    std::string message = e.what();
+    for (char& c : message)
+      if (c == '\n' || c == '\r') c = ' ';
+    std::fprintf(stderr, "rotinterp: %s (run 'rotinterp --help' for usage)\n", message.c_str());
     return kExitUsage;
   } catch (const std::bad_alloc&) {
     return fail("out of memory");

@@ -157,7 +157,11 @@ Result<EvalReport> run_eval(const EvalOptions& opt) {
     return make_error("shard must be I/N with 1 ≤ I ≤ N");
   auto all = discover_inputs(opt.inputs);
   if (!all) return make_error(all.error());
-  if (all->empty()) return make_error("no input files found (looked for every format assimp imports)");
+  if (all->empty()) {
+    std::string where;
+    for (const fs::path& p : opt.inputs) where += (where.empty() ? "" : ", ") + p.string();
+    return make_error(where + ": no clip files found (looked for every format assimp imports)");
+  }
   const std::vector<std::string> files = shard_of(*all, opt.shard_index, opt.shard_count);
   if (Status s = make_dir(opt.output_dir); !s) return make_error(s.error());
 

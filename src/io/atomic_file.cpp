@@ -81,6 +81,14 @@ Status AtomicOutput::commit() {
   return Ok{};
 }
 
+ScopedTempFile::ScopedTempFile(std::filesystem::path path) : path_(std::move(path)), slot_(register_live(path_.string())) {}
+
+ScopedTempFile::~ScopedTempFile() {
+  std::error_code ec;
+  std::filesystem::remove(path_, ec);
+  unregister_live(slot_);
+}
+
 Status write_file_atomically(const std::filesystem::path& target, const std::function<Status(std::ostream&)>& write) {
   AtomicOutput out(target);
   {
@@ -97,8 +105,12 @@ void install_interrupt_cleanup() {
   struct sigaction sa {};
   sa.sa_handler = remove_live_and_exit;
   sigemptyset(&sa.sa_mask);
-  sigaction(SIGINT, &sa, nullptr);
-  sigaction(SIGTERM, &sa, nullptr);
+  for (int sig : {SIGINT, SIGTERM, SIGHUP}) {
+    // A signal the caller ignores stays ignored (nohup, background jobs of a script).
+    struct sigaction old {};
+    if (sigaction(sig, nullptr, &old) == 0 && old.sa_handler == SIG_IGN) continue;
+    sigaction(sig, &sa, nullptr);
+  }
 }
 
 }  // namespace rotinterp

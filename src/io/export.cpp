@@ -140,6 +140,9 @@ Status export_with_assimp(const Clip& clip, const std::filesystem::path& path, c
   if (Status s = clip.validate(); !s) return make_error(label + ": cannot write an invalid clip: " + s.error());
   const std::unique_ptr<aiScene> scene = build_scene(clip);
   AtomicOutput out(path);
+  // A .gltf comes with a .bin buffer that assimp names after the temporary file;
+  // it is removed on every path out of here (and on SIGINT/SIGTERM) unless renamed.
+  const ScopedTempFile temp_bin(std::filesystem::path(out.temp_path()).replace_extension(".bin"));
   Assimp::Exporter exporter;
   aiReturn ret = aiReturn_FAILURE;
   try {
@@ -147,18 +150,13 @@ Status export_with_assimp(const Clip& clip, const std::filesystem::path& path, c
   } catch (const std::exception& e) {
     return make_error(label + ": assimp could not export: " + one_line(e.what()));
   }
-  // A .gltf comes with a .bin buffer that assimp names after the temporary file:
-  // give it the target's name (atomically too), point the .gltf at it, then commit.
-  const std::filesystem::path temp_bin = std::filesystem::path(out.temp_path()).replace_extension(".bin");
+  // Give the buffer the target's name (atomically too), point the .gltf at it, then commit.
   std::error_code ec;
-  const bool has_bin = std::filesystem::exists(temp_bin, ec);
+  const bool has_bin = std::filesystem::exists(temp_bin.path(), ec);
   AtomicOutput bin_out(std::filesystem::path(path).replace_extension(".bin"));
   if (has_bin) {
-    std::filesystem::rename(temp_bin, bin_out.temp_path(), ec);
-    if (ec) {
-      std::filesystem::remove(temp_bin, ec);
-      return make_error(label + ": cannot write its buffer file: " + ec.message());
-    }
+    std::filesystem::rename(temp_bin.path(), bin_out.temp_path(), ec);
+    if (ec) return make_error(label + ": cannot write its buffer file: " + ec.message());
   }
   if (ret != aiReturn_SUCCESS) return make_error(label + ": assimp could not export: " + one_line(exporter.GetErrorString()));
   if (has_bin) {
@@ -169,7 +167,7 @@ Status export_with_assimp(const Clip& clip, const std::filesystem::path& path, c
       ss << in.rdbuf();
       text = ss.str();
     }
-    const std::string from = "\"" + temp_bin.filename().string() + "\"";
+    const std::string from = "\"" + temp_bin.path().filename().string() + "\"";
     const std::string to = "\"" + bin_out.target().filename().string() + "\"";
     std::size_t replaced = 0;
     for (std::size_t p = text.find(from); p != std::string::npos; p = text.find(from, p + to.size())) {

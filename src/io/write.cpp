@@ -9,10 +9,24 @@
 
 namespace rotinterp {
 
-Status write_clip(const Clip& clip, const std::filesystem::path& path, const WriteOptions& options) {
-  const std::string label = path.string();
+namespace {
+
+std::string lower_extension(const std::filesystem::path& path) {
   std::string ext = path.extension().string();
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+}  // namespace
+
+bool can_write_format(const std::filesystem::path& path) {
+  const std::string ext = lower_extension(path);
+  return ext == ".bvh" || assimp_export_format(ext).has_value();
+}
+
+Status write_clip(const Clip& clip, const std::filesystem::path& path, const WriteOptions& options) {
+  const std::string label = path.string();
+  const std::string ext = lower_extension(path);
   if (ext == ".bvh") {
     return write_file_atomically(path, [&](std::ostream& out) { return write_bvh(clip, out, options, label); });
   }

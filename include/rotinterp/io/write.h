@@ -21,4 +21,8 @@ struct WriteOptions {
 // dae). The clip must be sampled on a uniform grid of frame_time for BVH output.
 Status write_clip(const Clip& clip, const std::filesystem::path& path, const WriteOptions& options = {});
 
+// Whether write_clip writes the format named by `path`'s extension (any case), so
+// that callers can reject an output name before doing the work.
+bool can_write_format(const std::filesystem::path& path);
+
 }  // namespace rotinterp

@@ -1,0 +1,213 @@
+// No lost output: a run interrupted by SIGINT/SIGTERM while it writes leaves
+// neither a partial output nor a temporary file, and exits with 128 + signal
+// (README "Exit codes"). Each test starts a long run on a generated clip, waits
+// until its temporary output file exists (so the signal lands during the write),
+// signals it and inspects the output directory.
+#include "support/run_cli.h"
+
+#include <gtest/gtest.h>
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace rotinterp {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+// Starts the CLI with `args` (no shell), stdout and stderr to /dev/null; with
+// `ignored` (a signal) ignored as under nohup.
+pid_t spawn(const std::vector<std::string>& args, int ignored = 0) {
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    if (ignored != 0) std::signal(ignored, SIG_IGN);
+    std::vector<char*> argv;
+    static std::string cli = ROTINTERP_CLI;
+    argv.push_back(cli.data());
+    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    const int null = ::open("/dev/null", O_WRONLY);
+    ::dup2(null, STDOUT_FILENO);
+    ::dup2(null, STDERR_FILENO);
+    ::execv(cli.c_str(), argv.data());
+    ::_exit(127);
+  }
+  return pid;
+}
+
+// Polls `done` every 0.5 ms until it holds or the child exits or `seconds` pass.
+bool wait_until(pid_t child, const std::function<bool()>& done, double seconds) {
+  const auto end = Clock::now() + std::chrono::duration<double>(seconds);
+  while (Clock::now() < end) {
+    if (done()) return true;
+    int status = 0;
+    if (::waitpid(child, &status, WNOHANG) == child) {
+      ADD_FAILURE() << "the run ended (status " << status << ") before it started writing";
+      return false;
+    }
+    std::this_thread::sleep_for(std::chrono::microseconds(500));
+  }
+  return false;
+}
+
+// A temporary output of io/atomic_file.h: ".<stem>.tmp<pid>.<n>.<r><ext>" (or a
+// side file assimp made from it).
+bool is_temp_name(const std::string& name) { return name.size() > 1 && name[0] == '.' && name.find(".tmp") != std::string::npos; }
+
+std::vector<std::string> names_in(const fs::path& dir) {
+  std::vector<std::string> out;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(dir, ec)) out.push_back(e.path().filename().string());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// Whether `dir` holds a temporary file whose name ends with `suffix`.
+bool has_temp(const fs::path& dir, const std::string& suffix = "") {
+  for (const std::string& n : names_in(dir))
+    if (is_temp_name(n) && n.size() >= suffix.size() && n.compare(n.size() - suffix.size(), suffix.size(), suffix) == 0)
+      return true;
+  return false;
+}
+
+int exit_status(pid_t pid) {
+  int status = 0;
+  if (::waitpid(pid, &status, 0) != pid) return -1;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 1000 + WTERMSIG(status);
+}
+
+// A complete PNG ends with the IEND chunk.
+bool complete_png(const fs::path& p) {
+  const std::string bytes = test::slurp(p);
+  static const std::string iend("\0\0\0\0IEND\xAE\x42\x60\x82", 12);
+  return bytes.size() > 20 && bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0 &&
+         bytes.compare(bytes.size() - iend.size(), iend.size(), iend) == 0;
+}
+
+class Interrupt : public ::testing::Test {
+ protected:
+  // One input for all tests: 20 s of a 31-joint walk at 120 Hz (2 401 frames).
+  static void SetUpTestSuite() {
+    in_dir_ = fs::temp_directory_path() / ("rotinterp_interrupt_in_" + std::to_string(::getpid()));
+    fs::remove_all(in_dir_);
+    fs::create_directories(in_dir_);
+    const auto r = test::run_cli("synth " + clip().string() + " --kind walk --seconds 20 --fps 120 -q");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+  }
+  static void TearDownTestSuite() { fs::remove_all(in_dir_); }
+  static fs::path clip() { return in_dir_ / "walk.bvh"; }
+
+  void SetUp() override {
+    out_ = fs::temp_directory_path() / ("rotinterp_interrupt_out_" + std::to_string(::getpid()) + "_" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(out_);
+    fs::create_directories(out_);
+  }
+  void TearDown() override { fs::remove_all(out_); }
+
+  // Runs `args`, signals it once a temporary file shows up in `watched`, and
+  // returns its exit status; `delay` later when given.
+  int interrupt_while_writing(const std::vector<std::string>& args, const fs::path& watched, int sig,
+                              std::chrono::milliseconds delay = std::chrono::milliseconds(0),
+                              const std::string& suffix = "", int ignored = 0) {
+    const pid_t pid = spawn(args, ignored);
+    EXPECT_GT(pid, 0);
+    const bool writing = wait_until(pid, [&] { return has_temp(watched, suffix); }, 60.0);
+    EXPECT_TRUE(writing) << "no temporary file appeared in " << watched;
+    std::this_thread::sleep_for(delay);
+    ::kill(pid, sig);
+    return exit_status(pid);
+  }
+
+  static fs::path in_dir_;
+  fs::path out_;
+};
+
+fs::path Interrupt::in_dir_;
+
+TEST_F(Interrupt, SigintOrSighupDuringABvhWriteLeavesNoFileAndExits128PlusSignal) {
+  // 2 401 frames at 120 Hz → 960 Hz: 19 201 frames, several MB of text.
+  const fs::path target = out_ / "fast.bvh";
+  for (int sig : {SIGINT, SIGHUP}) {
+    const int status =
+        interrupt_while_writing({"resample", clip().string(), "-o", target.string(), "--fps", "960", "-q"}, out_, sig);
+    EXPECT_EQ(status, 128 + sig);
+    EXPECT_EQ(names_in(out_), std::vector<std::string>{}) << "signal " << sig;
+  }
+}
+
+TEST_F(Interrupt, AHangupIgnoredAsUnderNohupDoesNotStopTheRun) {
+  const fs::path target = out_ / "fast.bvh";
+  const int status = interrupt_while_writing(
+      {"resample", clip().string(), "-o", target.string(), "--fps", "960", "-q"}, out_, SIGHUP,
+      std::chrono::milliseconds(0), "", SIGHUP);
+  EXPECT_EQ(status, 0);
+  EXPECT_EQ(names_in(out_), std::vector<std::string>{"fast.bvh"});
+  EXPECT_NE(test::slurp(target).find("Frames: 19201\n"), std::string::npos);
+}
+
+TEST_F(Interrupt, SigtermDuringAGltfExportLeavesNeitherGltfNorBuffer) {
+  // assimp writes the .bin buffer beside the temporary .gltf: the signal comes
+  // once that buffer exists, and both must go.
+  const fs::path target = out_ / "fast.gltf";
+  const int status = interrupt_while_writing({"resample", clip().string(), "-o", target.string(), "--fps", "480", "-q"},
+                                             out_, SIGTERM, std::chrono::milliseconds(0), ".bin");
+  EXPECT_EQ(status, 128 + SIGTERM);
+  EXPECT_EQ(names_in(out_), std::vector<std::string>{});
+}
+
+TEST_F(Interrupt, AnInterruptedRunKeepsTheOutputOfThePreviousRun) {
+  // Overwriting an existing file: the old one stays whole until the new one is complete.
+  const fs::path target = out_ / "kept.bvh";
+  std::ofstream(target) << "previous output\n";
+  const int status =
+      interrupt_while_writing({"resample", clip().string(), "-o", target.string(), "--fps", "960", "-q"}, out_, SIGTERM);
+  EXPECT_EQ(status, 128 + SIGTERM);
+  EXPECT_EQ(names_in(out_), std::vector<std::string>{"kept.bvh"});
+  EXPECT_EQ(test::slurp(target), "previous output\n");
+}
+
+TEST_F(Interrupt, SigtermDuringEvalLeavesNoCsvNorSummary) {
+  // errors.csv is written through a temporary file from the start of the run;
+  // the signal comes while the clip is being evaluated (bf alone takes seconds).
+  const fs::path dir = out_ / "eval";
+  const int status = interrupt_while_writing(
+      {"eval", clip().string(), "--methods", "bf,squad", "--keep-every", "2,4,8", "-j", "2", "-o", dir.string(), "-q"},
+      dir, SIGTERM, std::chrono::milliseconds(300));
+  EXPECT_EQ(status, 128 + SIGTERM);
+  EXPECT_EQ(names_in(dir), std::vector<std::string>{});
+}
+
+TEST_F(Interrupt, SigintDuringRenderLeavesOnlyCompleteFrames) {
+  if (test::run_cli("render --help").exit_code != 0) GTEST_SKIP() << "built without the renderer";
+  // Frames are committed one by one: those done stay, each complete; no temporary file.
+  const fs::path dir = out_ / "render";
+  fs::create_directories(dir);
+  const int status = interrupt_while_writing({"render", clip().string(), "-o", dir.string(), "--methods", "slerp,squad",
+                                              "--frames", "0:2400:4", "--size", "320x180", "-q"},
+                                             dir, SIGINT);
+  EXPECT_EQ(status, 128 + SIGINT);
+  std::size_t frames = 0;
+  for (const std::string& n : names_in(dir)) {
+    EXPECT_FALSE(is_temp_name(n)) << n;
+    EXPECT_TRUE(complete_png(dir / n)) << n;
+    ++frames;
+  }
+  EXPECT_LT(frames, 601u) << "the run finished before the signal";
+}
+
+}  // namespace
+}  // namespace rotinterp

@@ -6,7 +6,13 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <exception>
+#include <optional>
 #include <string>
+#include <system_error>
+#include <thread>
 
 namespace rotinterp {
 
@@ -57,6 +63,30 @@ class Tokenizer {
 // A full-token double (no trailing garbage); accepts "nan"/"inf" so that the caller
 // can name them.
 bool parse_double(std::string_view token, double& out) {
+  // Fast path for what BVH data rows hold: [-]digits[.digits], at most 15 digits.
+  // The digits make an integer m < 10¹⁵ < 2⁵³ and the point a power 10ᵏ (k ≤ 15),
+  // both exact doubles, so m / 10ᵏ is one correctly rounded division: the same
+  // value std::from_chars gives (Clinger's fast path).
+  {
+    static constexpr double kPow10[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+    const char* p = token.data();
+    const char* const end = p + token.size();
+    const bool negative = p < end && *p == '-';
+    if (negative) ++p;
+    std::uint64_t m = 0;
+    int digits = 0, decimals = 0;
+    const char* const first = p;
+    while (p < end && *p >= '0' && *p <= '9') m = m * 10 + static_cast<unsigned>(*p++ - '0'), ++digits;
+    if (p > first && p < end && *p == '.') {
+      ++p;
+      while (p < end && *p >= '0' && *p <= '9') m = m * 10 + static_cast<unsigned>(*p++ - '0'), ++digits, ++decimals;
+    }
+    if (p == end && p > first && digits <= 15) {
+      const double v = static_cast<double>(m) / kPow10[decimals];
+      out = negative ? -v : v;
+      return true;
+    }
+  }
   if (!token.empty() && token.front() == '+') token.remove_prefix(1);
   if (token.empty()) return false;
   const auto [ptr, ec] = std::from_chars(token.data(), token.data() + token.size(), out);
@@ -296,38 +326,46 @@ Result<BvhFile> parse_bvh(std::string_view text, const std::string& label) {
   for (std::size_t j = 0; j < file.joints.size(); ++j)
     for (std::size_t c = 0; c < file.joints[j].channels.size(); ++c) owner[file.joints[j].first_column + c] = {j, c};
 
+  // Messages are built only on failure: this loop runs once per value (millions).
+  auto where = [&](std::size_t frame, int line) {
+    return label + ": frame " + std::to_string(frame) + " (line " + std::to_string(line) + ")";
+  };
+  auto what = [&](std::size_t column) {
+    const auto [joint, channel] = owner[column];
+    return "joint '" + file.joints[joint].name + "' " + channel_name(file.joints[joint].channels[channel]);
+  };
+  const char* const end = text.data() + text.size();
+  const char* p = text.data() + pos;
   std::size_t frame = 0;
-  while (pos < text.size()) {
-    ++pos;  // past '\n'
+  while (p < end) {
+    ++p;  // past '\n'
     ++line;
-    const std::size_t e = line_end(pos);
-    std::string_view row = text.substr(pos, e - pos);
-    pos = e;
-    std::size_t i = 0;
-    while (i < row.size() && is_space(row[i])) ++i;
-    if (i == row.size()) continue;  // blank line
+    // Values up to the end of the line; '\n' is the only line break.
+    while (p < end && *p != '\n' && is_space(*p)) ++p;
+    if (p == end || *p == '\n') continue;  // blank line
     if (frame == file.frames) {
       ++file.extra_rows;
+      const void* nl = std::memchr(p, '\n', static_cast<std::size_t>(end - p));
+      p = nl ? static_cast<const char*>(nl) : end;
       continue;
     }
     std::size_t n = 0;
-    while (i < row.size()) {
-      std::size_t j = i;
-      while (j < row.size() && !is_space(row[j])) ++j;
-      const std::string_view token = row.substr(i, j - i);
-      const std::string where = label + ": frame " + std::to_string(frame) + " (line " + std::to_string(line) + ")";
+    while (p < end && *p != '\n') {
+      const char* q = p;
+      while (q < end && !is_space(*q)) ++q;
+      const std::string_view token(p, static_cast<std::size_t>(q - p));
       if (n >= file.columns)
-        return make_error(where + ": more than the " + std::to_string(file.columns) + " values the HIERARCHY declares");
+        return make_error(where(frame, line) + ": more than the " + std::to_string(file.columns) +
+                          " values the HIERARCHY declares");
       double v = 0.0;
-      const auto [joint, channel] = owner[n];
-      const std::string what = "joint '" + file.joints[joint].name + "' " +
-                               channel_name(file.joints[joint].channels[channel]);
-      if (!parse_double(token, v)) return make_error(where + ", " + what + ": not a number: '" + std::string(token) + "'");
-      if (!std::isfinite(v)) return make_error(where + ", " + what + ": value is " + std::string(token) + " (not finite)");
+      if (!parse_double(token, v))
+        return make_error(where(frame, line) + ", " + what(n) + ": not a number: '" + std::string(token) + "'");
+      if (!std::isfinite(v))
+        return make_error(where(frame, line) + ", " + what(n) + ": value is " + std::string(token) + " (not finite)");
       file.values.push_back(v);
       ++n;
-      i = j;
-      while (i < row.size() && is_space(row[i])) ++i;
+      p = q;
+      while (p < end && *p != '\n' && is_space(*p)) ++p;
     }
     if (n != file.columns)
       return make_error(label + ": frame " + std::to_string(frame) + " (line " + std::to_string(line) + ") has " +
@@ -348,6 +386,42 @@ Skeleton bvh_skeleton(const BvhFile& file) {
   return s;
 }
 
+namespace {
+
+struct RotationLayout {
+  std::vector<std::size_t> column;  // value column of each rotation channel, in order
+  std::vector<int> axis;
+};
+
+// Frames [f0, f1) of every joint, row by row (the values are row-major: going
+// joint by joint would stream the whole table once per joint). Each rotation is
+// the product of the joint's rotation channels (as BvhFile::rotation), normalized
+// and on the side of the previous frame's key within the range.
+void convert_frames(const BvhFile& file, const std::vector<RotationLayout>& layouts, std::size_t f0, std::size_t f1,
+                    Clip& clip) {
+  const std::size_t n = file.joints.size();
+  for (std::size_t f = f0; f < f1; ++f) {
+    const double* row = file.values.data() + f * file.columns;
+    for (std::size_t j = 0; j < n; ++j) {
+      const RotationLayout& l = layouts[j];
+      Quat q = Quat::Identity();
+      for (std::size_t i = 0; i < l.column.size(); ++i) {
+        const double half = 0.5 * (row[l.column[i]] * (kPi / 180.0));
+        Quat a(std::cos(half), 0.0, 0.0, 0.0);
+        a.vec()[l.axis[i]] = std::sin(half);
+        q = q * a;
+      }
+      q.normalize();  // a product of unit quaternions: its norm is 1 up to round-off
+      std::vector<Quat>& keys = clip.rotations[j].keys;
+      if (f > f0 && q.dot(keys[f - 1]) < 0.0) q.coeffs() = -q.coeffs();
+      keys[f] = q;
+      if (clip.translations[j]) clip.translations[j]->keys[f] = file.translation(f, j);
+    }
+  }
+}
+
+}  // namespace
+
 Clip bvh_to_clip(const BvhFile& file, const std::string& name) {
   Clip clip;
   clip.name = name;
@@ -356,25 +430,56 @@ Clip bvh_to_clip(const BvhFile& file, const std::string& name) {
   clip.frame_time_text = file.frame_time_text;
   clip.source_format = "bvh";
   const std::size_t n = file.joints.size();
+  const std::size_t frames = file.frames;
+  std::vector<double> times(frames);
+  for (std::size_t f = 0; f < frames; ++f) times[f] = static_cast<double>(f) * file.frame_time;
+  std::vector<RotationLayout> layouts(n);
   clip.rotations.resize(n);
   clip.translations.resize(n);
   for (std::size_t j = 0; j < n; ++j) {
-    RotationTrack& r = clip.rotations[j];
-    r.times.resize(file.frames);
-    r.keys.resize(file.frames);
-    for (std::size_t f = 0; f < file.frames; ++f) {
-      r.times[f] = static_cast<double>(f) * file.frame_time;
-      r.keys[f] = file.rotation(f, j);
-    }
-    r.make_sign_continuous();
-    if (file.has_position_channels(j)) {
-      TranslationTrack t;
-      t.times = r.times;
-      t.keys.resize(file.frames);
-      for (std::size_t f = 0; f < file.frames; ++f) t.keys[f] = file.translation(f, j);
-      clip.translations[j] = std::move(t);
+    const BvhJoint& joint = file.joints[j];
+    for (std::size_t c = 0; c < joint.channels.size(); ++c)
+      if (is_rotation(joint.channels[c])) {
+        layouts[j].column.push_back(joint.first_column + c);
+        layouts[j].axis.push_back(axis_of(joint.channels[c]));
+      }
+    clip.rotations[j].times = times;
+    clip.rotations[j].keys.resize(frames);
+    if (file.has_position_channels(j)) clip.translations[j] = TranslationTrack{times, std::vector<Vec3>(frames)};
+  }
+  // Long files convert on two threads, each half of the frames (the work is
+  // trigonometry and first-touch page faults of the new tracks).
+  constexpr std::size_t kMinValuesForThreads = 200000;
+  std::size_t split = frames;
+  std::exception_ptr helper_error;  // e.g. bad_alloc, rethrown here for read_clip to report
+  std::optional<std::thread> helper;
+  if (file.values.size() >= kMinValuesForThreads && std::thread::hardware_concurrency() > 1) {
+    split = frames / 2;
+    try {
+      helper.emplace([&] {
+        try {
+          convert_frames(file, layouts, split, frames, clip);
+        } catch (...) {
+          helper_error = std::current_exception();
+        }
+      });
+    } catch (const std::system_error&) {
+      split = frames;  // no thread available: this one does all the work
     }
   }
+  try {
+    convert_frames(file, layouts, 0, split, clip);
+  } catch (...) {
+    if (helper) helper->join();
+    throw;
+  }
+  if (helper) helper->join();
+  if (helper_error) std::rethrow_exception(helper_error);
+  // The second half joins the first one's sign.
+  if (split > 0 && split < frames)
+    for (RotationTrack& r : clip.rotations)
+      if (r.keys[split].dot(r.keys[split - 1]) < 0.0)
+        for (std::size_t f = split; f < frames; ++f) r.keys[f].coeffs() = -r.keys[f].coeffs();
   return clip;
 }
 

@@ -2,13 +2,20 @@
 // previous frame, 6 decimals.
 #include "rotinterp/io/bvh.h"
 #include "rotinterp/io/euler.h"
+#include "fixed6.h"
 
+#include <algorithm>
+#include <atomic>
 #include <charconv>
+#include <exception>
 #include <functional>
 #include <cmath>
+#include <optional>
 #include <ostream>
 #include <set>
 #include <string>
+#include <system_error>
+#include <thread>
 
 namespace rotinterp {
 
@@ -29,13 +36,12 @@ int axis_of(Channel c) { return static_cast<int>(c) % 3; }
 Channel rotation_channel(int axis) { return static_cast<Channel>(3 + axis); }
 Channel position_channel(int axis) { return static_cast<Channel>(axis); }
 
-void append_number(std::string& out, double v, bool fixed6) {
-  char buf[64];
-  if (fixed6) {
+void append_number(std::string& out, double v, bool fixed) {
+  char buf[kFixed6MaxChars];
+  if (fixed) {
     // Round first so that a value that prints as zero prints as "0.000000", not "-0.000000".
     if (std::abs(v) < 5e-7) v = 0.0;
-    auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, 6);
-    out.append(buf, r.ptr);
+    out.append(buf, write_fixed6(buf, buf + sizeof buf, v));
   } else {
     auto r = std::to_chars(buf, buf + sizeof buf, v);  // shortest text that reads back exactly
     out.append(buf, r.ptr);
@@ -79,6 +85,50 @@ RotationPlan plan_rotation(const std::vector<Channel>& channels) {
       if (seen.insert(p.axes[i]).second) p.reduced_pos.push_back(i);
   }
   return p;
+}
+
+// One joint's channel values at frame f, in its layout's order, into `out`.
+// `previous` is the joint's Euler angles at the frame before (updated).
+Status joint_values(const Clip& clip, std::size_t j, std::size_t f, const std::vector<Channel>& layout,
+                    const RotationPlan& p, Vec3& previous, const std::string& label, double* out) {
+  const Skeleton& sk = clip.skeleton;
+  const RotationTrack& rt = clip.rotations[j];
+  const Quat q = rt.keys[rt.keys.size() == 1 ? 0 : f];
+  Vec3 t = sk.joints[j].offset;
+  if (clip.translations[j]) t = clip.translations[j]->keys[clip.translations[j]->keys.size() == 1 ? 0 : f];
+  for (std::size_t c = 0; c < layout.size(); ++c) out[c] = is_rotation(layout[c]) ? 0.0 : t[axis_of(layout[c])];
+  if (p.triple[0] >= 0) {
+    const Vec3 e = euler_nearest(q, p.triple_axes, previous);
+    previous = e;
+    for (int i = 0; i < 3; ++i) out[p.columns[static_cast<std::size_t>(p.triple[i])]] = e[i] * (180.0 / kPi);
+    return Ok{};
+  }
+  Quat written = Quat::Identity();
+  if (!p.reduced_pos.empty()) {
+    // One or two distinct axes: complete them to a Tait–Bryan triple, keep the
+    // leading angles and check that the dropped one is zero.
+    const int a0 = p.axes[static_cast<std::size_t>(p.reduced_pos[0])];
+    const int a1 = p.reduced_pos.size() > 1 ? p.axes[static_cast<std::size_t>(p.reduced_pos[1])] : (a0 + 1) % 3;
+    const EulerAxes full{a0, a1, 3 - a0 - a1};
+    Vec3 e = euler_nearest(q, full, previous);
+    if (p.reduced_pos.size() == 1) {
+      // A hinge: the twist angle about its axis.
+      const double twist = 2.0 * std::atan2(q.vec()[a0], q.w());
+      e = Vec3(previous[0] + std::remainder(twist - previous[0], kTwoPi), 0.0, 0.0);
+    } else {
+      e[2] = 0.0;
+    }
+    previous = e;
+    for (std::size_t i = 0; i < p.reduced_pos.size(); ++i)
+      out[p.columns[static_cast<std::size_t>(p.reduced_pos[i])]] = e[static_cast<Eigen::Index>(i)] * (180.0 / kPi);
+    written = euler_to_quat(full, e);
+  }
+  const double off = angular_distance(q, written);
+  if (off > kReducedLayoutTolerance)
+    return make_error(label + ": frame " + std::to_string(f) + ", joint '" + sk.joints[j].name +
+                      "': its BVH channels cannot express the rotation (off by " + std::to_string(off * 180.0 / kPi) +
+                      " degrees)");
+  return Ok{};
 }
 
 std::string bvh_name(std::string name) {
@@ -189,59 +239,73 @@ Status write_bvh(const Clip& clip, std::ostream& out, const WriteOptions& option
   out << text;
   text.clear();
 
-  // MOTION rows.
+  // MOTION rows, in blocks of frames: first every joint's values for the block
+  // (joints are independent: two threads for long clips; each joint's Euler angles
+  // follow its previous frame), then the text, row by row.
   std::vector<RotationPlan> plans(n);
   std::vector<Vec3> previous(n, Vec3::Zero());
   for (std::size_t j = 0; j < n; ++j) plans[j] = plan_rotation(layout[j]);
-  std::vector<double> row;
-  for (std::size_t f = 0; f < frames; ++f) {
-    for (std::size_t j : order) {
-      const RotationTrack& rt = clip.rotations[j];
-      const Quat q = rt.keys[rt.keys.size() == 1 ? 0 : f];
-      Vec3 t = sk.joints[j].offset;
-      if (clip.translations[j]) t = clip.translations[j]->keys[clip.translations[j]->keys.size() == 1 ? 0 : f];
-      const RotationPlan& p = plans[j];
-      row.assign(layout[j].size(), 0.0);
-      for (std::size_t c = 0; c < layout[j].size(); ++c)
-        if (!is_rotation(layout[j][c])) row[c] = t[axis_of(layout[j][c])];
-      Quat written = Quat::Identity();
-      if (p.triple[0] >= 0) {
-        const Vec3 e = euler_nearest(q, p.triple_axes, previous[j]);
-        previous[j] = e;
-        for (int i = 0; i < 3; ++i) row[p.columns[static_cast<std::size_t>(p.triple[i])]] = e[i] * (180.0 / kPi);
-        written = euler_to_quat(p.triple_axes, e);
-      } else if (!p.reduced_pos.empty()) {
-        // One or two distinct axes: complete them to a Tait–Bryan triple, keep the
-        // leading angles and check that the dropped one is zero.
-        const int a0 = p.axes[static_cast<std::size_t>(p.reduced_pos[0])];
-        const int a1 = p.reduced_pos.size() > 1 ? p.axes[static_cast<std::size_t>(p.reduced_pos[1])] : (a0 + 1) % 3;
-        const EulerAxes full{a0, a1, 3 - a0 - a1};
-        Vec3 e = euler_nearest(q, full, previous[j]);
-        if (p.reduced_pos.size() == 1) {
-          // A hinge: the twist angle about its axis.
-          const double twist = 2.0 * std::atan2(q.vec()[a0], q.w());
-          e = Vec3(previous[j][0] + std::remainder(twist - previous[j][0], kTwoPi), 0.0, 0.0);
-        } else {
-          e[2] = 0.0;
-        }
-        previous[j] = e;
-        for (std::size_t i = 0; i < p.reduced_pos.size(); ++i)
-          row[p.columns[static_cast<std::size_t>(p.reduced_pos[i])]] = e[static_cast<Eigen::Index>(i)] * (180.0 / kPi);
-        written = euler_to_quat(full, e);
-      }
-      if (p.triple[0] < 0) {
-        const double off = angular_distance(q, written);
-        if (off > kReducedLayoutTolerance)
-          return make_error(label + ": frame " + std::to_string(f) + ", joint '" + sk.joints[j].name +
-                            "': its BVH channels cannot express the rotation (off by " +
-                            std::to_string(off * 180.0 / kPi) + " degrees)");
-      }
-      for (std::size_t c = 0; c < row.size(); ++c) {
-        if (!text.empty() && text.back() != '\n') text += ' ';
-        append_number(text, row[c], true);
+  std::vector<std::size_t> first_column(n);  // of each joint in a row
+  std::size_t columns = 0;
+  for (std::size_t j : order) first_column[j] = columns, columns += layout[j].size();
+  constexpr std::size_t kBlockFrames = 4096;
+  constexpr std::size_t kMinValuesForThreads = 200000;
+  const bool two_threads = frames * columns >= kMinValuesForThreads && n > 1 && std::thread::hardware_concurrency() > 1;
+  std::vector<double> block(std::min(frames, kBlockFrames) * columns);
+  std::vector<Status> status(n, Status(Ok{}));
+  std::vector<std::size_t> failed_frame(n, frames);
+  for (std::size_t f0 = 0; f0 < frames; f0 += kBlockFrames) {
+    const std::size_t f1 = std::min(frames, f0 + kBlockFrames);
+    std::atomic<std::size_t> next{0};
+    auto work = [&] {
+      for (std::size_t j = next++; j < n; j = next++)
+        for (std::size_t f = f0; f < f1; ++f)
+          if (Status s = joint_values(clip, j, f, layout[j], plans[j], previous[j], label,
+                                      block.data() + (f - f0) * columns + first_column[j]);
+              !s) {
+            status[j] = s;
+            failed_frame[j] = f;
+            break;
+          }
+    };
+    std::exception_ptr helper_error;  // e.g. bad_alloc, rethrown here
+    std::optional<std::thread> helper;
+    if (two_threads) {
+      try {
+        helper.emplace([&] {
+          try {
+            work();
+          } catch (...) {
+            helper_error = std::current_exception();
+            next = n;
+          }
+        });
+      } catch (const std::system_error&) {
+        // No thread available: this one does all the work.
       }
     }
-    text += '\n';
+    try {
+      work();
+    } catch (...) {
+      next = n;
+      if (helper) helper->join();
+      throw;
+    }
+    if (helper) helper->join();
+    if (helper_error) std::rethrow_exception(helper_error);
+    // The first failure in row order, as a frame-by-frame writer meets it.
+    const std::size_t* first = nullptr;
+    for (const std::size_t& j : order)
+      if (!status[j] && (!first || failed_frame[j] < failed_frame[*first])) first = &j;
+    if (first) return status[*first];
+    for (std::size_t f = f0; f < f1; ++f) {
+      const double* row = block.data() + (f - f0) * columns;
+      for (std::size_t c = 0; c < columns; ++c) {
+        if (c > 0) text += ' ';
+        append_number(text, row[c], true);
+      }
+      text += '\n';
+    }
     if (text.size() > (1u << 20)) {
       out << text;
       text.clear();

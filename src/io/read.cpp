@@ -9,9 +9,16 @@
 #include <assimp/config.h>
 #include <assimp/scene.h>
 
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <map>
 #include <new>
@@ -173,14 +180,48 @@ Status check_file(const fs::path& path, const std::string& label) {
   return Ok{};
 }
 
-Result<std::string> read_text(const fs::path& path, const std::string& label) {
-  std::ifstream f(path, std::ios::binary);
-  if (!f) return make_error(label + ": cannot open for reading");
-  std::ostringstream ss;
-  ss << f.rdbuf();
-  if (!f && !f.eof()) return make_error(label + ": read failed");
-  return ss.str();
-}
+// A file's bytes, memory-mapped read-only (BVH text is parsed in place, without a
+// copy); read into memory where mapping fails.
+class FileText {
+ public:
+  FileText() = default;
+  FileText(const FileText&) = delete;
+  FileText& operator=(const FileText&) = delete;
+  ~FileText() {
+    if (map_) ::munmap(map_, size_);
+  }
+
+  Status open(const fs::path& path, const std::string& label) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return make_error(label + ": cannot open for reading: " + std::strerror(errno));
+    struct stat st {};
+    if (::fstat(fd, &st) == 0 && st.st_size > 0) {
+      void* m = ::mmap(nullptr, static_cast<std::size_t>(st.st_size), PROT_READ, MAP_PRIVATE, fd, 0);
+      if (m != MAP_FAILED) {
+        map_ = m;
+        size_ = static_cast<std::size_t>(st.st_size);
+        ::madvise(map_, size_, MADV_SEQUENTIAL);
+      }
+    }
+    ::close(fd);
+    if (map_) return Ok{};
+    std::ifstream f(path, std::ios::binary);
+    if (!f) return make_error(label + ": cannot open for reading");
+    std::ostringstream ss;
+    ss << f.rdbuf();
+    if (!f && !f.eof()) return make_error(label + ": read failed");
+    copy_ = ss.str();
+    return Ok{};
+  }
+  std::string_view text() const {
+    return map_ ? std::string_view(static_cast<const char*>(map_), size_) : std::string_view(copy_);
+  }
+
+ private:
+  void* map_ = nullptr;
+  std::size_t size_ = 0;
+  std::string copy_;
+};
 
 bool looks_like_bvh(const std::string& text) {
   std::size_t i = 0;
@@ -206,7 +247,7 @@ Result<std::size_t> select_animation(const aiScene* scene, const std::string& wa
   return make_error(label + ": no animation named '" + want + "' (the file has " + names + ")");
 }
 
-// ---- BVH: our pass, cross-checked against assimp ------------------------------------
+// ---- BVH: our pass, optionally cross-checked against assimp ------------------------------------
 
 // assimp parses BVH values and builds rotations in 32-bit float: its keys differ from
 // the exact ones by up to ~5e-5° on the real clips (370° angles). More than this
@@ -214,8 +255,8 @@ Result<std::size_t> select_animation(const aiScene* scene, const std::string& wa
 constexpr double kAssimpAgreementRadians = 1e-3 * kPi / 180.0;
 
 // The clip comes from our pass: the file's values in double precision (assimp's
-// float keys would use up half of the 1e-4° round-trip budget). assimp's reading
-// of the same file must agree: same joints, one key per frame, same rotations
+// float keys would use up half of the 1e-4° round-trip budget). With `anim`
+// (ReadOptions::cross_check_with_assimp), assimp's reading of the same file must agree: same joints, one key per frame, same rotations
 // within float precision, same positions where it keeps them.
 Status fill_bvh(const BvhFile& bvh, const aiAnimation* anim, Clip& clip, const Warnings& warn, const std::string& label) {
   clip = bvh_to_clip(bvh, clip.name);
@@ -457,9 +498,9 @@ Result<ClipFileInfo> load(const fs::path& path, const ReadOptions& options) {
     bvh_content = looks_like_bvh(head);
   }
   if (bvh_content) {
-    Result<std::string> text = read_text(path, label);
-    if (!text) return make_error(text.error());
-    Result<BvhFile> parsed = parse_bvh(*text, label);
+    FileText text;
+    if (Status st = text.open(path, label); !st) return make_error(st.error());
+    Result<BvhFile> parsed = parse_bvh(text.text(), label);
     if (!parsed) return make_error(parsed.error());
     bvh = std::move(*parsed);
     info.format = "bvh";
@@ -468,25 +509,30 @@ Result<ClipFileInfo> load(const fs::path& path, const ReadOptions& options) {
            " declared frames ignored");
   }
 
+  // assimp: every format but BVH; for BVH only as the optional cross-check.
   Assimp::Importer importer;
   importer.SetPropertyBool(AI_CONFIG_IMPORT_NO_SKELETON_MESHES, true);
   importer.SetPropertyBool(AI_CONFIG_IMPORT_FBX_PRESERVE_PIVOTS, options.fold_fbx_helpers);
   const aiScene* scene = nullptr;
   std::string assimp_error;
-  try {
-    scene = importer.ReadFile(path.string(), 0);
-    if (!scene) assimp_error = one_line(importer.GetErrorString());
-  } catch (const std::bad_alloc&) {
-    assimp_error = "out of memory while importing";
-  } catch (const std::exception& e) {
-    assimp_error = one_line(e.what());
+  if (!bvh || options.cross_check_with_assimp) {
+    try {
+      scene = importer.ReadFile(path.string(), 0);
+      if (!scene) assimp_error = one_line(importer.GetErrorString());
+    } catch (const std::bad_alloc&) {
+      assimp_error = "out of memory while importing";
+    } catch (const std::exception& e) {
+      assimp_error = one_line(e.what());
+    }
   }
 
   if (bvh) {
     AnimationSummary s{"", static_cast<double>(bvh->frames - 1) * bvh->frame_time, 1.0 / bvh->frame_time, false,
                        bvh->joints.size()};
     const aiAnimation* anim = nullptr;
-    if (scene && scene->mNumAnimations > 0) {
+    if (!options.cross_check_with_assimp) {
+      // No assimp: nothing to compare.
+    } else if (scene && scene->mNumAnimations > 0) {
       anim = scene->mAnimations[0];
       s.name = anim->mName.C_Str();
     } else {

@@ -7,8 +7,9 @@
 //    sees it: NaN/inf values, Frame Time ≤ 0 and short data fail fast) and gives the
 //    layout, End Sites, exact Frame Time and every channel value in double precision,
 //    including the position channels assimp drops (any layout but exactly 6
-//    channels). assimp imports the same file and must agree (joints, frames,
-//    rotations within float precision, else a warning). Key k is at k·Frame Time.
+//    channels). Key k is at k·Frame Time. assimp is not needed for BVH; with
+//    ReadOptions::cross_check_with_assimp it also imports the file and must agree
+//    (joints, frames, rotations within float precision, else a warning).
 //  * Other formats: joints are the animated nodes, the bones of meshes and all
 //    their ancestors (the scene root only when its transform is not the identity);
 //    assimp's `$AssimpFbx$` helper nodes are folded into their bone (static and
@@ -45,6 +46,12 @@ struct ReadOptions {
   // off so assimp folds them itself; it then leaves animation channels that target the
   // removed helpers (assimp issues #1068, #4005, #6114) and their motion is lost.
   bool fold_fbx_helpers = true;
+  // BVH: also import the file with assimp and compare its reading with ours (same
+  // joints, one key per frame, rotations within float precision; a disagreement in
+  // rotations, or assimp refusing the file, is a warning). Off by default: the clip
+  // always comes from our own pass, which validates the whole file by itself, and
+  // assimp's import costs more than the rest of a BVH read (README "Formats").
+  bool cross_check_with_assimp = false;
 };
 
 // Reads one animation of `path` into a validated Clip (tracks sign-continuous).

@@ -33,60 +33,45 @@ struct EvalArgs {
   bool quiet = false;
 };
 
-std::vector<std::string> split_list(const std::string& s) {
-  std::vector<std::string> out;
-  std::stringstream ss(s);
-  std::string item;
-  while (std::getline(ss, item, ','))
-    if (!item.empty()) out.push_back(item);
-  return out;
-}
-
-// A bad option value: the message, and the usage exit code.
-int usage(const std::string& message) {
-  fail(message);
-  return kExitUsage;
-}
-
 int run(const EvalArgs& a) {
   const bool quiet = a.quiet;
   auto print_failure = [](const EvalFailure& f) { std::fprintf(stderr, "rotinterp: %s\n", f.message.c_str()); };
   Result<EvalReport> report = make_error("");
   if (!a.merge.empty()) {
-    if (!a.paths.empty()) return usage("eval --merge takes directories after --merge, not input paths");
+    if (!a.paths.empty()) return fail_usage("eval --merge takes directories after --merge, not input paths");
     std::vector<std::filesystem::path> dirs(a.merge.begin(), a.merge.end());
     report = merge_eval(dirs, a.output, !a.no_plots);
     if (report)
       for (const EvalFailure& f : report->failures) print_failure(f);
   } else {
-    if (a.paths.empty()) return usage("eval needs at least one input file or directory");
+    if (a.paths.empty()) return fail_usage("eval needs at least one input file or directory");
     EvalOptions o;
     o.inputs.assign(a.paths.begin(), a.paths.end());
     o.output_dir = a.output;
     if (a.methods == "all") {
       for (const MethodInfo& m : methods()) o.clip.methods.push_back(m.name);
     } else {
-      for (const std::string& m : split_list(a.methods)) {
-        if (!find_method(m)) return usage("--methods: unknown method '" + m + "' (valid: " + method_names() + ")");
+      for (const std::string& m : split_comma_list(a.methods)) {
+        if (!find_method(m)) return fail_usage("--methods: unknown method '" + m + "' (valid: " + method_names() + ")");
         if (std::find(o.clip.methods.begin(), o.clip.methods.end(), m) == o.clip.methods.end())
           o.clip.methods.push_back(m);
       }
     }
     if (o.clip.methods.empty()) return fail("no methods to evaluate");
-    for (const std::string& k : split_list(a.keep_every)) {
+    for (const std::string& k : split_comma_list(a.keep_every)) {
       if (k.empty() || k.size() > 7 || k.find_first_not_of("0123456789") != std::string::npos || std::stoi(k) < 1)
-        return usage("--keep-every '" + k + "' is not a whole number ≥ 1");
+        return fail_usage("--keep-every '" + k + "' is not a whole number ≥ 1");
       o.clip.keep_every.push_back(std::stoi(k));
     }
     std::sort(o.clip.keep_every.begin(), o.clip.keep_every.end());
     o.clip.keep_every.erase(std::unique(o.clip.keep_every.begin(), o.clip.keep_every.end()), o.clip.keep_every.end());
-    if (o.clip.keep_every.empty()) return usage("--keep-every needs at least one value");
+    if (o.clip.keep_every.empty()) return fail_usage("--keep-every needs at least one value");
     o.clip.subframe = a.subframe;
     o.clip.shell_distance_m = a.shell_m;
     o.jobs = a.jobs;
     if (!a.shard.empty()) {
       auto s = parse_shard(a.shard);
-      if (!s) return usage(s.error());
+      if (!s) return fail_usage(s.error());
       o.shard_index = s->first;
       o.shard_count = s->second;
     }

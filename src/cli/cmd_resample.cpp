@@ -32,11 +32,6 @@ struct ResampleArgs {
   bool quiet = false;
 };
 
-int usage_error(const std::string& message) {
-  fail(message);
-  return kExitUsage;
-}
-
 // A number of seconds ≥ 0, or nothing for an empty text.
 bool parse_seconds(const std::string& text, std::optional<double>& out) {
   if (text.empty()) return true;
@@ -57,10 +52,10 @@ int run_resample(const ResampleArgs& a) {
   const auto started = std::chrono::steady_clock::now();
   ResampleOptions opt;
   // Everything that can be checked without the input is checked first (exit 2).
-  if (!a.fps.empty() && !a.keep_every.empty()) return usage_error("give either --fps or --keep-every, not both");
+  if (!a.fps.empty() && !a.keep_every.empty()) return fail_usage("give either --fps or --keep-every, not both");
   if (!a.fps.empty()) {
     auto r = parse_rate(a.fps);
-    if (!r) return usage_error("--fps: " + r.error());
+    if (!r) return fail_usage("--fps: " + r.error());
     opt.fps = *r;
   }
   if (!a.keep_every.empty()) {
@@ -68,38 +63,38 @@ int run_resample(const ResampleArgs& a) {
     errno = 0;
     const long long n = std::strtoll(a.keep_every.c_str(), &end, 10);
     if (end != a.keep_every.c_str() + a.keep_every.size() || errno == ERANGE || n < 1)
-      return usage_error("--keep-every '" + a.keep_every + "' must be a whole number ≥ 1");
+      return fail_usage("--keep-every '" + a.keep_every + "' must be a whole number ≥ 1");
     opt.keep_every = static_cast<std::size_t>(n);
   }
-  if (!find_method(a.method)) return usage_error("unknown method '" + a.method + "' (valid: " + method_names() + ")");
+  if (!find_method(a.method)) return fail_usage("unknown method '" + a.method + "' (valid: " + method_names() + ")");
   opt.method = a.method;
   for (const std::string& item : a.method_for) {
     const std::size_t eq = item.find('=');
     if (eq == std::string::npos || eq == 0 || eq + 1 == item.size())
-      return usage_error("--method-for '" + item + "' must be JOINT=METHOD");
+      return fail_usage("--method-for '" + item + "' must be JOINT=METHOD");
     const std::string joint = item.substr(0, eq), method = item.substr(eq + 1);
     if (!find_method(method))
-      return usage_error("unknown method '" + method + "' in --method-for " + item + " (valid: " + method_names() + ")");
+      return fail_usage("unknown method '" + method + "' in --method-for " + item + " (valid: " + method_names() + ")");
     opt.method_for.emplace_back(joint, method);
   }
   auto translation = parse_translation_interp(a.translation);
-  if (!translation) return usage_error("--translation: " + translation.error());
+  if (!translation) return fail_usage("--translation: " + translation.error());
   opt.translation = *translation;
   if (!a.range.empty()) {
     const std::size_t colon = a.range.find(':');
     std::optional<double> s, e;
     if (colon == std::string::npos || !parse_seconds(a.range.substr(0, colon), s) ||
         !parse_seconds(a.range.substr(colon + 1), e))
-      return usage_error("--range '" + a.range + "' must be START:END in seconds (either may be empty), e.g. 1.5:4");
+      return fail_usage("--range '" + a.range + "' must be START:END in seconds (either may be empty), e.g. 1.5:4");
     TimeRange r;
     if (s) r.start = *s;
     if (e) r.end = *e;
-    if (!(r.end > r.start)) return usage_error("--range '" + a.range + "': END must be after START");
+    if (!(r.end > r.start)) return fail_usage("--range '" + a.range + "': END must be after START");
     opt.range = r;
   }
-  if (!valid_bvh_order(a.bvh_order)) return usage_error("--bvh-order '" + a.bvh_order + "' must be a permutation of XYZ, e.g. ZXY");
+  if (!valid_bvh_order(a.bvh_order)) return fail_usage("--bvh-order '" + a.bvh_order + "' must be a permutation of XYZ, e.g. ZXY");
   if (!can_write_format(a.output))
-    return usage_error("output '" + a.output + "': unknown format (use .bvh, .fbx, .glb, .gltf or .dae)");
+    return fail_usage("output '" + a.output + "': unknown format (use .bvh, .fbx, .glb, .gltf or .dae)");
 
   // Stage names on the progress line (reading and writing long clips take seconds).
   const bool show = !a.quiet && ::isatty(STDERR_FILENO);

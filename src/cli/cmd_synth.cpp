@@ -24,16 +24,11 @@ struct SynthArgs {
   bool quiet = false;
 };
 
-int usage_error(const std::string& message) {
-  fail(message);
-  return kExitUsage;
-}
-
 int run_synth(const SynthArgs& a) {
   const auto started = std::chrono::steady_clock::now();
   SynthOptions o;
   auto kind = parse_synth_kind(a.kind);
-  if (!kind) return usage_error("--kind: " + kind.error());
+  if (!kind) return fail_usage("--kind: " + kind.error());
   o.kind = *kind;
   {
     errno = 0;
@@ -41,30 +36,30 @@ int run_synth(const SynthArgs& a) {
     o.seconds = std::strtod(a.seconds.c_str(), &end);
     if (a.seconds.empty() || end != a.seconds.c_str() + a.seconds.size() || errno == ERANGE || !std::isfinite(o.seconds) ||
         o.seconds <= 0.0)
-      return usage_error("--seconds '" + a.seconds + "' must be a number greater than 0");
+      return fail_usage("--seconds '" + a.seconds + "' must be a number greater than 0");
   }
   auto fps = parse_rate(a.fps);
-  if (!fps) return usage_error("--fps: " + fps.error());
+  if (!fps) return fail_usage("--fps: " + fps.error());
   o.fps = *fps;
   {
     errno = 0;
     char* end = nullptr;
     o.seed = std::strtoull(a.seed.c_str(), &end, 10);
     if (a.seed.empty() || a.seed[0] == '-' || end != a.seed.c_str() + a.seed.size() || errno == ERANGE)
-      return usage_error("--seed '" + a.seed + "' must be a whole number ≥ 0");
+      return fail_usage("--seed '" + a.seed + "' must be a whole number ≥ 0");
   }
   {
     errno = 0;
     char* end = nullptr;
     const long n = std::strtol(a.joints.c_str(), &end, 10);
     if (a.joints.empty() || end != a.joints.c_str() + a.joints.size() || errno == ERANGE || n < 1 || n > 10000)
-      return usage_error("--joints '" + a.joints + "' must be a whole number from 1 to 10000");
+      return fail_usage("--joints '" + a.joints + "' must be a whole number from 1 to 10000");
     o.joints = static_cast<int>(n);
   }
   if (!can_write_format(a.output))
-    return usage_error("output '" + a.output + "': unknown format (use .bvh, .fbx, .glb, .gltf or .dae)");
+    return fail_usage("output '" + a.output + "': unknown format (use .bvh, .fbx, .glb, .gltf or .dae)");
   auto clip = make_synth_clip(o);
-  if (!clip) return usage_error(clip.error());
+  if (!clip) return fail_usage(clip.error());
   // The spec next to the clip, so the analytic truth can be rebuilt (eval --truth).
   // An older spec is moved aside while the clip is written: put back if the write
   // fails, dropped if it succeeds or the run is interrupted, so a new clip never

@@ -41,8 +41,17 @@ Quat exp(const RotVec& r) {
   if (!finite(v)) return Quat::Identity();
   const double theta = v.norm();
   if (!std::isfinite(theta)) return Quat::Identity();  // |v| overflowed: no meaningful angle
-  const double s = sinc_half(theta);
-  Quat q(std::cos(0.5 * theta), s * v.x(), s * v.y(), s * v.z());
+  double c, s;  // cos(θ/2) and sin(θ/2)/θ
+  if (theta < kExpSeriesThreshold) {
+    // Nested Taylor series in h² = (θ/2)² ≤ 1/16, through h¹² (truncation < 5e-20).
+    const double h2 = 0.25 * theta * theta;
+    c = 1.0 - h2 / 2.0 * (1.0 - h2 / 12.0 * (1.0 - h2 / 30.0 * (1.0 - h2 / 56.0 * (1.0 - h2 / 90.0 * (1.0 - h2 / 132.0)))));
+    s = 0.5 * (1.0 - h2 / 6.0 * (1.0 - h2 / 20.0 * (1.0 - h2 / 42.0 * (1.0 - h2 / 72.0 * (1.0 - h2 / 110.0 * (1.0 - h2 / 156.0))))));
+  } else {
+    c = std::cos(0.5 * theta);
+    s = sinc_half(theta);
+  }
+  Quat q(c, s * v.x(), s * v.y(), s * v.z());
   // For large θ, cos/sin are each correct to an ulp; renormalizing keeps |q| = 1 exactly enough.
   return q.normalized();
 }
@@ -69,7 +78,7 @@ RotVec log(const Quat& q_in) {
   const double s = xyz.norm();
   if (s == 0.0) return RotVec();
   // θ = 2·atan2(s, w) is accurate for every s; θ/s → 2/w smoothly as s → 0.
-  const double theta = 2.0 * std::atan2(s, w);
+  const double theta = 2.0 * half_angle(s, w);
   return RotVec(xyz * (theta / s));
 }
 
@@ -118,7 +127,7 @@ double angular_distance(const Quat& a_in, const Quat& b_in) {
   Eigen::Vector4d b = normalized_or_identity(b_in).coeffs();
   if (a.dot(b) < 0.0) b = -b;
   // |a − b| = 2 sin(θ/4), |a + b| = 2 cos(θ/4) for a rotation by θ.
-  return 4.0 * std::atan2((a - b).norm(), (a + b).norm());
+  return 4.0 * half_angle((a - b).norm(), (a + b).norm());
 }
 
 Eigen::Matrix<double, 4, 3> dq_dv(const Vec3& v) {

@@ -23,7 +23,7 @@ Vec3 log_s3(const Quat& q) {
   const Vec3 v = q.vec();
   const double s = v.norm();
   if (!(s > 0.0)) return Vec3::Zero();
-  return v * (2.0 * std::atan2(s, q.w()) / s);
+  return v * (2.0 * half_angle(s, q.w()) / s);
 }
 
 // The J_l⁻¹ coefficient c(θ) = (1 − (θ/2)cot(θ/2))/θ² from θ²: its Taylor series

@@ -123,15 +123,15 @@ RotationError rotation_error(const Quat* ref, const Quat* test, std::size_t n, c
     double w = e.w();
     Vec3 v = e.vec();
     if (w < 0.0) w = -w, v = -v;
-    angle[i] = 2.0 * std::atan2(v.norm(), w);
+    angle[i] = 2.0 * half_angle(v.norm(), w);
     const double p = v.dot(axis);
     const double tw = std::sqrt(w * w + p * p);
     if (!has_axis || tw < kSwingTwistDegenerate) {
       out.swing.add(angle[i]);  // no axis, or a swing within √ε of 180°: all swing
       out.twist.add(0.0);
     } else {
-      out.twist.add(2.0 * std::atan2(std::abs(p), w));
-      out.swing.add(2.0 * std::atan2((v - p * axis).norm(), tw));
+      out.twist.add(2.0 * half_angle(std::abs(p), w));
+      out.swing.add(2.0 * half_angle((v - p * axis).norm(), tw));
     }
   }
   out.angle = error_stats(angle, n);
@@ -170,10 +170,12 @@ void accumulate_pose_error(const WorldPose& ref, const WorldPose& test, double s
 Smoothness sampled_smoothness(const Quat* q, std::size_t n, double dt) {
   Smoothness s;
   if (n < 3 || !(dt > 0.0) || !std::isfinite(dt)) return s;
-  Vec3 prev = displacement_fixed(q[0], q[1]).vec() / dt;
+  // The samples come from an interpolator (unit quaternions): log(q_{k+1} q_k⁻¹)
+  // directly, without displacement_fixed's renormalization of both.
+  Vec3 prev = log(q[1] * q[0].conjugate()).vec() / dt;
   double sum_sq = 0.0;
   for (std::size_t k = 1; k + 1 < n; ++k) {
-    const Vec3 w = displacement_fixed(q[k], q[k + 1]).vec() / dt;
+    const Vec3 w = log(q[k + 1] * q[k].conjugate()).vec() / dt;
     const double a = (w - prev).norm() / dt;
     sum_sq += a * a;
     s.acceleration_max = std::max(s.acceleration_max, a);
@@ -186,16 +188,25 @@ Smoothness sampled_smoothness(const Quat* q, std::size_t n, double dt) {
 KeyJumps key_jumps(const Interpolator& curve, const std::vector<double>& key_times) {
   KeyJumps out;
   if (key_times.size() < 3) return out;
-  for (std::size_t k = 1; k + 1 < key_times.size(); ++k) {
-    const double t = key_times[k];
-    const double interval = std::min(t - key_times[k - 1], key_times[k + 1] - t);
-    if (!(interval > 0.0) || !std::isfinite(interval)) continue;
-    const double h = kKeyJumpStep * interval;
-    double times[5] = {t - 2 * h, t - h, t, t + h, t + 2 * h};
-    Quat q[5];
-    curve.evaluate(times, 5, q);
+  // Five points t − 2h … t + 2h around every interior key, all in one sorted batch
+  // (h is far below half a key interval, so the stencils do not overlap).
+  const std::size_t nk = key_times.size() - 2;
+  std::vector<double> times(5 * nk), step(nk);
+  for (std::size_t k = 0; k < nk; ++k) {
+    const double t = key_times[k + 1];
+    const double interval = std::min(t - key_times[k], key_times[k + 2] - t);
+    const double h = (interval > 0.0 && std::isfinite(interval)) ? kKeyJumpStep * interval : 0.0;
+    step[k] = h;
+    for (int i = 0; i < 5; ++i) times[5 * k + i] = t + (i - 2) * h;
+  }
+  std::vector<Quat> q(times.size());
+  curve.evaluate(times.data(), times.size(), q.data());
+  for (std::size_t k = 0; k < nk; ++k) {
+    const double h = step[k];
+    if (!(h > 0.0)) continue;
+    const Quat* p = &q[5 * k];
     Vec3 w[4];
-    for (int i = 0; i < 4; ++i) w[i] = displacement_fixed(q[i], q[i + 1]).vec() / h;
+    for (int i = 0; i < 4; ++i) w[i] = log(p[i + 1] * p[i].conjugate()).vec() / h;  // unit samples
     // w[i] is the mean velocity over [tᵢ, tᵢ₊₁]: the velocity at its midpoint to O(h²).
     const Vec3 a_minus = (w[1] - w[0]) / h;
     const Vec3 a_plus = (w[3] - w[2]) / h;

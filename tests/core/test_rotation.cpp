@@ -83,6 +83,48 @@ TEST(Rotation, ExpIsContinuousAcrossTheTaylorThreshold) {
   EXPECT_LT((below.coeffs() - reference_exp(axis * t).coeffs()).norm(), 4 * kEps);
 }
 
+TEST(Rotation, ExpSeriesBranchMatchesAngleAxisAndIsContinuousAtItsThreshold) {
+  // Angles spread over the series branch (log-uniform down to 1e-9 and uniform up to
+  // the threshold): the nested series against Eigen's AngleAxis (libm sin/cos).
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> uniform(0.0, kExpSeriesThreshold);
+  std::uniform_real_distribution<double> decade(-9.0, std::log10(kExpSeriesThreshold));
+  for (int i = 0; i < 200000; ++i) {
+    const double theta = i % 2 ? uniform(rng) : std::pow(10.0, decade(rng));
+    const Vec3 v = random_unit(rng) * theta;
+    ASSERT_LT((exp(RotVec(v)).coeffs() - reference_exp(v).coeffs()).norm(), 4 * kEps) << theta;
+  }
+  const Vec3 axis = Vec3(-0.2, 0.7, 1.0).normalized();
+  const double t = kExpSeriesThreshold;
+  const Quat below = exp(RotVec(axis * std::nextafter(t, 0.0)));
+  const Quat above = exp(RotVec(axis * t));
+  EXPECT_LT((below.coeffs() - above.coeffs()).norm(), 4 * kEps);
+}
+
+TEST(Rotation, HalfAngleIsWithinTwoUlpOfLibmAtan2) {
+  // The series branch (s ≤ w/8), its edge, the libm branch, and the special values.
+  std::mt19937_64 rng(12);
+  std::uniform_real_distribution<double> ratio(0.0, 0.125), wide(0.0, 10.0), w_dist(1e-3, 1e3);
+  std::uniform_real_distribution<double> decade(-300.0, 0.0);
+  for (int i = 0; i < 1000000; ++i) {
+    const double w = w_dist(rng);
+    double s;
+    switch (i % 4) {
+      case 0: s = ratio(rng) * w; break;
+      case 1: s = std::pow(10.0, decade(rng)) * w; break;
+      case 2: s = std::nextafter(0.125 * w, i % 8 < 4 ? 0.0 : 1.0); break;
+      default: s = wide(rng) * w;
+    }
+    const double expected = std::atan2(s, w), got = half_angle(s, w);
+    ASSERT_LE(std::abs(got - expected), 2.0 * kEps * expected) << "s " << s << " w " << w;
+  }
+  for (double w : {1.0, 0.0, -0.0, -1.0, std::numeric_limits<double>::denorm_min()})
+    for (double s : {0.0, 1e-300, 0.5, 1.0, std::numeric_limits<double>::infinity()})
+      EXPECT_EQ(half_angle(s, w), std::atan2(s, w)) << s << ", " << w;
+  EXPECT_TRUE(std::isnan(half_angle(std::nan(""), 1.0)));
+  EXPECT_TRUE(std::isnan(half_angle(0.1, std::nan(""))));
+}
+
 TEST(Rotation, LogIsExactNearIdentity) {
   for (double theta : {1e-300, 1e-200, 1e-30, 1e-16, 1e-12, 1e-8}) {
     const Vec3 v = Vec3(0.3, -0.4, 1.2).normalized() * theta;

@@ -30,6 +30,7 @@ class C2Interpolator final : public detail::SegmentInterpolator<C2Interpolator> 
   }
 
   Quat segment(std::size_t i, double u) const {
+    if (u <= 0.0) return k_.q[i];  // r(i, 0) = 0
     if (u >= 1.0) return k_.q[i + 1];
     return apply_moving(k_.q[i], RotVec(r(i, u)));
   }

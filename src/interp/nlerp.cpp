@@ -17,6 +17,7 @@ class NlerpInterpolator final : public detail::SegmentInterpolator<NlerpInterpol
  public:
   using SegmentInterpolator::SegmentInterpolator;
   Quat segment(std::size_t i, double u) const {
+    if (u <= 0.0) return k_.q[i];
     if (u >= 1.0) return k_.q[i + 1];
     return nlerp(k_.q[i], k_.q[i + 1], u);
   }

@@ -14,6 +14,10 @@ class SlerpInterpolator final : public detail::SegmentInterpolator<SlerpInterpol
  public:
   using SegmentInterpolator::SegmentInterpolator;
   Quat segment(std::size_t i, double u) const {
+    // The keys themselves at the ends: what the formula gives there (bit for bit
+    // at u = 0), without its asin and sincos — resampling at the source rate
+    // evaluates nothing else.
+    if (u <= 0.0) return k_.q[i];
     if (u >= 1.0) return k_.q[i + 1];
     return slerp(k_.q[i], k_.q[i + 1], u);
   }

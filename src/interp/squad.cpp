@@ -45,6 +45,7 @@ class SquadInterpolator final : public detail::SegmentInterpolator<SquadInterpol
   }
 
   Quat segment(std::size_t i, double u) const {
+    if (u <= 0.0) return k_.q[i];  // squad(…, 0) is qᵢ bit for bit; skip its three slerps
     if (u >= 1.0) return k_.q[i + 1];
     return squad(k_.q[i], k_.q[i + 1], a_[i], b_[i], u);
   }

@@ -10,7 +10,6 @@
 #include <assimp/scene.h>
 
 #include <fcntl.h>
-#include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -21,6 +20,7 @@
 #include <cstring>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <new>
 #include <set>
 #include <sstream>
@@ -180,47 +180,44 @@ Status check_file(const fs::path& path, const std::string& label) {
   return Ok{};
 }
 
-// A file's bytes, memory-mapped read-only (BVH text is parsed in place, without a
-// copy); read into memory where mapping fails.
+// A file's bytes, read with read(2) into one buffer sized from fstat. Not
+// memory-mapped: a file truncated while it is parsed (an exporter still writing it)
+// would raise SIGBUS in a mapping, while a read just ends early and the parser
+// reports the file as truncated.
 class FileText {
  public:
-  FileText() = default;
-  FileText(const FileText&) = delete;
-  FileText& operator=(const FileText&) = delete;
-  ~FileText() {
-    if (map_) ::munmap(map_, size_);
-  }
-
   Status open(const fs::path& path, const std::string& label) {
     const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
     if (fd < 0) return make_error(label + ": cannot open for reading: " + std::strerror(errno));
     struct stat st {};
-    if (::fstat(fd, &st) == 0 && st.st_size > 0) {
-      void* m = ::mmap(nullptr, static_cast<std::size_t>(st.st_size), PROT_READ, MAP_PRIVATE, fd, 0);
-      if (m != MAP_FAILED) {
-        map_ = m;
-        size_ = static_cast<std::size_t>(st.st_size);
-        ::madvise(map_, size_, MADV_SEQUENTIAL);
+    std::size_t capacity = (::fstat(fd, &st) == 0 && st.st_size > 0) ? static_cast<std::size_t>(st.st_size) : 0;
+    buffer_.reset(new char[capacity + 1]);  // uninitialized: read(2) fills it
+    ++capacity;  // one byte more than fstat said, so a full buffer means the file grew
+    for (;;) {
+      if (size_ == capacity) {
+        std::unique_ptr<char[]> bigger(new char[2 * capacity]);
+        std::memcpy(bigger.get(), buffer_.get(), size_);
+        buffer_ = std::move(bigger);
+        capacity *= 2;
       }
+      const ssize_t got = ::read(fd, buffer_.get() + size_, capacity - size_);
+      if (got < 0 && errno == EINTR) continue;
+      if (got < 0) {
+        const std::string why = std::strerror(errno);
+        ::close(fd);
+        return make_error(label + ": read failed: " + why);
+      }
+      if (got == 0) break;
+      size_ += static_cast<std::size_t>(got);
     }
     ::close(fd);
-    if (map_) return Ok{};
-    std::ifstream f(path, std::ios::binary);
-    if (!f) return make_error(label + ": cannot open for reading");
-    std::ostringstream ss;
-    ss << f.rdbuf();
-    if (!f && !f.eof()) return make_error(label + ": read failed");
-    copy_ = ss.str();
     return Ok{};
   }
-  std::string_view text() const {
-    return map_ ? std::string_view(static_cast<const char*>(map_), size_) : std::string_view(copy_);
-  }
+  std::string_view text() const { return std::string_view(buffer_.get(), size_); }
 
  private:
-  void* map_ = nullptr;
+  std::unique_ptr<char[]> buffer_;
   std::size_t size_ = 0;
-  std::string copy_;
 };
 
 bool looks_like_bvh(const std::string& text) {

@@ -6,7 +6,7 @@
 // with the flags read_clip uses, one file after another; (2) the whole evaluation
 // (read_clip + all methods × keep-every 2,4,8,16, CSV + summary, no plots) with
 // --jobs 1 and (3) with --jobs 2. Each is the best of R runs (default 3). Prints
-// the ratio eval/import (goal ≤ 2), clip-frames per second, and the --jobs 2
+// the ratio eval/import (goal ≤ 2; also for the five seed methods alone), clip-frames per second, and the --jobs 2
 // speedup (goal ≥ 1.7 on a machine with two free cores); then where the time goes:
 // read_clip alone and each method alone beyond it (CPU seconds), and each method's
 // own ratio: read_clip plus that method, all four spacings, against the import.
@@ -56,13 +56,17 @@ double import_all(const std::vector<std::string>& files, double& cpu) {
   return seconds_since(t0);
 }
 
+// The five methods the goal names (the seed set); c2 and expmap-c2 came later.
+const std::vector<std::string> kSeedMethods = {"slerp", "squad", "expmap", "nlerp", "bf"};
+
+// `only`: these methods; empty: all of them.
 double eval_all(const std::vector<fs::path>& inputs, int jobs, const fs::path& out, std::size_t& frames, double& cpu,
-                const std::string& only_method = "") {
+                const std::vector<std::string>& only = {}) {
   rotinterp::EvalOptions o;
   o.inputs = inputs;
   o.output_dir = out;
   for (const rotinterp::MethodInfo& m : rotinterp::methods())
-    if (only_method.empty() || m.name == only_method) o.clip.methods.push_back(m.name);
+    if (only.empty() || std::find(only.begin(), only.end(), m.name) != only.end()) o.clip.methods.push_back(m.name);
   o.clip.keep_every = {2, 4, 8, 16};
   o.jobs = jobs;
   o.plots = false;
@@ -105,7 +109,7 @@ int main(int argc, char** argv) {
     if (auto c = rotinterp::read_clip(f)) clip_frames += c->frame_count(), ++clips;
 
   const fs::path out = fs::temp_directory_path() / ("rotinterp_bench_eval_" + std::to_string(::getpid()));
-  double t_import = 1e300, t_j1 = 1e300, t_j2 = 1e300, c_import = 1e300, c_j1 = 1e300, c;
+  double t_import = 1e300, t_j1 = 1e300, t_j2 = 1e300, c_import = 1e300, c_j1 = 1e300, c_seed = 1e300, c;
   std::size_t joint_frames = 0;
   for (int r = 0; r < repeat; ++r) {
     t_import = std::min(t_import, import_all(*files, c));
@@ -113,6 +117,8 @@ int main(int argc, char** argv) {
     t_j1 = std::min(t_j1, eval_all(inputs, 1, out, joint_frames, c));
     c_j1 = std::min(c_j1, c);
     t_j2 = std::min(t_j2, eval_all(inputs, 2, out, joint_frames, c));
+    eval_all(inputs, 1, out, joint_frames, c, kSeedMethods);
+    c_seed = std::min(c_seed, c);
   }
   // Where the time goes: read_clip alone, then each method alone (read included).
   double c_read = 1e300;
@@ -125,7 +131,7 @@ int main(int argc, char** argv) {
   for (const rotinterp::MethodInfo& m : rotinterp::methods()) {
     double best = 1e300;
     for (int r = 0; r < repeat; ++r) {
-      eval_all(inputs, 1, out, joint_frames, c, m.name);
+      eval_all(inputs, 1, out, joint_frames, c, {m.name});
       best = std::min(best, c);
     }
     per_method.emplace_back(m.name, best - c_read);
@@ -138,6 +144,8 @@ int main(int argc, char** argv) {
   std::printf("assimp import alone       %8.3f s wall  %8.3f s CPU\n", t_import, c_import);
   std::printf("eval --jobs 1             %8.3f s wall  %8.3f s CPU   ratio eval/import %.2f wall, %.2f CPU (goal <= 2)\n",
               t_j1, c_j1, t_j1 / t_import, c_j1 / c_import);
+  std::printf("eval --jobs 1, the 5 seed methods (slerp squad expmap nlerp bf) %8.3f s CPU   ratio %.2f (goal <= 2)\n",
+              c_seed, c_seed / c_import);
   std::printf("eval --jobs 2             %8.3f s   speedup %.2fx (goal >= 1.7; %u hardware threads)\n", t_j2,
               t_j1 / t_j2, std::thread::hardware_concurrency());
   std::printf("throughput (--jobs 1)     %8.0f clip-frames/s (each rebuilt %zu times), %.0f joint-frames/s per rebuild\n",

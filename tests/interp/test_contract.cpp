@@ -193,6 +193,19 @@ TEST_P(Contract, CurveDoesNotDependOnTheStoredSignOfKeys) {
   for (double x : dense_times(track, 17)) EXPECT_LT(angular_distance(p->evaluate(x), f->evaluate(x)), 1e-12) << x;
 }
 
+TEST_P(Contract, AcceptsAKeyStoredAsMinusThePreviousOne) {
+  // fuzz_interp input 120d981b (tests/fuzz/corpus/interp): the identity at t ≈ 6e-304,
+  // then −identity — the same orientation — at t = 1. Not sign-continuous as stored,
+  // which every method must accept (it aligns the keys itself) and hold still on.
+  auto p = build(method(), make({5.696189077778435e-304, 1.0}, {Quat::Identity(), Quat(-1, 0, 0, 0)}));
+  ASSERT_TRUE(p);
+  for (int i = -2; i <= 34; ++i) {
+    const Quat q = p->evaluate(i / 32.0);
+    ASSERT_TRUE(q.coeffs().allFinite()) << i;
+    EXPECT_LT(angular_distance(q, Quat::Identity()), 1e-15) << i;
+  }
+}
+
 TEST_P(Contract, Follows22DegreePathWhereKeysLook338DegreesApartAsStored) {
   // Rz(0), −Rz(22.1°), Rz(44.2°): dot(q₀, q₁) = −0.981 as stored.
   const double step = 22.1 * kPi / 180.0;

@@ -443,17 +443,20 @@ detail::Keys refine(const detail::Keys& k, double max_step) {
       const double len = out.t[i + 1] - out.t[i];
       const double left = i > 0 ? out.t[i] - out.t[i - 1] : len;
       const double right = i + 2 < out.size() ? out.t[i + 2] - out.t[i + 1] : len;
-      double cut = -1.0;  // parameter of the new knot in this interval
       // Split only beyond 1.5·kGrading so the pieces (kGrading·short and a rest
-      // ≥ 0.5·kGrading·short) are not split again by round-off.
+      // ≥ 0.5·kGrading·short) are not split again by round-off. The new knot's
+      // time is measured from the end next to the short neighbour: as a fraction
+      // of `len` it would round to that end once len/short passes 2⁵³ (keys at
+      // −1, −1e-20 and 0: the fuzzer's crash-860848d6).
+      double t_new = NAN;
       if (len > 1.5 * kGrading * left) {
-        cut = kGrading * left / len;
+        t_new = out.t[i] + kGrading * left;
       } else if (len > 1.5 * kGrading * right) {
-        cut = 1.0 - kGrading * right / len;
+        t_new = out.t[i + 1] - kGrading * right;
       }
-      if (cut > 0.0 && cut < 1.0) {
-        g.t.push_back(out.t[i] + cut * len);
-        g.q.push_back(detail::align_pair(out.q[i], slerp(out.q[i], out.q[i + 1], cut)));
+      if (t_new > out.t[i] && t_new < out.t[i + 1]) {
+        g.t.push_back(t_new);
+        g.q.push_back(detail::align_pair(out.q[i], slerp(out.q[i], out.q[i + 1], (t_new - out.t[i]) / len)));
         changed = true;
       }
     }

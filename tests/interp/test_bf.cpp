@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <vector>
 
 namespace rotinterp {
@@ -153,6 +154,31 @@ TEST(BfSpline, AndC2AreBothC2AndCloseOnSmoothKeys) {
   EXPECT_LT(worst, 0.05);
   RecordProperty("bf_vs_c2_max_rad", std::to_string(worst));
   std::printf("[ info ] bf vs c2 on 0.5-rad key steps: max %.3g rad apart\n", worst);
+}
+
+TEST(BfSpline, GradesIntervalsWhoseRatioPassesDoublePrecision) {
+  // fuzz_interp crash-860848d6: half turns between keys whose neighbouring intervals
+  // differ by 1e97. Grading used to place each new knot at a fraction of the long
+  // interval, which rounds to its end once the ratio passes 2⁵³, so no knot was
+  // added and the control points could not converge. Here scaled to ratios 1e10 …
+  // 1e97, plus the fuzzer's own times.
+  const Quat half_z(0.0, 0.0, 0.0, -1.0), half_yz(0.0, 0.0, std::sqrt(0.5), std::sqrt(0.5));
+  std::vector<std::vector<double>> times = {{-1.1389096839582165e-88, -2.3534373660385329e-185, 0.0}};
+  for (double small : {1e-10, 1e-16, 1e-20, 1e-50, 1e-97}) times.push_back({-1.0, -small, 0.0});
+  for (const std::vector<double>& t : times) {
+    RotationTrack track;
+    track.times = t;
+    track.keys = {half_z, Quat(-1.0, 0.0, 0.0, 0.0), half_yz};
+    auto bf = make_bf(track);
+    ASSERT_TRUE(bf) << t[1] << ": " << bf.error();
+    for (std::size_t k = 0; k < t.size(); ++k)
+      EXPECT_LT(angular_distance((*bf)->evaluate(t[k]), track.keys[k]), 1e-9) << t[1] << " key " << k;
+    for (int s = 0; s <= 64; ++s) {
+      const Quat q = (*bf)->evaluate(t[0] + (t[2] - t[0]) * s / 64.0);
+      ASSERT_TRUE(q.coeffs().allFinite()) << t[1];
+      EXPECT_NEAR(q.norm(), 1.0, 1e-12) << t[1];
+    }
+  }
 }
 
 }  // namespace

@@ -23,7 +23,25 @@
 #include <memory>
 #include <new>
 #include <set>
+#include <stdexcept>
 #include <sstream>
+
+// assimp 5.2.5 as Debian ships it is built with its internal assertions on
+// (ASSIMP_BUILD_DEBUG), and a failed one aborts the whole process: its FBX
+// converter asserts on an animation curve without keys (fuzz_read_any
+// crash-3197eb88, tests/io/test_assimp_guard.cpp). One bad file must not end a batch of
+// thousands, so this definition takes the place of assimp's own: assimp calls it
+// through its PLT, and the link exports it from every executable that uses this
+// library (CMakeLists.txt: --export-dynamic-symbol). It throws instead of
+// aborting; the importer's own catch, or ours around ReadFile, turns that into
+// an ordinary "cannot read" error naming the file.
+namespace Assimp {
+[[noreturn]] void aiAssertViolation(const char* expression, const char* file, int line);
+void aiAssertViolation(const char* expression, const char* file, int line) {
+  throw std::runtime_error(std::string("assimp's internal check '") + expression + "' failed (" + file + ":" +
+                           std::to_string(line) + ")");
+}
+}  // namespace Assimp
 
 namespace rotinterp {
 
@@ -475,6 +493,23 @@ Status fill_scene(const aiScene* scene, const aiAnimation* anim, double tps, Cli
   return Ok{};
 }
 
+// Files assimp 5.2.5 crashes on (a segfault, which no handler can catch), refused
+// before it sees them. An FBX animation curve without keys ("KeyTime: *0" in the
+// ASCII form) makes its FBX converter read past an empty key list. Only the ASCII
+// form is recognized here; a binary file with such a curve is not.
+Status check_before_assimp(std::string_view text, const std::string& ext, const std::string& label) {
+  if (ext != "fbx" || text.substr(0, 18) == "Kaydara FBX Binary") return Ok{};
+  for (std::size_t at = text.find("KeyTime:"); at != std::string_view::npos; at = text.find("KeyTime:", at + 8)) {
+    std::size_t i = at + 8;
+    while (i < text.size() && (text[i] == ' ' || text[i] == '\t')) ++i;
+    if (text.substr(i, 2) == "*0" && (i + 2 == text.size() || !std::isdigit(static_cast<unsigned char>(text[i + 2]))))
+      return make_error(label + ": an animation curve has no keys (line " +
+                        std::to_string(1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(at), '\n')) +
+                        "); refused because assimp 5.2 crashes on such files");
+  }
+  return Ok{};
+}
+
 Result<ClipFileInfo> load(const fs::path& path, const ReadOptions& options) {
   const std::string label = path.string();
   if (Status s = check_file(path, label); !s) return make_error(s.error());
@@ -513,6 +548,11 @@ Result<ClipFileInfo> load(const fs::path& path, const ReadOptions& options) {
   const aiScene* scene = nullptr;
   std::string assimp_error;
   if (!bvh || options.cross_check_with_assimp) {
+    if (!bvh) {
+      FileText text;
+      if (Status s = text.open(path, label); !s) return make_error(s.error());
+      if (Status s = check_before_assimp(text.text(), ext, label); !s) return make_error(s.error());
+    }
     try {
       scene = importer.ReadFile(path.string(), 0);
       if (!scene) assimp_error = one_line(importer.GetErrorString());

@@ -24,6 +24,29 @@ std::string bvh(const std::string& frames, const std::string& frame_time, const 
   return std::string(kHeader) + "MOTION\nFrames: " + frames + "\nFrame Time: " + frame_time + "\n" + rows;
 }
 
+// A one-bone ASCII FBX whose X translation has one curve with `keys` key times
+// (KeyTime and KeyValueFloat blocks) in a take from 0 to 1 s.
+std::string fbx_one_curve(const std::string& key_times, const std::string& key_values, int count) {
+  const std::string n = std::to_string(count);
+  return "; FBX 7.4.0 project file\n"
+         "FBXHeaderExtension:  {\n\tFBXHeaderVersion: 1003\n\tFBXVersion: 7400\n}\n"
+         "GlobalSettings:  {\n\tVersion: 1000\n\tProperties70:  {\n"
+         "\t\tP: \"UnitScaleFactor\", \"double\", \"Number\", \"\",1\n\t}\n}\n"
+         "Objects:  {\n"
+         "\tModel: 1000, \"Model::Bone\", \"LimbNode\" {\n\t\tVersion: 232\n\t}\n"
+         "\tAnimationStack: 2000, \"AnimStack::Take\", \"\" {\n\t\tProperties70:  {\n"
+         "\t\t\tP: \"LocalStart\", \"KTime\", \"Time\", \"\",0\n"
+         "\t\t\tP: \"LocalStop\", \"KTime\", \"Time\", \"\",46186158000\n\t\t}\n\t}\n"
+         "\tAnimationLayer: 3000, \"AnimLayer::Base\", \"\" {\n\t}\n"
+         "\tAnimationCurveNode: 4000, \"AnimCurveNode::T\", \"\" {\n\t\tProperties70:  {\n"
+         "\t\t\tP: \"d|X\", \"Number\", \"\", \"A\",0\n\t\t}\n\t}\n"
+         "\tAnimationCurve: 5000, \"AnimCurve::\", \"\" {\n\t\tDefault: 0\n\t\tKeyVer: 4009\n"
+         "\t\tKeyTime: *" + n + " {\n\t\t\ta: " + key_times + "\n\t\t}\n"
+         "\t\tKeyValueFloat: *" + n + " {\n\t\t\ta: " + key_values + "\n\t\t}\n\t}\n}\n"
+         "Connections:  {\n\tC: \"OO\",1000,0\n\tC: \"OO\",3000,2000\n\tC: \"OO\",4000,3000\n"
+         "\tC: \"OP\",4000,1000, \"Lcl Translation\"\n\tC: \"OP\",5000,4000, \"d|X\"\n}\n";
+}
+
 const std::string kRow = "0 1 2 3 4 5 6 7 8\n";
 
 struct Case {
@@ -56,6 +79,13 @@ std::vector<Case> cases() {
       {"EmptyFile", "empty.bvh", "", {"the file is empty"}},
       {"UnknownFormat", "clip.xyz", "this is not a motion clip\n", {"unknown or unsupported file format"}},
       {"GarbageFbx", "garbage.fbx", std::string(200, 'x'), {"cannot read"}},
+      // assimp 5.2.5 segfaults on a curve without keys: refused before it sees the file.
+      {"FbxCurveWithoutKeys", "no_keys.fbx", fbx_one_curve("", "", 0), {"line 32", "an animation curve has no keys"}},
+      // A key at 1000 s in a 1 s take trips an assertion inside assimp (fuzz_read_any
+      // crash-3197eb88), which aborts the process unless src/io/read.cpp's handler
+      // turns it into an error.
+      {"FbxKeysOutsideTheTake", "late_key.fbx", fbx_one_curve("46186158000000", "1.5", 1),
+       {"cannot read", "assimp's internal check '!keys.empty()' failed"}},
   };
 }
 
@@ -80,6 +110,21 @@ TEST_P(Malformed, FailsWithExitCode1AndOneLineNamingFileAndProblem) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Bvh, Malformed, ::testing::ValuesIn(cases()), [](const auto& info) { return info.param.name; });
+
+TEST(MalformedPaths, AssimpAssertionIsAnErrorInsideTheLibraryToo) {
+  // In-process: the handler that replaces assimp's aborting one is exported by
+  // every executable linking rotinterp::io, this test's included.
+  test::TempDir dir;
+  const auto path = dir / "late_key.fbx";
+  test::write_text(path, fbx_one_curve("46186158000000", "1.5", 1));
+  auto clip = read_clip(path);
+  ASSERT_FALSE(clip);
+  EXPECT_NE(clip.error().find("assimp's internal check"), std::string::npos) << clip.error();
+  // The same file with its key inside the take reads (the test file is well formed).
+  test::write_text(path, fbx_one_curve("0", "1.5", 1));
+  auto fine = read_clip(path);
+  EXPECT_TRUE(fine) << fine.error();
+}
 
 TEST(MalformedPaths, MissingFileAndDirectoryFailWithOneLine) {
   test::TempDir dir;

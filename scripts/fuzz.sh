@@ -3,7 +3,8 @@
 # SECONDS (default 60) seconds: fuzz_read_bvh, fuzz_read_any, fuzz_interp.
 # Usage: bash scripts/fuzz.sh [SECONDS] [TARGET...]
 # Seeds: ../shared/data plus tests/fuzz/corpus/<kind>; new inputs go to
-# build-fuzz/corpus/<target>; crashes to build-fuzz/artifacts/<target>/.
+# build-fuzz/corpus/<target>; crashes to build-fuzz/artifacts/<target>/; the whole
+# log (a crash's stack) to build-fuzz/<target>.log.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
@@ -36,5 +37,5 @@ for t in "${targets[@]}"; do
   echo "== $t for ${seconds}s"
   ./build-fuzz/tests/fuzz/"$t" -max_total_time="$seconds" -timeout=30 -rss_limit_mb=4096 -max_len=262144 \
     -artifact_prefix="build-fuzz/artifacts/$t/" -print_final_stats=1 \
-    "build-fuzz/corpus/$t" "${seeds[@]}" 2>&1 | tail -n 12
+    "build-fuzz/corpus/$t" "${seeds[@]}" 2>&1 | tee "build-fuzz/$t.log" | tail -n 12
 done

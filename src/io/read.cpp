@@ -499,8 +499,8 @@ Status fill_scene(const aiScene* scene, const aiAnimation* anim, double tps, Cli
 // before it sees them. An FBX animation curve without keys ("KeyTime: *0" in the
 // ASCII form) makes its FBX converter read past an empty key list. Only the ASCII
 // form is recognized here; a binary file with such a curve is not.
-Status check_before_assimp(std::string_view text, const std::string& ext, const std::string& label) {
-  if (ext != "fbx" || text.substr(0, 18) == "Kaydara FBX Binary") return Ok{};
+Status check_fbx_before_assimp(std::string_view text, const std::string& label) {
+  if (text.substr(0, 18) == "Kaydara FBX Binary") return Ok{};
   for (std::size_t at = text.find("KeyTime:"); at != std::string_view::npos; at = text.find("KeyTime:", at + 8)) {
     std::size_t i = at + 8;
     while (i < text.size() && (text[i] == ' ' || text[i] == '\t')) ++i;
@@ -592,9 +592,11 @@ Result<ClipFileInfo> load(const fs::path& path, const ReadOptions& options) {
   std::string assimp_error;
   if (!bvh || options.cross_check_with_assimp) {
     if (!bvh) {
-      FileText text;
-      if (Status s = text.open(path, label); !s) return make_error(s.error());
-      if (Status s = check_before_assimp(text.text(), ext, label); !s) return make_error(s.error());
+      if (ext == "fbx") {  // only FBX has a pre-check: read it for that alone
+        FileText text;
+        if (Status s = text.open(path, label); !s) return make_error(s.error());
+        if (Status s = check_fbx_before_assimp(text.text(), label); !s) return make_error(s.error());
+      }
       if (options.isolate_assimp)
         if (Status s = survives_assimp(path, options, label); !s) return make_error(s.error());
     }

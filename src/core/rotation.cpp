@@ -39,25 +39,32 @@ Vec3 vee(const Mat3& m) { return Vec3(m(2, 1) - m(1, 2), m(0, 2) - m(2, 0), m(1,
 Quat exp(const RotVec& r) {
   const Vec3& v = r.vec();
   if (!finite(v)) return Quat::Identity();
-  const double theta = v.norm();
-  if (!std::isfinite(theta)) return Quat::Identity();  // |v| overflowed: no meaningful angle
-  double c, s;  // cos(θ/2) and sin(θ/2)/θ
-  if (theta < kExpSeriesThreshold) {
-    // Nested Taylor series in h² = (θ/2)² ≤ 1/16, through h¹² (truncation < 5e-20).
-    const double h2 = 0.25 * theta * theta;
-    c = 1.0 - h2 / 2.0 * (1.0 - h2 / 12.0 * (1.0 - h2 / 30.0 * (1.0 - h2 / 56.0 * (1.0 - h2 / 90.0 * (1.0 - h2 / 132.0)))));
-    s = 0.5 * (1.0 - h2 / 6.0 * (1.0 - h2 / 20.0 * (1.0 - h2 / 42.0 * (1.0 - h2 / 72.0 * (1.0 - h2 / 110.0 * (1.0 - h2 / 156.0))))));
-  } else {
-    c = std::cos(0.5 * theta);
-    s = sinc_half(theta);
+  const double theta2 = v.squaredNorm();
+  if (!std::isfinite(theta2)) return Quat::Identity();  // |v| overflowed: no meaningful angle
+  if (theta2 < kExpSeriesThreshold * kExpSeriesThreshold) {
+    // Nested Taylor series in h² = (θ/2)² ≤ 1/16, through h¹² (truncation < 5e-20):
+    // no square root, and |q| = 1 to rounding without renormalizing.
+    const double h2 = 0.25 * theta2;
+    constexpr double k2 = 1.0 / 2.0, k12 = 1.0 / 12.0, k30 = 1.0 / 30.0, k56 = 1.0 / 56.0, k90 = 1.0 / 90.0,
+                     k132 = 1.0 / 132.0, k6 = 1.0 / 6.0, k20 = 1.0 / 20.0, k42 = 1.0 / 42.0, k72 = 1.0 / 72.0,
+                     k110 = 1.0 / 110.0, k156 = 1.0 / 156.0;
+    const double c = 1.0 - h2 * k2 * (1.0 - h2 * k12 * (1.0 - h2 * k30 * (1.0 - h2 * k56 * (1.0 - h2 * k90 * (1.0 - h2 * k132)))));
+    const double s = 0.5 * (1.0 - h2 * k6 * (1.0 - h2 * k20 * (1.0 - h2 * k42 * (1.0 - h2 * k72 * (1.0 - h2 * k110 * (1.0 - h2 * k156))))));
+    return Quat(c, s * v.x(), s * v.y(), s * v.z());
   }
-  Quat q(c, s * v.x(), s * v.y(), s * v.z());
-  // For large θ, cos/sin are each correct to an ulp; renormalizing keeps |q| = 1 exactly enough.
+  const double theta = std::sqrt(theta2);
+  Quat q(std::cos(0.5 * theta), 0.0, 0.0, 0.0);
+  q.vec() = sinc_half(theta) * v;
+  // cos/sin are each correct to an ulp; renormalizing keeps |q| = 1 exactly enough.
   return q.normalized();
 }
 
 RotVec log(const Quat& q_in) {
-  Quat q = normalized_or_identity(q_in);
+  // The angle 2·atan2(|v|, w) and the axis v/|v| do not depend on |q|: a unit-ish q
+  // (every interpolator's output) is used as it is; others are normalized first so
+  // that tiny or huge ones neither underflow nor overflow below.
+  const double n2 = q_in.coeffs().squaredNorm();
+  const Quat q = (n2 >= 0.25 && n2 <= 4.0) ? q_in : normalized_or_identity(q_in);
   Vec3 xyz = q.vec();
   double w = q.w();
   // Canonical sign: w ≥ 0, and at w = 0 the first non-zero vector component positive,
@@ -75,11 +82,16 @@ RotVec log(const Quat& q_in) {
     w = -w;
     xyz = -xyz;
   }
-  const double s = xyz.norm();
-  if (s == 0.0) return RotVec();
-  // θ = 2·atan2(s, w) is accurate for every s; θ/s → 2/w smoothly as s → 0.
-  const double theta = 2.0 * half_angle(s, w);
-  return RotVec(xyz * (theta / s));
+  const double s2 = xyz.squaredNorm();
+  if (s2 == 0.0) return RotVec();
+  if (s2 <= (1.0 / 64.0) * w * w) {
+    // half_angle's series branch (|v| ≤ w/8) from |v|²: θ/|v| = (2/w)·atan(x)/x, x² = |v|²/w².
+    const double iw = 1.0 / w, x2 = s2 * iw * iw;
+    return RotVec(xyz * (2.0 * iw * (1.0 + x2 * atan_series_tail(x2))));
+  }
+  // θ = 2·atan2(s, w) is accurate for every s.
+  const double s = std::sqrt(s2);
+  return RotVec(xyz * (2.0 * std::atan2(s, w) / s));
 }
 
 RotVec log_nearest(const Quat& q, const RotVec& previous) {

@@ -19,11 +19,19 @@ namespace {
 // circle, as a rotation vector (angle 2·atan2(|v|, w) ∈ [0, 2π]). Unlike the core
 // log it does not pick the nearer sign of q, so averages of points spread over
 // more than 180° of rotation (still in one open hemisphere of S³) stay smooth.
+// Every curve point averages nearby control points, so nearly all calls take the
+// first branch: 2·atan(x)/s = (2/w)·atan(x)/x with x² = |v|²/w², no square root
+// (half_angle's series, for angles below 2·atan(1/8) ≈ 14°).
 Vec3 log_s3(const Quat& q) {
   const Vec3 v = q.vec();
-  const double s = v.norm();
+  const double w = q.w(), s2 = v.squaredNorm();
+  if (w > 0.0 && s2 <= (1.0 / 64.0) * w * w) {
+    const double iw = 1.0 / w, x2 = s2 * iw * iw;
+    return v * (2.0 * iw * (1.0 + x2 * atan_series_tail(x2)));
+  }
+  const double s = std::sqrt(s2);
   if (!(s > 0.0)) return Vec3::Zero();
-  return v * (2.0 * half_angle(s, q.w()) / s);
+  return v * (2.0 * half_angle(s, w) / s);
 }
 
 // The J_l⁻¹ coefficient c(θ) = (1 − (θ/2)cot(θ/2))/θ² from θ²: its Taylor series
@@ -48,6 +56,20 @@ Mat3 left_jacobian_inverse(const Vec3& v) {
   m(1, 2) += 0.5 * v.x(), m(2, 1) -= 0.5 * v.x();
   return m;
 }
+
+// Solves H·x = g by the adjugate (H is 3×3: cheaper than a factorization). False,
+// x untouched, when |det H| ≤ 1e-6: near singular.
+bool solve3(const Mat3& H, const Vec3& g, Vec3& x) {
+  const Vec3 c0 = H.col(1).cross(H.col(2)), c1 = H.col(2).cross(H.col(0)), c2 = H.col(0).cross(H.col(1));
+  const double det = H.col(0).dot(c0);
+  if (!(std::abs(det) > 1e-6)) return false;
+  // H⁻¹ has the rows c0, c1, c2 divided by det.
+  x = Vec3(c0.dot(g), c1.dot(g), c2.dot(g)) / det;
+  return true;
+}
+
+// m·exp(step) for a unit m (apply_moving without renormalizing m first).
+Quat step_from(const Quat& m, const Vec3& step) { return (m * exp(RotVec(step))).normalized(); }
 
 struct AverageOutcome {
   Quat m;
@@ -105,16 +127,9 @@ AverageOutcome average_iterate(const Quat* p, const double* w, std::size_t n, Qu
       H(0, 1) += 0.5 * g.z(), H(1, 0) -= 0.5 * g.z();
       H(0, 2) -= 0.5 * g.y(), H(2, 0) += 0.5 * g.y();
       H(1, 2) += 0.5 * g.x(), H(2, 1) -= 0.5 * g.x();
-      bool invertible = false;
-      Mat3 Hinv;
-      double det;
-      H.computeInverseAndDetWithCheck(Hinv, det, invertible, 1e-6);
-      if (invertible) {
-        step = Hinv * g;
-        if (final_step && gn <= kFinalNewtonStep) return {apply_moving(m, RotVec(step)), gn * gn, true};
-      }
+      if (solve3(H, g, step) && final_step && gn <= kFinalNewtonStep) return {step_from(m, step), gn * gn, true};
     }
-    m = apply_moving(m, RotVec(step));
+    m = step_from(m, step);
   }
   return {m, gn, gn <= o.stall_tolerance};
 }

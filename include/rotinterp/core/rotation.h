@@ -96,6 +96,19 @@ Vec3 vee(const Mat3& m);
 // R³ → S³. Smooth everywhere, series branch below kExpSeriesThreshold.
 Quat exp(const RotVec& r);
 
+// atan x = x + x·x²·p(x²) for |x| ≤ 1/8, p(y) = −1/3 + y/5 − y²/7 + … + y⁷/17 (Horner):
+// half_angle's series, also for callers that have x² but not x.
+inline double atan_series_tail(double x2) {
+  double p = 1.0 / 17.0;
+  p = p * x2 - 1.0 / 15.0;
+  p = p * x2 + 1.0 / 13.0;
+  p = p * x2 - 1.0 / 11.0;
+  p = p * x2 + 1.0 / 9.0;
+  p = p * x2 - 1.0 / 7.0;
+  p = p * x2 + 1.0 / 5.0;
+  p = p * x2 - 1.0 / 3.0;
+  return p;
+}
 // atan2(s, w) for s ≥ 0: the half angle of a quaternion (w, v) with s = |v|, under
 // every log and every error angle. For 0 ≤ s ≤ w/8 (rotations below 14°: nearly all
 // steps between frames and nearly all interpolation errors) it sums the series of
@@ -105,17 +118,9 @@ Quat exp(const RotVec& r);
 inline double half_angle(double s, double w) {
   if (!(w > 0.0 && s >= 0.0 && s <= 0.125 * w)) return std::atan2(s, w);
   const double x = s / w, x2 = x * x;
-  // atan x = x·Σₖ (−x²)ᵏ/(2k + 1), k = 0 … 8, by Horner.
-  double p = 1.0 / 17.0;
-  p = p * x2 - 1.0 / 15.0;
-  p = p * x2 + 1.0 / 13.0;
-  p = p * x2 - 1.0 / 11.0;
-  p = p * x2 + 1.0 / 9.0;
-  p = p * x2 - 1.0 / 7.0;
-  p = p * x2 + 1.0 / 5.0;
-  p = p * x2 - 1.0 / 3.0;
-  return x + x * (x2 * p);
+  return x + x * (x2 * atan_series_tail(x2));
 }
+
 // S³ → R³ with |v| ≤ π, via atan2 (no acos). Exact near the identity. For exactly
 // 180° (w = 0) the result is the same for q and −q: the axis whose first non-zero
 // component is positive.

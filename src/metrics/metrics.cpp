@@ -112,26 +112,40 @@ RotationError rotation_error(const Quat* ref, const Quat* test, std::size_t n, c
   const bool has_axis = an > 0.0 && std::isfinite(an);
   const Vec3 axis = has_axis ? Vec3(bone_axis_in / an) : Vec3::Zero();
   for (std::size_t i = 0; i < n; ++i) {
+    // Equal samples (a key the method reproduces bit for bit) have no error.
+    if (ref[i].coeffs() == test[i].coeffs()) {
+      angle[i] = 0.0;
+      out.swing.add(0.0);
+      out.twist.add(0.0);
+      continue;
+    }
     // e = q_ref⁻¹·q_test = (w, v), taken with w ≥ 0. Its angle is 2·atan2(|v|, w) —
     // the same number as angular_distance(ref, test), without its normalizations.
     // The twist about the axis is (w, p·axis)/n with p = v·axis, n = √(w² + p²); the
     // swing e·twist⁻¹ has real part n, so its angle is 2·atan2(|v − p·axis|, n).
     // These are the angles of core swing_twist(e, axis), in closed form (tested).
-    Quat e = ref[i].conjugate() * test[i];
-    const double en = e.norm();
-    if (!(en > 0.0) || !std::isfinite(en)) e = Quat::Identity(); else e.coeffs() /= en;
+    // All three are ratios, the same for any |e| (both inputs are unit to
+    // rounding): e is not normalized; only a zero or non-finite e reads as no error.
+    const Quat e = ref[i].conjugate() * test[i];
+    const double en2 = e.coeffs().squaredNorm();
+    if (!(en2 > 0.0) || !std::isfinite(en2)) {
+      angle[i] = 0.0;
+      out.swing.add(0.0);
+      out.twist.add(0.0);
+      continue;
+    }
     double w = e.w();
     Vec3 v = e.vec();
     if (w < 0.0) w = -w, v = -v;
     angle[i] = 2.0 * half_angle(v.norm(), w);
     const double p = v.dot(axis);
-    const double tw = std::sqrt(w * w + p * p);
-    if (!has_axis || tw < kSwingTwistDegenerate) {
+    const double tw2 = w * w + p * p;
+    if (!has_axis || tw2 < kSwingTwistDegenerate * kSwingTwistDegenerate * en2) {
       out.swing.add(angle[i]);  // no axis, or a swing within √ε of 180°: all swing
       out.twist.add(0.0);
     } else {
       out.twist.add(2.0 * half_angle(std::abs(p), w));
-      out.swing.add(2.0 * half_angle((v - p * axis).norm(), tw));
+      out.swing.add(2.0 * half_angle((v - p * axis).norm(), std::sqrt(tw2)));
     }
   }
   out.angle = error_stats(angle, n);
@@ -156,13 +170,18 @@ void accumulate_pose_error(const WorldPose& ref, const WorldPose& test, double s
     // Vertices p + R·(d·eᵢ): their displacement is dp + d·(R_ref − R_test)·eᵢ, the
     // columns of the difference of the two rotation matrices.
     const Mat3 dr = shell_distance * (ref.rotation[j].toRotationMatrix() - test.rotation[j].toRotationMatrix());
-    double worst = 0.0;
-    for (int c = 0; c < 3; ++c) worst = std::max(worst, (dp + dr.col(c)).norm());
-    acc.joint_shell[j].add(worst);
+    double worst2 = 0.0;
+    for (int c = 0; c < 3; ++c) worst2 = std::max(worst2, (dp + dr.col(c)).squaredNorm());
+    acc.joint_shell[j].add(std::sqrt(worst2));
   }
   const std::size_t m =
       std::min({ref.end_site_position.size(), test.end_site_position.size(), acc.end_site_position.size()});
   for (std::size_t e = 0; e < m; ++e) acc.end_site_position[e].add((ref.end_site_position[e] - test.end_site_position[e]).norm());
+}
+
+void accumulate_equal_poses(PoseError& acc) {
+  for (std::vector<RunningError>* v : {&acc.joint_position, &acc.joint_shell, &acc.end_site_position})
+    for (RunningError& e : *v) e.add(0.0);
 }
 
 // ---- smoothness ------------------------------------------------------------------------------

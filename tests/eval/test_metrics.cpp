@@ -221,6 +221,36 @@ TEST(Metrics, KnownBoneRotationMovesTheEndSiteByTheChord) {
   EXPECT_NEAR(acc.end_site_position[0].max, 2.0 * std::sin(0.25), 1e-12);  // the End Site lies on the axis
 }
 
+TEST(Metrics, EqualPosesCountAsZeroErrorSamples) {
+  // The shortcut for poses equal bit for bit gives the accumulators a full
+  // comparison gives, mixed with ordinary samples.
+  const Skeleton s = three_joint_arm(0.4);
+  std::vector<Quat> moved(3, Quat::Identity());
+  moved[1] = exp(RotVec(0.2, -0.1, 0.3));
+  const WorldPose rest = pose_of(s, std::vector<Quat>(3, Quat::Identity())), bent = pose_of(s, moved);
+  PoseError full = make_pose_error(s), quick = make_pose_error(s);
+  for (int k = 0; k < 3; ++k) {
+    accumulate_pose_error(rest, bent, 0.03, full);
+    accumulate_pose_error(rest, bent, 0.03, quick);
+    accumulate_pose_error(rest, rest, 0.03, full);
+    accumulate_equal_poses(quick);
+  }
+  auto same = [](const std::vector<RunningError>& a, const std::vector<RunningError>& b) {
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      EXPECT_EQ(a[i].count, b[i].count);
+      EXPECT_EQ(a[i].sum, b[i].sum);
+      EXPECT_EQ(a[i].sum_sq, b[i].sum_sq);
+      EXPECT_EQ(a[i].max, b[i].max);
+    }
+  };
+  same(full.joint_position, quick.joint_position);
+  same(full.joint_shell, quick.joint_shell);
+  same(full.end_site_position, quick.end_site_position);
+  EXPECT_EQ(quick.joint_position[2].count, 6u);
+  EXPECT_GT(quick.joint_position[2].max, 0.0);
+}
+
 TEST(Metrics, BoneAxisPointsToTheLongestChildOrContinuesTheParentBone) {
   Skeleton s = three_joint_arm(0.5);
   s.joints.push_back({"side", 0, Vec3(0.2, 0, 0), Quat::Identity(), {}});   // shorter child of root

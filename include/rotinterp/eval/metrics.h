@@ -113,6 +113,9 @@ PoseError make_pose_error(const Skeleton& skeleton);
 // Adds one sample: two world poses of the same skeleton (forward_kinematics output).
 // `shell_distance` in clip units (> 0).
 void accumulate_pose_error(const WorldPose& ref, const WorldPose& test, double shell_distance, PoseError& acc);
+// Adds one sample whose two poses are equal (every error 0) without computing them:
+// at the keys of a method that reproduces them bit for bit.
+void accumulate_equal_poses(PoseError& acc);
 
 // ---- smoothness -------------------------------------------------------------------------
 

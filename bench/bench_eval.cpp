@@ -9,8 +9,11 @@
 // the ratio eval/import (goal ≤ 2; also for the five seed methods alone), clip-frames per second, and the --jobs 2
 // speedup (goal ≥ 1.7 on a machine with two free cores); then where the time goes:
 // read_clip alone and each method alone beyond it (CPU seconds), and each method's
-// own ratio: read_clip plus that method, all four spacings, against the import.
+// own ratio: read_clip plus that method, all four spacings, against the import;
+// last, the floor: read_clip plus the seed methods' curves alone (built from the
+// keys, evaluated at every frame and key-jump stencil, no metric), against the import.
 #include "rotinterp/eval/batch.h"
+#include "rotinterp/eval/evaluate_clip.h"
 #include "rotinterp/eval/inputs.h"
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/io/read.h"
@@ -96,6 +99,25 @@ double eval_all(const std::vector<fs::path>& inputs, int jobs, const fs::path& o
   return s;
 }
 
+// CPU seconds of `method`'s curves alone over `refs`: for every clip, keep-every
+// 2, 4, 8, 16 and joint, built from the keys, evaluated at every frame and at the
+// key-jump stencils — what eval cannot skip whatever it measures; no reading, no metrics.
+double curves_alone(const std::vector<rotinterp::ClipReference>& refs, const std::string& method) {
+  const double c0 = cpu_seconds();
+  std::vector<rotinterp::Quat> out;
+  for (const rotinterp::ClipReference& ref : refs)
+    for (int keep : {2, 4, 8, 16})
+      for (std::size_t j = 0; j < ref.skeleton.joints.size(); ++j) {
+        const rotinterp::RotationTrack track = rotinterp::decimated_track(ref, j, keep);
+        auto curve = rotinterp::make_interpolator(method, track);
+        if (!curve) continue;
+        out.resize(ref.times.size());
+        (*curve)->evaluate(ref.times.data(), out.size(), out.data());
+        (void)rotinterp::key_jumps(**curve, track.times);
+      }
+  return cpu_seconds() - c0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -147,6 +169,19 @@ int main(int argc, char** argv) {
     }
     per_method.emplace_back(m.name, best - c_read);
   }
+  // The floor: the seed methods' curves alone, read_clip's cost added.
+  std::vector<rotinterp::ClipReference> refs;
+  for (const std::string& f : *files)
+    if (auto clip = rotinterp::read_clip(f))
+      if (auto ref = rotinterp::prepare_reference(*clip, f, {})) refs.push_back(std::move(*ref));
+  std::vector<std::pair<std::string, double>> floor_per_method;
+  double c_floor = 0.0;
+  for (const std::string& m : kSeedMethods) {
+    double best = 1e300;
+    for (int r = 0; r < repeat; ++r) best = std::min(best, curves_alone(refs, m));
+    floor_per_method.emplace_back(m, best);
+    c_floor += best;
+  }
   eval_all(inputs, 1, out, joint_frames, c);  // joint_frames of the full run again
   fs::remove_all(out);
   const std::size_t combos = rotinterp::methods().size() * 4;
@@ -166,5 +201,9 @@ int main(int argc, char** argv) {
   for (const auto& [name, cpu] : per_method)
     std::printf("  %-10s CPU beyond read_clip, 4 spacings: %7.3f s   alone (read_clip + method) / import: %.2f\n",
                 name.c_str(), cpu, (c_read + cpu) / c_import);
+  std::printf("the seed methods' curves alone (built, evaluated at every frame and key-jump stencil; no metrics):\n");
+  for (const auto& [name, cpu] : floor_per_method) std::printf("  %-10s %7.3f s CPU\n", name.c_str(), cpu);
+  std::printf("  read_clip + these curves: %.3f s CPU, ratio %.2f to the import: the floor under any metric set\n",
+              c_read + c_floor, (c_read + c_floor) / c_import);
   return 0;
 }

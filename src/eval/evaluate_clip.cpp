@@ -159,6 +159,19 @@ Result<ClipReference> prepare_reference(const Clip& clip, const std::string& cli
   return R;
 }
 
+RotationTrack decimated_track(const ClipReference& R, std::size_t joint, int keep_every) {
+  const std::vector<std::size_t> kf = key_frames(R.frames.size(), static_cast<std::size_t>(std::max(keep_every, 1)));
+  RotationTrack track;
+  track.times.resize(kf.size());
+  track.keys.resize(kf.size());
+  for (std::size_t i = 0; i < kf.size(); ++i) {
+    track.times[i] = R.frames[kf[i]];
+    track.keys[i] = R.original[joint][kf[i]];
+  }
+  track.make_sign_continuous();
+  return track;
+}
+
 Result<std::vector<ErrorRow>> evaluate_method(const ClipReference& R, const std::string& method,
                                               const ClipEvalOptions& options) {
   const Skeleton& skel = R.skeleton;
@@ -176,16 +189,10 @@ Result<std::vector<ErrorRow>> evaluate_method(const ClipReference& R, const std:
   std::vector<Vec3> local_t(nj);
   WorldPose test_world;
   for (int keep : options.keep_every) {
-    const std::vector<std::size_t> kf = key_frames(nf, static_cast<std::size_t>(keep));
-    RotationTrack track;
-    track.times.resize(kf.size());
-    for (std::size_t i = 0; i < kf.size(); ++i) track.times[i] = R.frames[kf[i]];
     std::vector<KeyJumps> jumps(nj);
     std::vector<Smoothness> smooth(nj);
     for (std::size_t j = 0; j < nj; ++j) {
-      track.keys.resize(kf.size());
-      for (std::size_t i = 0; i < kf.size(); ++i) track.keys[i] = R.original[j][kf[i]];
-      track.make_sign_continuous();
+      const RotationTrack track = decimated_track(R, j, keep);
       auto curve = make_interpolator(method, track);
       if (!curve)
         return make_error(R.clip_id + ": joint '" + skel.joints[j].name + "', method " + method + ": " + curve.error());

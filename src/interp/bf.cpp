@@ -229,12 +229,15 @@ class BfInterpolator final : public detail::SegmentInterpolator<BfInterpolator> 
 
     const bool newton = o.solver == BfSplineOptions::Solver::newton;
     std::vector<Vec3> r(nk), r_try(nk), d(nk), y(nk);
-    std::vector<std::array<Mat3, 3>> G(nk), G_try(nk);
+    std::vector<Quat> p(nk), p_try(nk);
+    std::vector<std::array<Mat3, 3>> G(nk);
     int short_steps = 0;
     std::vector<Mat3> Dinv(nk);
-    double worst = key_residuals(r, newton ? &G : nullptr);
+    double worst = key_misses(r, p);
     for (int it = 0; it < o.max_iterations && worst > o.tolerance; ++it) {
       if (newton) {
+        // The Jacobian only here, for a step still to take (not for the final misses).
+        key_jacobian(r, p, G);
         // Block Thomas on Σₖ Gⱼₖ δₖ = rⱼ (k = j−1, j, j+1).
         for (std::ptrdiff_t j = 0; j <= n; ++j) {
           Mat3 D = G[j][1];
@@ -262,9 +265,7 @@ class BfInterpolator final : public detail::SegmentInterpolator<BfInterpolator> 
       for (int halving = 0; halving <= 8; ++halving, lambda *= 0.5) {
         for (std::ptrdiff_t j = 0; j <= n; ++j) c_[j + 1] = apply_fixed(RotVec(lambda * d[j]), saved[j + 1]);
         reflect_ends();
-        // The Jacobian only with the full step (usually taken); a shorter accepted
-        // step gets it below.
-        tried = key_residuals(r_try, newton && halving == 0 ? &G_try : nullptr);
+        tried = key_misses(r_try, p_try);
         if (tried < worst) break;
       }
       if (!(tried < worst)) {  // no progress at any step length: keep the best
@@ -274,11 +275,7 @@ class BfInterpolator final : public detail::SegmentInterpolator<BfInterpolator> 
       short_steps = lambda < 1.0 / 16.0 ? short_steps + 1 : 0;
       worst = tried;
       std::swap(r, r_try);
-      if (newton && lambda == 1.0) {
-        std::swap(G, G_try);
-      } else if (newton) {
-        key_residuals(r, &G);
-      }
+      std::swap(p, p_try);
       if (newton && short_steps >= 3) break;
     }
     return worst;
@@ -373,30 +370,36 @@ class BfInterpolator final : public detail::SegmentInterpolator<BfInterpolator> 
     return average_iterate(c, N, 4, start, avg_, true).m;
   }
 
-  // Key misses rⱼ = log(qⱼ·pⱼ⁻¹) (fixed frame, pⱼ the curve at tⱼ) and, if G is
-  // given, their Jacobian w.r.t. fixed-frame control point corrections δ
-  // (cₖ ← exp(δₖ)·cₖ), with the phantom points' dependence folded in. Returns max |rⱼ|.
+  // Key misses rⱼ = log(qⱼ·pⱼ⁻¹) (fixed frame) and pⱼ, the curve at tⱼ. Returns max |rⱼ|.
+  double key_misses(std::vector<Vec3>& r, std::vector<Quat>& p) const {
+    double worst = 0.0;
+    for (std::size_t j = 0; j < k_.size(); ++j) {
+      p[j] = average3(&c_[j], weights_at_keys_[j].data());
+      r[j] = log(k_.q[j] * p[j].conjugate()).vec();
+      worst = std::max(worst, r[j].norm());
+    }
+    return worst;
+  }
+
+  // The Jacobian G of the misses r (at the curve points p) w.r.t. fixed-frame
+  // control point corrections δ (cₖ ← exp(δₖ)·cₖ), with the phantom points'
+  // dependence folded in:
   //   pⱼ moves by R(pⱼ)·H⁻¹·wₖJ_l⁻¹(vₖ)·R(pⱼ)ᵀ·δₖ (implicit function of
   //   Σ wₖ log(p⁻¹cₖ) = 0, H = Σ wₖJ_l⁻¹(vₖ)), and rⱼ by −J_r⁻¹(rⱼ) times that.
-  double key_residuals(std::vector<Vec3>& r, std::vector<std::array<Mat3, 3>>* G) const {
+  void key_jacobian(const std::vector<Vec3>& r, const std::vector<Quat>& p, std::vector<std::array<Mat3, 3>>& G) const {
     const auto n = static_cast<std::ptrdiff_t>(k_.size() - 1);
-    double worst = 0.0;
     for (std::ptrdiff_t j = 0; j <= n; ++j) {
       const Quat* c = &c_[static_cast<std::size_t>(j)];
       const double* w = weights_at_keys_[j].data();
-      const Quat p = average3(c, w);
-      r[j] = log(k_.q[j] * p.conjugate()).vec();
-      worst = std::max(worst, r[j].norm());
-      if (!G) continue;
-      const Quat pi = p.conjugate();
+      const Quat pi = p[j].conjugate();
       Mat3 H = Mat3::Zero(), Jinv[3];
       for (int k = 0; k < 3; ++k) {
         Jinv[k] = left_jacobian_inverse(log_s3(pi * c[k]));
         H += w[k] * Jinv[k];
       }
-      const Mat3 Rp = p.toRotationMatrix();
+      const Mat3 Rp = p[j].toRotationMatrix();
       const Mat3 front = detail::right_jacobian_inverse(r[j]) * Rp * H.inverse();
-      auto& g = (*G)[j];
+      auto& g = G[j];
       for (int k = 0; k < 3; ++k) g[k] = front * (w[k] * Jinv[k]) * Rp.transpose();
       if (j == 0) {  // c₋₁ = c₀c₁⁻¹c₀ moves by (I + P)δ₀ − Pδ₁, P = R(c₀c₁⁻¹)
         const Mat3 P = (c_[1] * c_[2].conjugate()).toRotationMatrix();
@@ -411,7 +414,6 @@ class BfInterpolator final : public detail::SegmentInterpolator<BfInterpolator> 
         g[2].setZero();
       }
     }
-    return worst;
   }
 
   Quat average3(const Quat* c, const double* w) const {

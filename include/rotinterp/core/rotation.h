@@ -96,18 +96,14 @@ Vec3 vee(const Mat3& m);
 // R³ → S³. Smooth everywhere, series branch below kExpSeriesThreshold.
 Quat exp(const RotVec& r);
 
-// atan x = x + x·x²·p(x²) for |x| ≤ 1/8, p(y) = −1/3 + y/5 − y²/7 + … + y⁷/17 (Horner):
+// atan x = x + x·x²·p(x²) for |x| ≤ 1/8, p(y) = −1/3 + y/5 − y²/7 + … + y⁷/17:
 // half_angle's series, also for callers that have x² but not x.
 inline double atan_series_tail(double x2) {
-  double p = 1.0 / 17.0;
-  p = p * x2 - 1.0 / 15.0;
-  p = p * x2 + 1.0 / 13.0;
-  p = p * x2 - 1.0 / 11.0;
-  p = p * x2 + 1.0 / 9.0;
-  p = p * x2 - 1.0 / 7.0;
-  p = p * x2 + 1.0 / 5.0;
-  p = p * x2 - 1.0 / 3.0;
-  return p;
+  // Estrin's scheme: four independent pairs, then two levels (a short dependency chain).
+  const double y2 = x2 * x2, y4 = y2 * y2;
+  const double p01 = -1.0 / 3.0 + x2 * (1.0 / 5.0), p23 = -1.0 / 7.0 + x2 * (1.0 / 9.0);
+  const double p45 = -1.0 / 11.0 + x2 * (1.0 / 13.0), p67 = -1.0 / 15.0 + x2 * (1.0 / 17.0);
+  return (p01 + y2 * p23) + y4 * (p45 + y2 * p67);
 }
 // atan2(s, w) for s ≥ 0: the half angle of a quaternion (w, v) with s = |v|, under
 // every log and every error angle. For 0 ≤ s ≤ w/8 (rotations below 14°: nearly all

@@ -2,6 +2,7 @@
 #include "rotinterp/io/read.h"
 
 #include "assimp_text.h"
+#include "clip_wire.h"
 #include "rotinterp/io/bvh.h"
 #include "rotinterp/io/info.h"
 
@@ -18,15 +19,18 @@
 #include <cctype>
 #include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <csignal>
 #include <cstring>
 #include <fstream>
 #include <map>
 #include <memory>
 #include <new>
+#include <optional>
 #include <set>
 #include <stdexcept>
 #include <sstream>
+#include <string_view>
 
 // assimp 5.2.5 as Debian ships it is built with its internal assertions on
 // (ASSIMP_BUILD_DEBUG), and a failed one aborts the whole process: its FBX
@@ -518,40 +522,160 @@ void configure(Assimp::Importer& importer, const ReadOptions& options) {
   importer.SetPropertyBool(AI_CONFIG_IMPORT_FBX_PRESERVE_PIVOTS, options.fold_fbx_helpers);
 }
 
-// ReadOptions::isolate_assimp: imports the file in a forked child that reports only
-// whether it got through the import and the scene's destruction (where assimp's
-// double free is). The child takes the default action for the signals the CLI
-// handles (so it never cleans up the parent's temporary files), writes nothing
-// to stderr, and leaves with
+// The part of load() that assimp does: the import, the animations and the clip
+// built from the scene. `info` comes with its format set.
+Status read_with_assimp(const fs::path& path, const ReadOptions& options, const std::string& ext, ClipFileInfo& info,
+                        const Warnings& warn) {
+  const std::string label = path.string();
+  Assimp::Importer importer;
+  configure(importer, options);
+  const aiScene* scene = nullptr;
+  std::string assimp_error;
+  try {
+    scene = importer.ReadFile(path.string(), 0);
+    if (!scene) assimp_error = one_line(importer.GetErrorString());
+  } catch (const std::bad_alloc&) {
+    assimp_error = "out of memory while importing";
+  } catch (const std::exception& e) {
+    assimp_error = one_line(e.what());
+  }
+  if (!scene) {
+    if (assimp_error.find("No suitable reader") != std::string::npos || assimp_error.empty())
+      return make_error(label + ": unknown or unsupported file format" + (ext.empty() ? "" : " ('." + ext + "')"));
+    return make_error(label + ": cannot read: " + assimp_error);
+  }
+  if (scene->mNumAnimations == 0) return make_error(label + ": the file has no animation");
+  for (unsigned a = 0; a < scene->mNumAnimations; ++a) {
+    const aiAnimation* an = scene->mAnimations[a];
+    AnimationSummary s;
+    s.name = an->mName.C_Str();
+    s.default_rate = !(an->mTicksPerSecond > 0.0);
+    s.ticks_per_second = s.default_rate ? kDefaultTicksPerSecond : an->mTicksPerSecond;
+    s.duration = an->mDuration / s.ticks_per_second;
+    s.channels = an->mNumChannels;
+    info.animations.push_back(s);
+  }
+  Result<std::size_t> sel = select_animation(scene, options.animation, label);
+  if (!sel) return make_error(sel.error());
+  info.selected = *sel;
+  const aiAnimation* anim = scene->mAnimations[info.selected];
+  const AnimationSummary& summary = info.animations[info.selected];
+  if (!std::isfinite(anim->mTicksPerSecond) || anim->mTicksPerSecond < 0.0)
+    return make_error(label + ": animation '" + summary.name + "' has an invalid tick rate");
+  if (summary.default_rate)
+    warn(label + ": animation '" + summary.name + "' gives 0 ticks per second; assuming " +
+         std::to_string(static_cast<int>(kDefaultTicksPerSecond)));
+  info.clip.name = summary.name.empty() ? path.stem().string() : summary.name;
+  return fill_scene(scene, anim, summary.ticks_per_second, info.clip, info.folded_helpers, warn, label);
+}
+
+bool write_all(int fd, std::string_view bytes) {
+  while (!bytes.empty()) {
+    const ssize_t put = ::write(fd, bytes.data(), bytes.size());
+    if (put < 0 && errno == EINTR) continue;
+    if (put <= 0) return false;
+    bytes.remove_prefix(static_cast<std::size_t>(put));
+  }
+  return true;
+}
+
+// A child's message: an 8-byte length, then that many bytes of clip_wire.h.
+// Read up to the announced length, not to end of file: a child forked meanwhile by
+// another thread holds a copy of the pipe's write end until it exits. Returns
+// false where the child stopped short (it crashed while writing).
+bool read_message(int fd, std::string& payload) {
+  std::string got;
+  std::uint64_t want = 0;
+  char chunk[1 << 16];
+  while (got.size() < sizeof want || got.size() - sizeof want < want) {
+    const ssize_t n = ::read(fd, chunk, sizeof chunk);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    got.append(chunk, static_cast<std::size_t>(n));
+    if (got.size() >= sizeof want) std::memcpy(&want, got.data(), sizeof want);
+  }
+  got.erase(0, sizeof want);
+  got.resize(static_cast<std::size_t>(want));
+  payload = std::move(got);
+  return true;
+}
+
+// ReadOptions::isolate_assimp: read_with_assimp runs in a forked child, which
+// sends what it read (clip_wire.h) through a pipe; this process never calls
+// assimp. assimp's double free is in the scene's destruction, which the child
+// finishes before it writes. The child takes the default action for the signals
+// the CLI handles (so it never cleans up the parent's temporary files), writes
+// nothing to stderr, keeps warnings for the parent to pass on, and leaves with
 // _exit (no atexit handlers, no flushing of inherited stdio buffers). A child that
-// dies, or exits non-zero (a sanitizer's report), makes the file refused.
-Status survives_assimp(const fs::path& path, const ReadOptions& options, const std::string& label) {
+// dies, exits non-zero (a sanitizer's report) or sends a garbled message makes the
+// file refused. nullopt: no pipe or no fork; the caller reads in-process.
+std::optional<Result<wire::ReadOutcome>> read_in_child(const fs::path& path, const ReadOptions& options,
+                                                       const std::string& ext, const ClipFileInfo& info) {
+  int fds[2];
+  if (::pipe2(fds, O_CLOEXEC) != 0) return std::nullopt;
   const pid_t pid = ::fork();
-  if (pid < 0) return Ok{};  // cannot fork: import in-process, as without isolation
+  if (pid < 0) {
+    ::close(fds[0]);
+    ::close(fds[1]);
+    return std::nullopt;
+  }
+  const std::string label = path.string();
   if (pid == 0) {
+    ::close(fds[0]);
     for (int sig : {SIGINT, SIGTERM, SIGHUP}) std::signal(sig, SIG_DFL);
     // Quiet: what the crash prints (glibc's "double free detected", a sanitizer's
     // report) is not the user's error message; the parent's one line is.
     if (const int null = ::open("/dev/null", O_WRONLY); null >= 0) ::dup2(null, STDERR_FILENO);
-    {
-      Assimp::Importer importer;
-      configure(importer, options);
-      try {
-        importer.ReadFile(path.string(), 0);
-      } catch (...) {
-      }
+    wire::ReadOutcome out;
+    out.info = info;
+    const Warnings keep{nullptr, &out.info.warnings};
+    // The texts inspect_clip gives these in-process.
+    try {
+      if (Status st = read_with_assimp(path, options, ext, out.info, keep); !st) out.error = st.error();
+    } catch (const std::bad_alloc&) {
+      out.error = label + ": out of memory while reading";
+    } catch (const std::exception& e) {
+      out.error = label + ": " + one_line(e.what());
     }
-    ::_exit(0);
+    if (out.error) {
+      ClipFileInfo warnings_only;
+      warnings_only.warnings = std::move(out.info.warnings);
+      out.info = std::move(warnings_only);
+    }
+    const std::string payload = wire::encode(out);
+    const std::uint64_t size = payload.size();
+    const bool sent = write_all(fds[1], std::string_view(reinterpret_cast<const char*>(&size), sizeof size)) &&
+                      write_all(fds[1], payload);
+    ::_exit(sent ? 0 : 1);
   }
+  ::close(fds[1]);
+  std::string payload;
+  bool whole = false;
+  bool out_of_memory = false;  // rethrown once the child is reaped
+  try {
+    whole = read_message(fds[0], payload);  // before waitpid: a big clip fills the pipe
+  } catch (const std::bad_alloc&) {
+    out_of_memory = true;
+  }
+  ::close(fds[0]);
   int status = 0;
+  bool waited = true;
   while (::waitpid(pid, &status, 0) < 0) {
-    if (errno != EINTR) return Ok{};
+    if (errno != EINTR) {
+      waited = false;
+      break;
+    }
   }
-  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return Ok{};
-  const std::string how = WIFSIGNALED(status) ? std::string("signal ") + std::to_string(WTERMSIG(status)) + ", " +
-                                                    ::strsignal(WTERMSIG(status))
-                                              : "exit status " + std::to_string(WEXITSTATUS(status));
-  return make_error(label + ": assimp crashed importing this file (" + how + "); refused");
+  if (out_of_memory) throw std::bad_alloc();
+  std::string how;
+  if (waited && WIFSIGNALED(status))
+    how = std::string("signal ") + std::to_string(WTERMSIG(status)) + ", " + ::strsignal(WTERMSIG(status));
+  else if (waited && WIFEXITED(status) && WEXITSTATUS(status) != 0)
+    how = "exit status " + std::to_string(WEXITSTATUS(status));
+  if (how.empty() && whole)
+    if (Result<wire::ReadOutcome> got = wire::decode(payload)) return got;
+  if (how.empty()) how = "its report was cut short or garbled";
+  return Result<wire::ReadOutcome>(make_error(label + ": assimp crashed importing this file (" + how + "); refused"));
 }
 
 Result<ClipFileInfo> load(const fs::path& path, const ReadOptions& options) {
@@ -585,32 +709,22 @@ Result<ClipFileInfo> load(const fs::path& path, const ReadOptions& options) {
            " declared frames ignored");
   }
 
-  // assimp: every format but BVH; for BVH only as the optional cross-check.
-  Assimp::Importer importer;
-  configure(importer, options);
-  const aiScene* scene = nullptr;
-  std::string assimp_error;
-  if (!bvh || options.cross_check_with_assimp) {
-    if (!bvh) {
-      if (ext == "fbx") {  // only FBX has a pre-check: read it for that alone
-        FileText text;
-        if (Status s = text.open(path, label); !s) return make_error(s.error());
-        if (Status s = check_fbx_before_assimp(text.text(), label); !s) return make_error(s.error());
-      }
-      if (options.isolate_assimp)
-        if (Status s = survives_assimp(path, options, label); !s) return make_error(s.error());
-    }
-    try {
-      scene = importer.ReadFile(path.string(), 0);
-      if (!scene) assimp_error = one_line(importer.GetErrorString());
-    } catch (const std::bad_alloc&) {
-      assimp_error = "out of memory while importing";
-    } catch (const std::exception& e) {
-      assimp_error = one_line(e.what());
-    }
-  }
-
   if (bvh) {
+    // assimp for BVH only as the optional cross-check.
+    Assimp::Importer importer;
+    configure(importer, options);
+    const aiScene* scene = nullptr;
+    std::string assimp_error;
+    if (options.cross_check_with_assimp) {
+      try {
+        scene = importer.ReadFile(path.string(), 0);
+        if (!scene) assimp_error = one_line(importer.GetErrorString());
+      } catch (const std::bad_alloc&) {
+        assimp_error = "out of memory while importing";
+      } catch (const std::exception& e) {
+        assimp_error = one_line(e.what());
+      }
+    }
     AnimationSummary s{"", static_cast<double>(bvh->frames - 1) * bvh->frame_time, 1.0 / bvh->frame_time, false,
                        bvh->joints.size()};
     const aiAnimation* anim = nullptr;
@@ -630,35 +744,22 @@ Result<ClipFileInfo> load(const fs::path& path, const ReadOptions& options) {
     if (Status st = fill_bvh(*bvh, anim, info.clip, warn, label); !st) return make_error(st.error());
     info.clip.name = path.stem().string();
   } else {
-    if (!scene) {
-      if (assimp_error.find("No suitable reader") != std::string::npos || assimp_error.empty())
-        return make_error(label + ": unknown or unsupported file format" + (ext.empty() ? "" : " ('." + ext + "')"));
-      return make_error(label + ": cannot read: " + assimp_error);
+    if (ext == "fbx") {  // only FBX has a pre-check: read it for that alone
+      FileText text;
+      if (Status s = text.open(path, label); !s) return make_error(s.error());
+      if (Status s = check_fbx_before_assimp(text.text(), label); !s) return make_error(s.error());
     }
-    if (scene->mNumAnimations == 0) return make_error(label + ": the file has no animation");
-    for (unsigned a = 0; a < scene->mNumAnimations; ++a) {
-      const aiAnimation* an = scene->mAnimations[a];
-      AnimationSummary s;
-      s.name = an->mName.C_Str();
-      s.default_rate = !(an->mTicksPerSecond > 0.0);
-      s.ticks_per_second = s.default_rate ? kDefaultTicksPerSecond : an->mTicksPerSecond;
-      s.duration = an->mDuration / s.ticks_per_second;
-      s.channels = an->mNumChannels;
-      info.animations.push_back(s);
+    std::optional<Result<wire::ReadOutcome>> child;
+    if (options.isolate_assimp) child = read_in_child(path, options, ext, info);
+    if (!child) {
+      if (Status st = read_with_assimp(path, options, ext, info, warn); !st) return make_error(st.error());
+    } else {
+      if (!*child) return make_error(child->error());
+      info = std::move((*child)->info);
+      for (const std::string& w : info.warnings)
+        if (options.on_warning) options.on_warning(w);
+      if ((*child)->error) return make_error(*(*child)->error);
     }
-    Result<std::size_t> sel = select_animation(scene, options.animation, label);
-    if (!sel) return make_error(sel.error());
-    info.selected = *sel;
-    const aiAnimation* anim = scene->mAnimations[info.selected];
-    const AnimationSummary& summary = info.animations[info.selected];
-    if (!std::isfinite(anim->mTicksPerSecond) || anim->mTicksPerSecond < 0.0)
-      return make_error(label + ": animation '" + summary.name + "' has an invalid tick rate");
-    if (summary.default_rate)
-      warn(label + ": animation '" + summary.name + "' gives 0 ticks per second; assuming " +
-           std::to_string(static_cast<int>(kDefaultTicksPerSecond)));
-    info.clip.name = summary.name.empty() ? path.stem().string() : summary.name;
-    if (Status st = fill_scene(scene, anim, summary.ticks_per_second, info.clip, info.folded_helpers, warn, label); !st)
-      return make_error(st.error());
   }
   info.clip.source_format = info.format;
   if (Status s = info.clip.validate(); !s) return make_error(label + ": " + s.error());

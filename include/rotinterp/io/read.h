@@ -52,11 +52,14 @@ struct ReadOptions {
   // always comes from our own pass, which validates the whole file by itself, and
   // assimp's import costs more than the rest of a BVH read (README "Formats").
   bool cross_check_with_assimp = false;
-  // Import every file meant for assimp once first in a forked child process, and
-  // refuse the file if that child dies. assimp 5.2.5 has memory bugs that end the
-  // process on some malformed files (a double free in ~aiScene on a 6-byte
-  // corruption of a real FBX): with this on, such a file is one error in a batch
-  // instead of the end of it. Costs one more import of each non-BVH file.
+  // Read every file meant for assimp (import and clip building) in a forked child
+  // process that sends the result back through a pipe, and refuse the file if that
+  // child dies. assimp 5.2.5 has memory bugs that end the process on some malformed
+  // files (a double free in ~aiScene on a 6-byte corruption of a real FBX): with
+  // this on, such a file is one error in a batch instead of the end of it. The file
+  // is still imported once; the isolation costs a fork and a copy of the clip per
+  // non-BVH file (README "Cost"). Warnings reach on_warning when the child is done,
+  // in the same order.
   bool isolate_assimp = true;
 };
 

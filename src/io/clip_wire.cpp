@@ -1,0 +1,265 @@
+// The reader's private wire format (clip_wire.h): fixed-size integers and raw
+// doubles, strings and arrays as a count followed by their items.
+#include "clip_wire.h"
+
+#include <cstdint>
+#include <cstring>
+#include <limits>
+
+namespace rotinterp::wire {
+
+namespace {
+
+// Also the format's version: bytes from another build fail here, not in a field.
+constexpr std::string_view kMagic = "rotinterp-clip-wire-1";
+
+class Writer {
+ public:
+  void u8(std::uint8_t v) { bytes_.push_back(static_cast<char>(v)); }
+  void u64(std::uint64_t v) { raw(&v, sizeof v); }
+  void i64(std::int64_t v) { raw(&v, sizeof v); }
+  void f64(double v) { raw(&v, sizeof v); }
+  void str(std::string_view s) {
+    u64(s.size());
+    bytes_.append(s);
+  }
+  void vec3(const Vec3& v) {
+    for (int i = 0; i < 3; ++i) f64(v[i]);
+  }
+  void quat(const Quat& q) {
+    f64(q.w());
+    f64(q.x());
+    f64(q.y());
+    f64(q.z());
+  }
+  void raw(const void* p, std::size_t n) { bytes_.append(static_cast<const char*>(p), n); }
+  std::string take() { return std::move(bytes_); }
+
+ private:
+  std::string bytes_;
+};
+
+// Every read is bounds-checked. After the first failure nothing more is read and
+// every value is 0, so the decoding loops end at once.
+class Reader {
+ public:
+  explicit Reader(std::string_view bytes) : bytes_(bytes) {}
+  bool failed() const { return failed_; }
+  bool at_end() const { return at_ == bytes_.size(); }
+  void fail() {
+    failed_ = true;
+    at_ = bytes_.size();
+  }
+
+  std::uint8_t u8() {
+    std::uint8_t v = 0;
+    raw(&v, sizeof v);
+    return v;
+  }
+  std::uint64_t u64() {
+    std::uint64_t v = 0;
+    raw(&v, sizeof v);
+    return v;
+  }
+  double f64() {
+    double v = 0.0;
+    raw(&v, sizeof v);
+    return v;
+  }
+  bool flag() {
+    const std::uint8_t v = u8();
+    if (v > 1) fail();
+    return v == 1;
+  }
+  std::size_t size() {
+    const std::uint64_t v = u64();
+    if constexpr (sizeof(std::size_t) < sizeof v)
+      if (v > std::numeric_limits<std::size_t>::max()) fail();
+    return failed_ ? 0 : static_cast<std::size_t>(v);
+  }
+  int index() {
+    std::int64_t v = 0;
+    raw(&v, sizeof v);
+    if (v < std::numeric_limits<int>::min() || v > std::numeric_limits<int>::max()) fail();
+    return failed_ ? 0 : static_cast<int>(v);
+  }
+  // A count of items of at least `min_bytes` each. Never trusted: more items than
+  // the bytes left can hold is garbage, not a reason to allocate.
+  std::size_t count(std::size_t min_bytes) {
+    const std::uint64_t n = u64();
+    if (n > (bytes_.size() - at_) / min_bytes) fail();
+    return failed_ ? 0 : static_cast<std::size_t>(n);
+  }
+  std::string str() {
+    const std::size_t n = count(1);
+    std::string s(bytes_.substr(at_, n));
+    at_ += n;
+    return s;
+  }
+  Vec3 vec3() {
+    Vec3 v;
+    for (int i = 0; i < 3; ++i) v[i] = f64();
+    return v;
+  }
+  Quat quat() {
+    const double w = f64();
+    const double x = f64();
+    const double y = f64();
+    const double z = f64();
+    return Quat(w, x, y, z);
+  }
+
+ private:
+  void raw(void* p, std::size_t n) {
+    if (failed_ || bytes_.size() - at_ < n) return fail();
+    std::memcpy(p, bytes_.data() + at_, n);
+    at_ += n;
+  }
+
+  std::string_view bytes_;
+  std::size_t at_ = 0;
+  bool failed_ = false;
+};
+
+// Smallest encoded sizes, for Reader::count.
+constexpr std::size_t kCount = 8, kDouble = 8, kVec3 = 3 * kDouble, kQuat = 4 * kDouble;
+constexpr std::size_t kString = kCount;
+
+void put(Writer& w, const std::vector<double>& v) {
+  w.u64(v.size());
+  for (double x : v) w.f64(x);
+}
+void get(Reader& r, std::vector<double>& v) {
+  v.resize(r.count(kDouble));
+  for (double& x : v) x = r.f64();
+}
+
+void put(Writer& w, const Clip& clip) {
+  w.str(clip.name);
+  w.u64(clip.skeleton.joints.size());
+  for (const Joint& j : clip.skeleton.joints) {
+    w.str(j.name);
+    w.i64(j.parent);
+    w.vec3(j.offset);
+    w.quat(j.rest_rotation);
+    w.u64(j.channels.size());
+    for (Channel c : j.channels) w.u8(static_cast<std::uint8_t>(c));
+  }
+  w.u64(clip.skeleton.end_sites.size());
+  for (const EndSite& e : clip.skeleton.end_sites) {
+    w.i64(e.parent);
+    w.vec3(e.offset);
+    w.str(e.name);
+  }
+  w.u64(clip.rotations.size());
+  for (const RotationTrack& t : clip.rotations) {
+    put(w, t.times);
+    w.u64(t.keys.size());
+    for (const Quat& q : t.keys) w.quat(q);
+  }
+  w.u64(clip.translations.size());
+  for (const std::optional<TranslationTrack>& t : clip.translations) {
+    w.u8(t.has_value());
+    if (!t) continue;
+    put(w, t->times);
+    w.u64(t->keys.size());
+    for (const Vec3& v : t->keys) w.vec3(v);
+  }
+  w.f64(clip.frame_time);
+  w.str(clip.frame_time_text);
+  w.f64(clip.unit_scale);
+  w.str(clip.source_format);
+}
+
+void get(Reader& r, Clip& clip) {
+  clip.name = r.str();
+  clip.skeleton.joints.resize(r.count(kString + 8 + kVec3 + kQuat + kCount));
+  for (Joint& j : clip.skeleton.joints) {
+    j.name = r.str();
+    j.parent = r.index();
+    j.offset = r.vec3();
+    j.rest_rotation = r.quat();
+    j.channels.resize(r.count(1));
+    for (Channel& c : j.channels) {
+      const std::uint8_t v = r.u8();
+      if (v > static_cast<std::uint8_t>(Channel::Zrotation)) r.fail();
+      c = static_cast<Channel>(v);
+    }
+  }
+  clip.skeleton.end_sites.resize(r.count(8 + kVec3 + kString));
+  for (EndSite& e : clip.skeleton.end_sites) {
+    e.parent = r.index();
+    e.offset = r.vec3();
+    e.name = r.str();
+  }
+  clip.rotations.resize(r.count(2 * kCount));
+  for (RotationTrack& t : clip.rotations) {
+    get(r, t.times);
+    t.keys.resize(r.count(kQuat));
+    for (Quat& q : t.keys) q = r.quat();
+  }
+  clip.translations.resize(r.count(1));
+  for (std::optional<TranslationTrack>& t : clip.translations) {
+    if (!r.flag()) continue;
+    t.emplace();
+    get(r, t->times);
+    t->keys.resize(r.count(kVec3));
+    for (Vec3& v : t->keys) v = r.vec3();
+  }
+  clip.frame_time = r.f64();
+  clip.frame_time_text = r.str();
+  clip.unit_scale = r.f64();
+  clip.source_format = r.str();
+}
+
+}  // namespace
+
+std::string encode(const ReadOutcome& outcome) {
+  Writer w;
+  w.raw(kMagic.data(), kMagic.size());
+  w.u8(outcome.error.has_value());
+  if (outcome.error) w.str(*outcome.error);
+  const ClipFileInfo& info = outcome.info;
+  w.str(info.format);
+  w.u64(info.animations.size());
+  for (const AnimationSummary& a : info.animations) {
+    w.str(a.name);
+    w.f64(a.duration);
+    w.f64(a.ticks_per_second);
+    w.u8(a.default_rate);
+    w.u64(a.channels);
+  }
+  w.u64(info.selected);
+  put(w, info.clip);
+  w.u64(info.warnings.size());
+  for (const std::string& s : info.warnings) w.str(s);
+  w.u64(info.folded_helpers);
+  return w.take();
+}
+
+Result<ReadOutcome> decode(std::string_view bytes) {
+  if (bytes.substr(0, kMagic.size()) != kMagic) return make_error("not a rotinterp clip record");
+  Reader r(bytes.substr(kMagic.size()));
+  ReadOutcome out;
+  if (r.flag()) out.error = r.str();
+  ClipFileInfo& info = out.info;
+  info.format = r.str();
+  info.animations.resize(r.count(kString + 2 * kDouble + 1 + 8));
+  for (AnimationSummary& a : info.animations) {
+    a.name = r.str();
+    a.duration = r.f64();
+    a.ticks_per_second = r.f64();
+    a.default_rate = r.flag();
+    a.channels = r.size();
+  }
+  info.selected = r.size();
+  get(r, info.clip);
+  info.warnings.resize(r.count(kString));
+  for (std::string& s : info.warnings) s = r.str();
+  info.folded_helpers = r.size();
+  if (r.failed()) return make_error("clip record cut short or garbled");
+  if (!r.at_end()) return make_error("clip record followed by stray bytes");
+  return out;
+}
+
+}  // namespace rotinterp::wire

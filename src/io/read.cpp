@@ -522,6 +522,21 @@ void configure(Assimp::Importer& importer, const ReadOptions& options) {
   importer.SetPropertyBool(AI_CONFIG_IMPORT_FBX_PRESERVE_PIVOTS, options.fold_fbx_helpers);
 }
 
+// importer.ReadFile, with its failures (an error string, out of memory, our throwing
+// assertion handler) as one line in `error`; nullptr then.
+const aiScene* import_scene(Assimp::Importer& importer, const fs::path& path, std::string& error) {
+  try {
+    const aiScene* scene = importer.ReadFile(path.string(), 0);
+    if (!scene) error = one_line(importer.GetErrorString());
+    return scene;
+  } catch (const std::bad_alloc&) {
+    error = "out of memory while importing";
+  } catch (const std::exception& e) {
+    error = one_line(e.what());
+  }
+  return nullptr;
+}
+
 // The part of load() that assimp does: the import, the animations and the clip
 // built from the scene. `info` comes with its format set.
 Status read_with_assimp(const fs::path& path, const ReadOptions& options, const std::string& ext, ClipFileInfo& info,
@@ -529,16 +544,8 @@ Status read_with_assimp(const fs::path& path, const ReadOptions& options, const 
   const std::string label = path.string();
   Assimp::Importer importer;
   configure(importer, options);
-  const aiScene* scene = nullptr;
   std::string assimp_error;
-  try {
-    scene = importer.ReadFile(path.string(), 0);
-    if (!scene) assimp_error = one_line(importer.GetErrorString());
-  } catch (const std::bad_alloc&) {
-    assimp_error = "out of memory while importing";
-  } catch (const std::exception& e) {
-    assimp_error = one_line(e.what());
-  }
+  const aiScene* scene = import_scene(importer, path, assimp_error);
   if (!scene) {
     if (assimp_error.find("No suitable reader") != std::string::npos || assimp_error.empty())
       return make_error(label + ": unknown or unsupported file format" + (ext.empty() ? "" : " ('." + ext + "')"));
@@ -713,18 +720,8 @@ Result<ClipFileInfo> load(const fs::path& path, const ReadOptions& options) {
     // assimp for BVH only as the optional cross-check.
     Assimp::Importer importer;
     configure(importer, options);
-    const aiScene* scene = nullptr;
     std::string assimp_error;
-    if (options.cross_check_with_assimp) {
-      try {
-        scene = importer.ReadFile(path.string(), 0);
-        if (!scene) assimp_error = one_line(importer.GetErrorString());
-      } catch (const std::bad_alloc&) {
-        assimp_error = "out of memory while importing";
-      } catch (const std::exception& e) {
-        assimp_error = one_line(e.what());
-      }
-    }
+    const aiScene* scene = options.cross_check_with_assimp ? import_scene(importer, path, assimp_error) : nullptr;
     AnimationSummary s{"", static_cast<double>(bvh->frames - 1) * bvh->frame_time, 1.0 / bvh->frame_time, false,
                        bvh->joints.size()};
     const aiAnimation* anim = nullptr;

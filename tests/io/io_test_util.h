@@ -42,4 +42,31 @@ Clip resample_uniform(const Clip& clip, double frame_time);
 // (a skeleton size for relative tolerances).
 double skeleton_size(const Clip& clip);
 
+// A DirectX .x scene: a child frame 2 units up (its x axis scaled by `child_x_scale`),
+// turned 0°, 90°, 180° about X at ticks 0, 10, 20, with AnimTicksPerSecond 0.
+inline std::string zero_rate_x_scene(const std::string& child_x_scale = "1.0") {
+  return R"(xof 0302txt 0032
+Frame Root {
+  FrameTransformMatrix { 1.0,0.0,0.0,0.0, 0.0,1.0,0.0,0.0, 0.0,0.0,1.0,0.0, 0.0,0.0,0.0,1.0;; }
+  Frame Child {
+    FrameTransformMatrix { )" +
+         child_x_scale + R"(,0.0,0.0,0.0, 0.0,1.0,0.0,0.0, 0.0,0.0,1.0,0.0, 0.0,2.0,0.0,1.0;; }
+  }
+}
+AnimTicksPerSecond { 0; }
+AnimationSet Wave {
+  Animation {
+    { Child }
+    AnimationKey {
+      0;
+      3;
+      0;4;1.0,0.0,0.0,0.0;;,
+      10;4;0.7071068,0.7071068,0.0,0.0;;,
+      20;4;0.0,1.0,0.0,0.0;;;
+    }
+  }
+}
+)";
+}
+
 }  // namespace rotinterp::test

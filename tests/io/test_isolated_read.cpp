@@ -88,32 +88,10 @@ TEST(IsolatedRead, ErrorsAreTheSameAsInProcess) {
   for (const char* name : {"garbage.fbx", "unknown.xyz", "still.obj"}) EXPECT_FALSE(expect_same_reading(dir / name));
 }
 
-// A DirectX .x scene with AnimTicksPerSecond 0: a warning, then a clip.
-const char* kZeroRateX = R"(xof 0302txt 0032
-Frame Root {
-  FrameTransformMatrix { 1.0,0.0,0.0,0.0, 0.0,1.0,0.0,0.0, 0.0,0.0,1.0,0.0, 0.0,0.0,0.0,1.0;; }
-  Frame Child {
-    FrameTransformMatrix { 2.0,0.0,0.0,0.0, 0.0,1.0,0.0,0.0, 0.0,0.0,1.0,0.0, 0.0,2.0,0.0,1.0;; }
-  }
-}
-AnimTicksPerSecond { 0; }
-AnimationSet Wave {
-  Animation {
-    { Child }
-    AnimationKey {
-      0;
-      3;
-      0;4;1.0,0.0,0.0,0.0;;,
-      10;4;0.7071068,0.7071068,0.0,0.0;;,
-      20;4;0.0,1.0,0.0,0.0;;;
-    }
-  }
-}
-)";
-
 TEST(IsolatedRead, WarningsReachTheCallerInTheSameOrder) {
   test::TempDir dir;
-  test::write_text(dir / "zero_rate.x", kZeroRateX);
+  // A zero tick rate and a non-uniform scale: two warnings, then a clip.
+  test::write_text(dir / "zero_rate.x", test::zero_rate_x_scene("2.0"));
   ASSERT_TRUE(expect_same_reading(dir / "zero_rate.x"));
   std::vector<std::string> warnings;
   ReadOptions options;

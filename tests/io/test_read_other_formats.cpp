@@ -9,34 +9,10 @@
 namespace rotinterp {
 namespace {
 
-// A DirectX .x scene: a child frame 2 units up, turned 0°, 90°, 180° about X at
-// ticks 0, 10, 20 with AnimTicksPerSecond 0.
-const char* kZeroRateX = R"(xof 0302txt 0032
-Frame Root {
-  FrameTransformMatrix { 1.0,0.0,0.0,0.0, 0.0,1.0,0.0,0.0, 0.0,0.0,1.0,0.0, 0.0,0.0,0.0,1.0;; }
-  Frame Child {
-    FrameTransformMatrix { 1.0,0.0,0.0,0.0, 0.0,1.0,0.0,0.0, 0.0,0.0,1.0,0.0, 0.0,2.0,0.0,1.0;; }
-  }
-}
-AnimTicksPerSecond { 0; }
-AnimationSet Wave {
-  Animation {
-    { Child }
-    AnimationKey {
-      0;
-      3;
-      0;4;1.0,0.0,0.0,0.0;;,
-      10;4;0.7071068,0.7071068,0.0,0.0;;,
-      20;4;0.0,1.0,0.0,0.0;;;
-    }
-  }
-}
-)";
-
 TEST(OtherFormats, ZeroTicksPerSecondGetsTheDefaultRateAndAWarning) {
   test::TempDir dir;
   const auto path = dir / "wave.x";
-  test::write_text(path, kZeroRateX);
+  test::write_text(path, test::zero_rate_x_scene());
   std::vector<std::string> warnings;
   ReadOptions options;
   options.on_warning = [&](const std::string& w) { warnings.push_back(w); };
@@ -67,7 +43,7 @@ TEST(OtherFormats, ZeroTicksPerSecondGetsTheDefaultRateAndAWarning) {
 TEST(OtherFormats, StaticSceneIsRefusedWithAClearMessage) {
   test::TempDir dir;
   const auto path = dir / "still.x";
-  std::string text = kZeroRateX;
+  std::string text = test::zero_rate_x_scene();
   text = text.substr(0, text.find("AnimTicksPerSecond"));
   test::write_text(path, text);
   Result<Clip> c = read_clip(path);

@@ -104,7 +104,7 @@ double eval_all(const std::vector<fs::path>& inputs, int jobs, const fs::path& o
 // key-jump stencils — what eval cannot skip whatever it measures; no reading, no metrics.
 double curves_alone(const std::vector<rotinterp::ClipReference>& refs, const std::string& method) {
   const double c0 = cpu_seconds();
-  std::vector<rotinterp::Quat> out;
+  std::vector<rotinterp::Quat> out, at_keys;
   for (const rotinterp::ClipReference& ref : refs)
     for (int keep : {2, 4, 8, 16})
       for (std::size_t j = 0; j < ref.skeleton.joints.size(); ++j) {
@@ -113,7 +113,11 @@ double curves_alone(const std::vector<rotinterp::ClipReference>& refs, const std
         if (!curve) continue;
         out.resize(ref.times.size());
         (*curve)->evaluate(ref.times.data(), out.size(), out.data());
-        (void)rotinterp::key_jumps(**curve, track.times);
+        // The stencils' centres are among the frames, as in evaluate_method.
+        const std::vector<std::size_t> kf = rotinterp::key_frames(ref.frames.size(), keep);
+        at_keys.resize(kf.size());
+        for (std::size_t i = 0; i < kf.size(); ++i) at_keys[i] = out[kf[i] * ref.per_frame];
+        (void)rotinterp::key_jumps(**curve, track.times, at_keys.data());
       }
   return cpu_seconds() - c0;
 }

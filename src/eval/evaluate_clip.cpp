@@ -69,15 +69,15 @@ void sample_translation(const TranslationTrack& track, const std::vector<double>
   sample_track(track, times, out, [](const Vec3& a, const Vec3& b, double u) -> Vec3 { return a + u * (b - a); });
 }
 
-// Key frames for keep_every n: 0, n, 2n, … and the last.
-std::vector<std::size_t> key_frames(std::size_t frames, std::size_t n) {
+}  // namespace
+
+std::vector<std::size_t> key_frames(std::size_t frames, int keep_every) {
+  const auto n = static_cast<std::size_t>(std::max(keep_every, 1));
   std::vector<std::size_t> k;
   for (std::size_t i = 0; i < frames; i += n) k.push_back(i);
   if (frames > 0 && k.back() != frames - 1) k.push_back(frames - 1);
   return k;
 }
-
-}  // namespace
 
 Result<ClipReference> prepare_reference(const Clip& clip, const std::string& clip_id,
                                         const ClipEvalOptions& options) {
@@ -160,7 +160,7 @@ Result<ClipReference> prepare_reference(const Clip& clip, const std::string& cli
 }
 
 RotationTrack decimated_track(const ClipReference& R, std::size_t joint, int keep_every) {
-  const std::vector<std::size_t> kf = key_frames(R.frames.size(), static_cast<std::size_t>(std::max(keep_every, 1)));
+  const std::vector<std::size_t> kf = key_frames(R.frames.size(), keep_every);
   RotationTrack track;
   track.times.resize(kf.size());
   track.keys.resize(kf.size());
@@ -188,7 +188,10 @@ Result<std::vector<ErrorRow>> evaluate_method(const ClipReference& R, const std:
   std::vector<Quat> local_r(nj);
   std::vector<Vec3> local_t(nj);
   WorldPose test_world;
+  std::vector<Quat> at_keys;
   for (int keep : options.keep_every) {
+    const std::vector<std::size_t> kf = key_frames(nf, keep);
+    at_keys.resize(kf.size());
     std::vector<KeyJumps> jumps(nj);
     std::vector<Smoothness> smooth(nj);
     for (std::size_t j = 0; j < nj; ++j) {
@@ -197,7 +200,9 @@ Result<std::vector<ErrorRow>> evaluate_method(const ClipReference& R, const std:
       if (!curve)
         return make_error(R.clip_id + ": joint '" + skel.joints[j].name + "', method " + method + ": " + curve.error());
       (*curve)->evaluate(R.times.data(), ns, test[j].data());
-      jumps[j] = key_jumps(**curve, track.times);
+      // The curve at its keys is among the samples (frame kf[i] is sample kf[i]·per_frame).
+      for (std::size_t i = 0; i < kf.size(); ++i) at_keys[i] = test[j][kf[i] * R.per_frame];
+      jumps[j] = key_jumps(**curve, track.times, at_keys.data());
       smooth[j] = sampled_smoothness(test[j].data(), ns, R.sample_dt);
     }
     PoseError pose = make_pose_error(skel);

@@ -204,26 +204,36 @@ Smoothness sampled_smoothness(const Quat* q, std::size_t n, double dt) {
   return s;
 }
 
-KeyJumps key_jumps(const Interpolator& curve, const std::vector<double>& key_times) {
+KeyJumps key_jumps(const Interpolator& curve, const std::vector<double>& key_times, const Quat* at_keys) {
   KeyJumps out;
   if (key_times.size() < 3) return out;
-  // Five points t − 2h … t + 2h around every interior key, all in one sorted batch
-  // (h is far below half a key interval, so the stencils do not overlap).
+  // Five points t − 2h … t + 2h around every interior key (four when the caller
+  // has the centres), all in one sorted batch (h is far below half a key interval,
+  // so the stencils do not overlap).
   const std::size_t nk = key_times.size() - 2;
-  std::vector<double> times(5 * nk), step(nk);
+  const int per = at_keys ? 4 : 5;
+  std::vector<double> times(per * nk), step(nk);
   for (std::size_t k = 0; k < nk; ++k) {
     const double t = key_times[k + 1];
     const double interval = std::min(t - key_times[k], key_times[k + 2] - t);
     const double h = (interval > 0.0 && std::isfinite(interval)) ? kKeyJumpStep * interval : 0.0;
     step[k] = h;
-    for (int i = 0; i < 5; ++i) times[5 * k + i] = t + (i - 2) * h;
+    double* at = &times[per * k];
+    for (int i = -2; i <= 2; ++i)
+      if (i != 0 || !at_keys) *at++ = t + i * h;
   }
   std::vector<Quat> q(times.size());
   curve.evaluate(times.data(), times.size(), q.data());
   for (std::size_t k = 0; k < nk; ++k) {
     const double h = step[k];
     if (!(h > 0.0)) continue;
-    const Quat* p = &q[5 * k];
+    Quat p[5];
+    const Quat* got = &q[per * k];
+    if (at_keys) {
+      p[0] = got[0], p[1] = got[1], p[2] = at_keys[k + 1], p[3] = got[2], p[4] = got[3];
+    } else {
+      std::copy(got, got + 5, p);
+    }
     Vec3 w[4];
     for (int i = 0; i < 4; ++i) w[i] = log(p[i + 1] * p[i].conjugate()).vec() / h;  // unit samples
     // w[i] is the mean velocity over [tᵢ, tᵢ₊₁]: the velocity at its midpoint to O(h²).

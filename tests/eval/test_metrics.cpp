@@ -1,5 +1,6 @@
 // Known answers for the error metrics of `rotinterp eval` (eval/metrics.h).
 #include "rotinterp/eval/metrics.h"
+#include "rotinterp/interp/interpolator.h"
 
 #include <gtest/gtest.h>
 
@@ -336,6 +337,32 @@ TEST(Metrics, KeyJumpsReadTheVelocityJumpOfAPolylineAndTheAccelerationJumpOfAC1C
   EXPECT_LT(c.velocity, 1e-6);
   EXPECT_NEAR(c.acceleration, 7.0, 1e-3);
   EXPECT_EQ(key_jumps(c1, {0.0, 1.0}).velocity, 0.0);  // no interior key
+}
+
+TEST(Metrics, KeyJumpsWithTheCurveAtTheKeysGivenAreTheSameNumbers) {
+  // evaluate_method passes the samples it has at the keys; for every method the
+  // result must be the one key_jumps computes by itself, bit for bit.
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> step(0.05, 0.3), angle(-0.6, 0.6);
+  RotationTrack track;
+  double t = 0.0;
+  Quat q = Quat::Identity();
+  for (int k = 0; k < 12; ++k) {
+    track.times.push_back(t);
+    track.keys.push_back(q);
+    t += step(rng);
+    q = (q * exp(RotVec(angle(rng), angle(rng), angle(rng)))).normalized();
+  }
+  for (const MethodInfo& m : methods()) {
+    auto curve = make_interpolator(m.name, track);
+    ASSERT_TRUE(curve) << m.name;
+    std::vector<Quat> at_keys(track.times.size());
+    (*curve)->evaluate(track.times.data(), track.times.size(), at_keys.data());
+    const KeyJumps alone = key_jumps(**curve, track.times), given = key_jumps(**curve, track.times, at_keys.data());
+    EXPECT_EQ(alone.velocity, given.velocity) << m.name;
+    EXPECT_EQ(alone.acceleration, given.acceleration) << m.name;
+    EXPECT_GT(alone.velocity + alone.acceleration, 0.0) << m.name;
+  }
 }
 
 }  // namespace

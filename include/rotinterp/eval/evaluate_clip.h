@@ -57,8 +57,10 @@ struct ClipReference {
 Result<ClipReference> prepare_reference(const Clip& clip, const std::string& clip_id,
                                         const ClipEvalOptions& options);
 
-// The keys one joint's curve is rebuilt from for keep_every n ≥ 1: the original at
-// frames 0, n, 2n, … and the last.
+// The key frames for keep_every n ≥ 1 (smaller reads as 1): 0, n, 2n, … and the last.
+std::vector<std::size_t> key_frames(std::size_t frames, int keep_every);
+
+// The keys one joint's curve is rebuilt from: the original at key_frames().
 RotationTrack decimated_track(const ClipReference& reference, std::size_t joint, int keep_every);
 
 // Rows of one method for every keep_every × joint, then End Site. Errors name the

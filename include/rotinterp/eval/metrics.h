@@ -144,7 +144,9 @@ constexpr double kKeyJumpStep = 1e-3;
 // The jumps of `curve`'s angular velocity and acceleration at the interior keys
 // key_times[1..n−2] (sorted, strictly increasing): one-sided differences at steps
 // h, 2h on each side, the velocity extrapolated to the key to second order. A C¹
-// curve reads ~0 velocity jump, a C² curve ~0 acceleration jump.
-KeyJumps key_jumps(const Interpolator& curve, const std::vector<double>& key_times);
+// curve reads ~0 velocity jump, a C² curve ~0 acceleration jump. `at_keys`, if
+// given, holds curve.evaluate(key_times[i]) for every key (a caller that sampled
+// the curve there already): the stencils then skip their centres.
+KeyJumps key_jumps(const Interpolator& curve, const std::vector<double>& key_times, const Quat* at_keys = nullptr);
 
 }  // namespace rotinterp

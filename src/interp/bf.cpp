@@ -69,6 +69,16 @@ bool solve3(const Mat3& H, const Vec3& g, Vec3& x) {
   return true;
 }
 
+// The spline averages' start: the normalized weighted sum of the points (the
+// chordal estimate), or p[1] where that is zero or not finite — weights overflow
+// on knots a denormal time apart, and the iteration keeps a finite start finite.
+Quat chordal_start(const Quat* p, const double* w, int n) {
+  Eigen::Vector4d sum = Eigen::Vector4d::Zero();
+  for (int k = 0; k < n; ++k) sum += w[k] * p[k].coeffs();
+  const double sn = sum.norm();
+  return sn > 0.0 && std::isfinite(sn) ? Quat(sum / sn) : p[1];
+}
+
 // m·exp(step) for a unit m (apply_moving without renormalizing m first).
 Quat step_from(const Quat& m, const Vec3& step) { return (m * exp(RotVec(step))).normalized(); }
 
@@ -364,11 +374,7 @@ class BfInterpolator final : public detail::SegmentInterpolator<BfInterpolator> 
   // BF average of c_{s−1} … c_{s+2} (stored at c_[s … s+3]) with weights N.
   Quat average(std::ptrdiff_t s, const double N[4]) const {
     const Quat* c = &c_[static_cast<std::size_t>(s)];
-    Eigen::Vector4d sum = Eigen::Vector4d::Zero();
-    for (int k = 0; k < 4; ++k) sum += N[k] * c[k].coeffs();
-    const double sn = sum.norm();
-    const Quat start = sn > 0.0 ? Quat(sum / sn) : c[1];
-    return average_iterate(c, N, 4, start, avg_, true).m;
+    return average_iterate(c, N, 4, chordal_start(c, N, 4), avg_, true).m;
   }
 
   // Key misses rⱼ = log(qⱼ·pⱼ⁻¹) (fixed frame) and pⱼ, the curve at tⱼ. Returns max |rⱼ|.
@@ -418,10 +424,7 @@ class BfInterpolator final : public detail::SegmentInterpolator<BfInterpolator> 
   }
 
   Quat average3(const Quat* c, const double* w) const {
-    Eigen::Vector4d sum = Eigen::Vector4d::Zero();
-    for (int k = 0; k < 3; ++k) sum += w[k] * c[k].coeffs();
-    const double sn = sum.norm();
-    return average_iterate(c, w, 3, sn > 0.0 ? Quat(sum / sn) : c[1], avg_, true).m;
+    return average_iterate(c, w, 3, chordal_start(c, w, 3), avg_, true).m;
   }
 
   BfAverageOptions avg_;

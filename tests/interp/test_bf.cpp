@@ -181,5 +181,21 @@ TEST(BfSpline, GradesIntervalsWhoseRatioPassesDoublePrecision) {
   }
 }
 
+TEST(BfSpline, KeysADenormalTimeApartGiveFiniteUnitPoints) {
+  // fuzz_interp crash-a17e74bf: keys 3.4e-310 s apart. The B-spline weights overflow
+  // to inf and NaN there; the averages' start must stay finite (the chordal sum
+  // divided by its infinite norm was NaN, and the iteration kept it).
+  RotationTrack track;
+  track.times = {0.0, 3.4055437702490903e-310};
+  track.keys = {Quat::Identity(), Quat(0.5, 0.5, 0.5, 0.5)};
+  auto bf = make_bf(track);
+  ASSERT_TRUE(bf) << bf.error();
+  for (int s = -2; s <= 34; ++s) {
+    const Quat q = (*bf)->evaluate(track.times[1] * s / 32.0);
+    ASSERT_TRUE(q.coeffs().allFinite()) << s;
+    EXPECT_NEAR(q.norm(), 1.0, 1e-12) << s;
+  }
+}
+
 }  // namespace
 }  // namespace rotinterp

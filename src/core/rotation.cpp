@@ -85,9 +85,7 @@ RotVec log(const Quat& q_in) {
   const double s2 = xyz.squaredNorm();
   if (s2 == 0.0) return RotVec();
   if (s2 <= (1.0 / 64.0) * w * w) {
-    // half_angle's series branch (|v| ≤ w/8) from |v|²: θ/|v| = (2/w)·atan(x)/x, x² = |v|²/w².
-    const double iw = 1.0 / w, x2 = s2 * iw * iw;
-    return RotVec(xyz * (2.0 * iw * (1.0 + x2 * atan_series_tail(x2))));
+    return RotVec(xyz * angle_over_sine_series(s2, w));  // |v| ≤ w/8
   }
   // θ = 2·atan2(s, w) is accurate for every s.
   const double s = std::sqrt(s2);

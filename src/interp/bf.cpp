@@ -26,10 +26,7 @@ namespace {
 [[gnu::always_inline]] inline Vec3 log_s3(const Quat& q) {
   const Vec3 v = q.vec();
   const double w = q.w(), s2 = v.squaredNorm();
-  if (w > 0.0 && s2 <= (1.0 / 64.0) * w * w) {
-    const double iw = 1.0 / w, x2 = s2 * iw * iw;
-    return v * (2.0 * iw * (1.0 + x2 * atan_series_tail(x2)));
-  }
+  if (w > 0.0 && s2 <= (1.0 / 64.0) * w * w) return v * angle_over_sine_series(s2, w);
   const double s = std::sqrt(s2);
   if (!(s > 0.0)) return Vec3::Zero();
   return v * (2.0 * half_angle(s, w) / s);

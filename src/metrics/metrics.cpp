@@ -112,13 +112,6 @@ RotationError rotation_error(const Quat* ref, const Quat* test, std::size_t n, c
   const bool has_axis = an > 0.0 && std::isfinite(an);
   const Vec3 axis = has_axis ? Vec3(bone_axis_in / an) : Vec3::Zero();
   for (std::size_t i = 0; i < n; ++i) {
-    // Equal samples (a key the method reproduces bit for bit) have no error.
-    if (ref[i].coeffs() == test[i].coeffs()) {
-      angle[i] = 0.0;
-      out.swing.add(0.0);
-      out.twist.add(0.0);
-      continue;
-    }
     // e = q_ref⁻¹·q_test = (w, v), taken with w ≥ 0. Its angle is 2·atan2(|v|, w) —
     // the same number as angular_distance(ref, test), without its normalizations.
     // The twist about the axis is (w, p·axis)/n with p = v·axis, n = √(w² + p²); the
@@ -126,9 +119,10 @@ RotationError rotation_error(const Quat* ref, const Quat* test, std::size_t n, c
     // These are the angles of core swing_twist(e, axis), in closed form (tested).
     // All three are ratios, the same for any |e| (both inputs are unit to
     // rounding): e is not normalized; only a zero or non-finite e reads as no error.
+    // Equal samples (a key the method reproduces bit for bit) have no error either.
     const Quat e = ref[i].conjugate() * test[i];
     const double en2 = e.coeffs().squaredNorm();
-    if (!(en2 > 0.0) || !std::isfinite(en2)) {
+    if (ref[i].coeffs() == test[i].coeffs() || !(en2 > 0.0) || !std::isfinite(en2)) {
       angle[i] = 0.0;
       out.swing.add(0.0);
       out.twist.add(0.0);

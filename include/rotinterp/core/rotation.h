@@ -111,6 +111,12 @@ inline double atan_series_tail(double x2) {
 // atan(s/w) through the x¹⁷ term (truncation < 3e-18 relative), within 2 ulp of
 // std::atan2 and several times cheaper than libm's correctly rounded atan2, which
 // it calls everywhere else (and for NaN).
+// 2·atan(s/w)/s from s² for 0 ≤ s ≤ w/8 (the caller checks s² ≤ w²/64): the series
+// branch of half_angle, without the square root — what log needs to scale v.
+inline double angle_over_sine_series(double s2, double w) {
+  const double iw = 1.0 / w, x2 = s2 * iw * iw;
+  return 2.0 * iw * (1.0 + x2 * atan_series_tail(x2));
+}
 inline double half_angle(double s, double w) {
   if (!(w > 0.0 && s >= 0.0 && s <= 0.125 * w)) return std::atan2(s, w);
   const double x = s / w, x2 = x * x;

@@ -262,6 +262,8 @@ Status AtomicOutput::commit() {
   }
   if (::rename(temp_.c_str(), target_.c_str()) != 0) return make_error(label + ": cannot write: " + reason(errno));
   committed_ = true;
+  unregister_live(slot_);  // the name is the target's now: not for the interrupt handler to remove
+  slot_ = -1;
   // The rename itself reaches the disk with the directory.
   const std::string dir = target_.parent_path().empty() ? std::string(".") : target_.parent_path().string();
   const int dfd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);

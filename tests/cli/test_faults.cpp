@@ -320,6 +320,40 @@ TEST_F(Faults, ASecondEvalIntoADirectoryInUseIsRefusedWithOneLine) {
   EXPECT_EQ(names_in(e), std::vector<std::string>{});
 }
 
+TEST_F(Faults, ASignalWhileEvalDrawsItsPlotsLeavesAllOfOneRunNeverAMix) {
+  // While the plots are drawn the run holds errors.csv, summary.json and a plot
+  // open (unnamed) in DIR: SIGTERM then. The directory must hold the previous
+  // run's four files, or (a signal held back during the final renames) this run's
+  // four, never new CSV/JSON beside old plots.
+  const fs::path e = out_ / "e";
+  const std::vector<std::string> args = {"eval", clip().string(), "--methods", "slerp,squad,c2,nlerp,expmap",
+                                         "--keep-every", "2,3,4,6,8", "-j", "1", "-q", "-o", e.string()};
+  const std::vector<std::string> files = {"error_vs_spacing.png", "errors.csv", "summary.json", "worst_clip_joints.png"};
+  int caught = 0;
+  for (int round = 0; round < 5; ++round) {
+    fs::create_directories(e);
+    for (const std::string& n : files) write_text(e / n, "previous " + n + "\n");
+    const pid_t pid = test::spawn(args);
+    // (A named temporary plot, ".*.png", is the same moment for a writer without unnamed ones.)
+    const auto plotting = [&] {
+      for (const std::string& n : names_in(e))
+        if (n[0] == '.' && n.size() > 4 && n.compare(n.size() - 4, 4, ".png") == 0) return true;
+      return test::open_files_in(pid, e) >= 3;
+    };
+    const bool drawing = test::wait_until(pid, plotting, 60.0);
+    ::kill(pid, SIGTERM);
+    const int status = test::exit_status(pid);
+    if (!drawing) continue;  // it finished between two polls
+    ++caught;
+    EXPECT_EQ(status, 128 + SIGTERM);
+    EXPECT_EQ(names_in(e), files);
+    int previous = 0;
+    for (const std::string& n : files) previous += slurp(e / n) == "previous " + n + "\n";
+    EXPECT_TRUE(previous == 0 || previous == 4) << previous << " of 4 files are the previous run's";
+  }
+  EXPECT_GT(caught, 0) << "the signal never came while the plots were drawn";
+}
+
 TEST_F(Faults, AnEvalWithoutPlotsLeavesNoPlotOfAnEarlierRunBesideItsFiles) {
   const fs::path e = out_ / "e";
   const std::string args = "eval " + clip().string() + " --methods slerp --keep-every 4 -q -o " + e.string();

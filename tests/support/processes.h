@@ -69,18 +69,23 @@ inline std::vector<std::string> names_in(const std::filesystem::path& dir) {
   return out;
 }
 
-// Whether process `pid` has a file inside `dir` open (an unnamed O_TMPFILE
+// How many files inside `dir` process `pid` has open (an unnamed O_TMPFILE
 // temporary shows as "DIR/#inode (deleted)"); `except` is not counted.
-inline bool has_open_file_in(pid_t pid, const std::filesystem::path& dir, const std::filesystem::path& except = {}) {
+inline int open_files_in(pid_t pid, const std::filesystem::path& dir, const std::filesystem::path& except = {}) {
   const std::string prefix = std::filesystem::absolute(dir).string() + "/";
   const std::string skip = except.empty() ? std::string() : std::filesystem::absolute(except).string();
+  int count = 0;
   std::error_code ec;
   for (const auto& e : std::filesystem::directory_iterator("/proc/" + std::to_string(pid) + "/fd", ec)) {
     std::error_code ec2;
     const std::string target = std::filesystem::read_symlink(e.path(), ec2).string();
-    if (!ec2 && target.compare(0, prefix.size(), prefix) == 0 && target != skip) return true;
+    if (!ec2 && target.compare(0, prefix.size(), prefix) == 0 && target != skip) ++count;
   }
-  return false;
+  return count;
+}
+
+inline bool has_open_file_in(pid_t pid, const std::filesystem::path& dir, const std::filesystem::path& except = {}) {
+  return open_files_in(pid, dir, except) > 0;
 }
 
 }  // namespace rotinterp::test

@@ -11,6 +11,7 @@
 #include <assimp/scene.h>
 
 #include <fcntl.h>
+#include <sys/prctl.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -620,6 +621,7 @@ std::optional<Result<wire::ReadOutcome>> read_in_child(const fs::path& path, con
                                                        const std::string& ext, const ClipFileInfo& info) {
   int fds[2];
   if (::pipe2(fds, O_CLOEXEC) != 0) return std::nullopt;
+  const pid_t parent = ::getpid();  // the child dies with its parent, even by SIGKILL:
   const pid_t pid = ::fork();
   if (pid < 0) {
     ::close(fds[0]);
@@ -628,6 +630,7 @@ std::optional<Result<wire::ReadOutcome>> read_in_child(const fs::path& path, con
   }
   const std::string label = path.string();
   if (pid == 0) {
+    if (::prctl(PR_SET_PDEATHSIG, SIGKILL) != 0 || ::getppid() != parent) _exit(1);  // (gone before prctl)
     ::close(fds[0]);
     for (int sig : {SIGINT, SIGTERM, SIGHUP}) std::signal(sig, SIG_DFL);
     // Quiet: what the crash prints (glibc's "double free detected", a sanitizer's

@@ -193,7 +193,14 @@ struct Loaded {
 Status check_file(const fs::path& path, const std::string& label) {
   std::error_code ec;
   const fs::file_status st = fs::status(path, ec);
-  if (ec || !fs::exists(st)) return make_error(label + ": no such file");
+  if (ec == std::errc::too_many_symbolic_link_levels)
+    return make_error(label + ": a loop of symbolic links (too many levels of symbolic links)");
+  if (ec || !fs::exists(st)) {
+    std::error_code lec;
+    if (fs::is_symlink(fs::symlink_status(path, lec))) return make_error(label + ": a symbolic link to a missing file");
+    if (ec && ec != std::errc::no_such_file_or_directory) return make_error(label + ": cannot read: " + ec.message());
+    return make_error(label + ": no such file");
+  }
   if (fs::is_directory(st)) return make_error(label + ": is a directory, not a clip file");
   if (!fs::is_regular_file(st)) return make_error(label + ": not a regular file");
   const auto size = fs::file_size(path, ec);

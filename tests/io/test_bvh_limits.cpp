@@ -4,6 +4,7 @@
 #include "io_test_util.h"
 #include "rotinterp/io/bvh.h"
 #include "rotinterp/io/read.h"
+#include "support/hostile_files.h"
 #include "support/run_cli.h"
 
 #include <gtest/gtest.h>
@@ -14,19 +15,6 @@
 
 namespace rotinterp {
 namespace {
-
-// A chain of `depth` joints, each the child of the one before, and one frame.
-std::string nested_bvh(std::size_t depth) {
-  std::string s = "HIERARCHY\nROOT J0\n{\nOFFSET 0 0 0\nCHANNELS 3 Zrotation Xrotation Yrotation\n";
-  for (std::size_t i = 1; i < depth; ++i)
-    s += "JOINT J" + std::to_string(i) + "\n{\nOFFSET 0 1 0\nCHANNELS 3 Zrotation Xrotation Yrotation\n";
-  s += "End Site\n{\nOFFSET 0 1 0\n}\n";
-  for (std::size_t i = 0; i < depth; ++i) s += "}\n";
-  s += "MOTION\nFrames: 2\nFrame Time: 0.01\n";
-  std::string row;
-  for (std::size_t i = 0; i < 3 * depth; ++i) row += "0 ";
-  return s + row + "\n" + row + "\n";
-}
 
 // A root with `n` child joints (siblings), each with an End Site.
 std::string sibling_bvh(std::size_t n) {
@@ -55,7 +43,7 @@ TEST(BvhLimits, NestingBeyondTheLimitIsOneLineInEverySubcommand) {
   // 15 000 nested joints overflowed the stack of the recursive parser (SIGSEGV).
   test::TempDir dir;
   const auto path = dir / "deep.bvh";
-  test::write_text(path, nested_bvh(15000));
+  test::write_text(path, test::nested_bvh(15000));
   const std::string what = "joints nested more than " + std::to_string(kMaxJointDepth) + " levels deep";
   const std::string out = (dir / "out").string();
   for (const std::string& command :
@@ -72,12 +60,12 @@ TEST(BvhLimits, NestingBeyondTheLimitIsOneLineInEverySubcommand) {
 
 TEST(BvhLimits, NestingUpToTheLimitReads) {
   test::TempDir dir;
-  test::write_text(dir / "deepest.bvh", nested_bvh(kMaxJointDepth));
+  test::write_text(dir / "deepest.bvh", test::nested_bvh(kMaxJointDepth));
   Result<Clip> clip = read_clip(dir / "deepest.bvh");
   ASSERT_TRUE(clip) << clip.error();
   EXPECT_EQ(clip->skeleton.joints.size(), kMaxJointDepth);
   EXPECT_EQ(clip->skeleton.joints.back().parent, static_cast<int>(kMaxJointDepth) - 2);
-  test::write_text(dir / "deeper.bvh", nested_bvh(kMaxJointDepth + 1));
+  test::write_text(dir / "deeper.bvh", test::nested_bvh(kMaxJointDepth + 1));
   Result<Clip> refused = read_clip(dir / "deeper.bvh");
   ASSERT_FALSE(refused);
   EXPECT_NE(refused.error().find("nested more than"), std::string::npos) << refused.error();

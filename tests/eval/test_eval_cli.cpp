@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -144,6 +145,31 @@ TEST(EvalCli, FilesThatCrashTheImporterAreFailuresOfABatchThatGoesOn) {
   for (const auto& f : j["failed"]) failed.push_back(fs::path(f["file"].get<std::string>()).filename().string());
   EXPECT_EQ(failed, (std::vector<std::string>{"deep.bvh", "double_free.fbx", "no_keys.fbx"}));
   EXPECT_EQ(j["clips_evaluated"], 1);
+}
+
+// Peak resident memory (KiB) of `rotinterp ARGS`, by GNU time.
+long peak_kib(const std::string& args, const fs::path& scratch) {
+  const fs::path out = scratch / "maxrss";
+  const std::string cmd = "/usr/bin/time -f %M -o " + out.string() + " " + ROTINTERP_CLI + " " + args + " >/dev/null 2>&1";
+  if (std::system(cmd.c_str()) != 0) return -1;
+  return std::stol(slurp(out));
+}
+
+TEST(EvalCli, SubframesCostMemoryByTheClipNotByTheirCount) {
+  // Every subframe sample was stored (≈ 12.6 MB per unit of --subframe on CMU
+  // 01_01, then bad_alloc): now they stream, so K = 1000 costs what K = 0 does,
+  // up to one block (≈ 20 MB).
+  const fs::path dir = fresh_dir("subframe_memory");
+  ASSERT_EQ(run_cli("synth " + (dir / "walk.bvh").string() + " --kind walk --seconds 2 --fps 30 --quiet").exit_code, 0);
+  const std::string args = "eval " + (dir / "walk.bvh").string() + " --methods slerp --keep-every 4 --no-plots -q -j 1 -o ";
+  const long k0 = peak_kib(args + (dir / "k0").string(), dir);
+  const long k1000 = peak_kib(args + (dir / "k1000").string() + " --subframe 1000", dir);
+  ASSERT_GT(k0, 0);
+  ASSERT_GT(k1000, 0);
+  EXPECT_LT(k1000, k0 + 48 * 1024) << "K=0: " << k0 << " KiB, K=1000: " << k1000 << " KiB";
+  const auto csv = lines_of(slurp(dir / "k1000" / "errors.csv"));
+  ASSERT_GT(csv.size(), 1u);
+  EXPECT_NE(csv[1].find(",60061,"), std::string::npos) << csv[1];  // samples: 60 intervals × 1001, and the last
 }
 
 TEST(EvalCli, SubframesOfSlerpAtEveryFrameMatchTheOriginalsOwnSlerp) {

@@ -44,7 +44,7 @@ namespace {
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // CPU seconds of the whole process (all threads) and of its finished children (the
-// reader's isolated assimp imports, ReadOptions::isolate_assimp): less sensitive than
+// reader's assimp imports in the importer process, src/io/import.h): less sensitive than
 // wall time to other work on a shared machine, for the single-threaded ratio.
 double cpu_seconds() {
   double total = 0.0;

@@ -205,8 +205,9 @@ Result<EvalReport> run_eval(const EvalOptions& opt) {
   auto prepare = [&](std::size_t i, ClipSlot& slot) {
     auto clip = read_clip(files[i]);
     if (!clip) {
-      // Only on failure: a mesh found next to the clips is not an error.
-      if (found_in_directory(files[i], opt.inputs) && animation_count(files[i]) == 0)
+      // A mesh found next to the clips is not an error. The reader's error kind
+      // says so: no second look at a file that may crash its importer.
+      if (found_in_directory(files[i], opt.inputs) && clip.error_kind() == ErrorKind::no_animation)
         slot.skipped = true;
       else
         slot.load_failure = EvalFailure{files[i], clip.error()};

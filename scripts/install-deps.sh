@@ -17,6 +17,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev   # tests and benchmarks
   libglm-dev               # test-only reference for squad
   time                     # /usr/bin/time: peak memory in bench/memory.sh
+  blender                  # tests/clients: Blender imports what rotinterp writes
 )
 missing=()
 for p in "${packages[@]}"; do

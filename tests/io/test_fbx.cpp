@@ -1,4 +1,4 @@
-// FBX reading and the assimp exporters: helper folding is exact, FBX → clip →
+// FBX reading and the writers: helper folding is exact, FBX → clip →
 // FBX/glTF/GLB/Collada → clip keeps every orientation, FBX → BVH keeps world
 // joint positions.
 #include "io_test_util.h"
@@ -138,16 +138,13 @@ TEST(Fbx, FoldingKeepsMotionAssimpsPivotRemovalLoses) {
 
 class FbxExport : public ::testing::TestWithParam<const char*> {};
 
-// Tolerances per written format. glTF/GLB/Collada store floats: 1e-4°. FBX is
-// written as ASCII FBX (assimp 5.2.5 cannot re-read its own binary FBX export:
-// "FBX-Tokenize … block offset is out of range"), whose exporter prints 6
-// significant digits: an Euler angle near 180° is off by up to 180·5e-6 = 9e-4°,
-// three of them by up to 2e-3°; translations by 5e-6 relative.
+// Tolerances per written format. glTF/GLB/Collada and our FBX store floats: 1e-4°
+// (FBX: Euler angles in float degrees, an angle near 360° is off by up to 2e-5°).
 struct Tolerance {
   double degrees;
   double of_size;
 };
-Tolerance tolerance_for(const std::string& ext) { return ext == ".fbx" ? Tolerance{2e-3, 5e-5} : Tolerance{1e-4, 1e-5}; }
+Tolerance tolerance_for(const std::string&) { return Tolerance{1e-4, 1e-5}; }
 
 // FBX → clip → <format> → clip: same joints, orientations within tolerance.
 TEST_P(FbxExport, ReimportKeepsEveryOrientation) {
@@ -166,10 +163,8 @@ TEST_P(FbxExport, ReimportKeepsEveryOrientation) {
     EXPECT_LE(d.local_angle, tol.degrees * kDeg) << source << ": " << d.local_angle / kDeg << " degrees";
     EXPECT_LE(d.world_angle, tol.degrees * kDeg) << source << ": " << d.world_angle / kDeg << " degrees";
     EXPECT_LE(d.world_position, tol.of_size * test::skeleton_size(*a)) << source;
-    // Float seconds (glTF) and Collada times come back on the source's frame grid.
-    if (std::string(GetParam()) != ".fbx") {
-      EXPECT_NEAR(b->frame_time, a->frame_time, 1e-12) << source;
-    }
+    // FBX ticks, float seconds (glTF) and Collada times come back on the source's frame grid.
+    EXPECT_NEAR(b->frame_time, a->frame_time, 1e-12) << source;
     std::printf("[ %s -> %s ] local %.3g deg, world %.3g deg, position %.3g\n", source, GetParam(), d.local_angle / kDeg,
                 d.world_angle / kDeg, d.world_position);
     // Only the written file (plus the .gltf buffer): no temporaries left.

@@ -17,7 +17,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev   # tests and benchmarks
   libglm-dev               # test-only reference for squad
   time                     # /usr/bin/time: peak memory in bench/memory.sh
-  blender                  # tests/clients: Blender imports what rotinterp writes
+  blender python3-numpy    # tests/clients: Blender imports what rotinterp writes (its glTF importer needs numpy)
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -1,10 +1,11 @@
-// write_clip: BVH and FBX by our writers, glTF/GLB/Collada through assimp's exporter.
+// write_clip: BVH, FBX and glTF/GLB by our writers, Collada through assimp's exporter.
 #include "rotinterp/io/write.h"
 
 #include "rotinterp/io/atomic_file.h"
 #include "rotinterp/io/bvh.h"
 #include "export.h"
 #include "fbx_write.h"
+#include "gltf_write.h"
 
 #include <cctype>
 
@@ -39,6 +40,7 @@ Status write_clip(const Clip& clip, const std::filesystem::path& path, const Wri
       return Ok{};
     });
   }
+  if (ext == ".glb" || ext == ".gltf") return write_gltf(clip, path, ext == ".glb");
   const std::optional<std::string> format = assimp_export_format(ext);
   if (!format)
     return make_error(label + ": cannot write '" + (ext.empty() ? std::string("(no extension)") : ext) +

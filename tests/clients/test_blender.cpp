@@ -1,6 +1,7 @@
 // Blender (Debian's 3.4, headless) opens what rotinterp writes as a user would:
 // each FBX and GLB must import as ONE armature with the clip's joints, FBX with the
-// clip's scene rate, and every bone's world position at every key must match
+// clip's scene rate (glTF has none: Blender keeps its 24 fps and places keys at
+// t·24, which the test follows), and every bone's world position at every key must match
 // forward kinematics of the same resample written as BVH within 0.1 % of the
 // skeleton's height, after one similarity transform (Blender turns Y-up files Z-up
 // and scales by the file's unit). One Blender process imports every file.
@@ -37,7 +38,7 @@ class BlenderClient : public ::testing::Test {
     dir_ = new TempDir();
     std::string files;
     for (const ClientCase& c : kCases)
-      for (const char* ext : {".fbx", ".bvh"}) {
+      for (const char* ext : {".fbx", ".glb", ".bvh"}) {
         const auto out = *dir_ / (c.name + ext);
         const CliResult r = run_cli("resample " + (kData / c.source).string() + " -o " + out.string() + " " + c.args + " -q");
         ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -112,6 +113,15 @@ TEST_F(BlenderClient, BinaryFbxFromFbxWithPivotHelpersIsOneArmatureMatchingTheBv
 // (0.54 units, 1.2 % of the height) is lost in Blender — every other pose matches.
 TEST_F(BlenderClient, BinaryFbxFromMultiRootFbxIsOneArmatureMatchingTheBvhPosesButConnectedBonesTranslation) {
   expect_blender_sees_the_clip("marine_run", ".fbx", true, {"Spine_0"});
+}
+
+TEST_F(BlenderClient, GlbFromBvhIsOneArmatureMatchingTheBvhPoses) {
+  expect_blender_sees_the_clip("bandai_walk", ".glb", false);
+  expect_blender_sees_the_clip("cmu_01_01", ".glb", false);
+}
+TEST_F(BlenderClient, GlbFromFbxIsOneArmatureMatchingTheBvhPoses) {
+  expect_blender_sees_the_clip("dude", ".glb", false);
+  expect_blender_sees_the_clip("marine_run", ".glb", false);
 }
 
 }  // namespace

@@ -18,6 +18,7 @@ packages=(
   libglm-dev               # test-only reference for squad
   time                     # /usr/bin/time: peak memory in bench/memory.sh
   blender python3-numpy    # tests/clients: Blender imports what rotinterp writes (its glTF importer needs numpy)
+  assimp-utils             # tests/clients: `assimp info` reads every BVH rotinterp writes
 )
 missing=()
 for p in "${packages[@]}"; do

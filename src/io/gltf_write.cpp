@@ -6,7 +6,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cerrno>
 #include <cstdint>
+#include <fstream>
 #include <cstdio>
 #include <cstring>
 #include <optional>
@@ -62,6 +64,15 @@ std::vector<double> rest_world_inverse(const Skeleton& sk) {
       for (int r = 0; r < 4; ++r) out.push_back(inv(r, c));  // column-major
   }
   return out;
+}
+
+Status write_bytes(const std::filesystem::path& temp, const std::string& bytes) {
+  std::ofstream f(temp, std::ios::binary | std::ios::trunc);
+  if (!f) return make_error(std::string("cannot write: ") + std::strerror(errno));
+  f.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  f.flush();
+  if (!f) return make_error(std::string("write failed: ") + std::strerror(errno));
+  return Ok{};
 }
 
 std::uint64_t fnv1a(const std::string& bytes) {
@@ -157,9 +168,9 @@ Result<Document> build(const Clip& clip) {
 
 Status write_gltf(const Clip& clip, const std::filesystem::path& path, bool binary) {
   const std::string label = path.string();
+  Result<Document> doc = build(clip);
+  if (!doc) return make_error(label + ": " + doc.error());
   if (binary) {
-    Result<Document> doc = build(clip);
-    if (!doc) return make_error(label + ": " + doc.error());
     std::string json = doc->json.dump();
     std::string& bin = doc->buffer;
     json.append((4 - json.size() % 4) % 4, ' ');
@@ -181,25 +192,19 @@ Status write_gltf(const Clip& clip, const std::filesystem::path& path, bool bina
       return Ok{};
     });
   }
-  Result<Document> doc = build(clip);
-  if (!doc) return make_error(label + ": " + doc.error());
-  // The buffer is named by its bytes and written first: a .gltf never names a
-  // buffer that is not complete, nor one another run wrote.
+  // The buffer is named by its bytes: a .gltf never names a buffer another run
+  // wrote. Both are written to temporaries first, then the buffer is renamed into
+  // place before the .gltf, so a .gltf never names a missing or partial buffer.
   char hash[17];
   std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(fnv1a(doc->buffer)));
   const std::filesystem::path bin_path = std::filesystem::path(path).replace_filename(path.stem().string() + "-" + hash + ".bin");
-  if (Status s = write_file_atomically(bin_path, [&](std::ostream& out) -> Status {
-        out << doc->buffer;
-        return Ok{};
-      });
-      !s)
-    return s;
   doc->json["buffers"][0]["uri"] = bin_path.filename().string();
-  const std::string json = doc->json.dump();
-  return write_file_atomically(path, [&](std::ostream& out) -> Status {
-    out << json;
-    return Ok{};
-  });
+  AtomicOutput bin_out(bin_path), gltf_out(path);
+  if (Status s = write_bytes(bin_out.temp_path(), doc->buffer); !s)
+    return make_error(label + ": cannot write its buffer " + bin_path.filename().string() + ": " + s.error());
+  if (Status s = write_bytes(gltf_out.temp_path(), doc->json.dump()); !s) return make_error(label + ": " + s.error());
+  if (Status s = bin_out.commit(); !s) return make_error(label + ": cannot write its buffer: " + s.error());
+  return gltf_out.commit();
 }
 
 }  // namespace rotinterp

@@ -491,6 +491,8 @@ Status fill_scene(const aiScene* scene, const aiAnimation* anim, double tps, Cli
     clip.frame_time = exact ? exact->period() : step;
   }
 
+  clip.source_meshes = scene->mNumMeshes;
+
   // Unit scale: FBX gives centimetres per unit.
   if (scene->mMetaData) {
     double f = 0.0;

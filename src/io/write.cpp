@@ -29,6 +29,9 @@ bool can_write_format(const std::filesystem::path& path) {
 Status write_clip(const Clip& clip, const std::filesystem::path& path, const WriteOptions& options) {
   const std::string label = path.string();
   const std::string ext = lower_extension(path);
+  if (clip.source_meshes > 0 && options.on_warning && can_write_format(path))
+    options.on_warning(label + ": the source's " + std::to_string(clip.source_meshes) +
+                       " mesh(es) and their skins are not written, only the skeleton and its motion");
   if (ext == ".bvh") {
     return write_file_atomically(path, [&](std::ostream& out) { return write_bvh(clip, out, options, label); });
   }

@@ -6,6 +6,7 @@
 #include "rotinterp/clip/resample.h"
 #include "rotinterp/io/read.h"
 #include "rotinterp/io/write.h"
+#include "support/run_cli.h"
 
 #include <gtest/gtest.h>
 
@@ -234,6 +235,22 @@ TEST(FbxWrite, AssimpReadsBothEncodingsBackWithTheSameJointsFramesRateAndPoses) 
                   worst, size);
     }
   }
+}
+
+// A skinned source: one warning line on stderr says its meshes are not written; a
+// BVH source gets none.
+TEST(FbxWrite, ResampleSaysOnceThatTheSourcesMeshesAreNotWritten) {
+  test::TempDir dir;
+  const test::CliResult skinned = test::run_cli("resample '" + (kData / "fbx" / "digitalrune_Dude.fbx").string() + "' -o '" +
+                                                (dir / "dude.fbx").string() + "' --fps 30 -q");
+  ASSERT_EQ(skinned.exit_code, 0) << skinned.err;
+  EXPECT_EQ(std::count(skinned.err.begin(), skinned.err.end(), '\n'), 1) << skinned.err;
+  EXPECT_NE(skinned.err.find("rotinterp: warning: "), std::string::npos) << skinned.err;
+  EXPECT_NE(skinned.err.find("mesh(es) and their skins are not written"), std::string::npos) << skinned.err;
+  const test::CliResult bvh = test::run_cli("resample '" + (kData / "bvh" / "bvhio_example.bvh").string() + "' -o '" +
+                                            (dir / "b.fbx").string() + "' -q");
+  ASSERT_EQ(bvh.exit_code, 0) << bvh.err;
+  EXPECT_EQ(bvh.err, "");
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include "rotinterp/core/result.h"
 
 #include <filesystem>
+#include <functional>
 #include <string>
 
 namespace rotinterp {
@@ -19,6 +20,9 @@ struct WriteOptions {
   // FBX: ASCII FBX 7.4 instead of binary (CLI: --fbx-ascii). Binary is what every
   // current reader takes (Blender reads no ASCII FBX); ASCII is for reading by eye.
   bool fbx_ascii = false;
+  // Receives one-line warnings ("<file>: <what>"), e.g. that the source's meshes and
+  // skins are not written; empty = dropped. The CLI prints them on stderr.
+  std::function<void(const std::string&)> on_warning;
 };
 
 // Writes `clip` to `path`; the format follows the extension (bvh, fbx, glb, gltf,

@@ -19,6 +19,8 @@ packages=(
   python3-dev pybind11-dev python3-numpy   # the Python module (import rotinterp)
   python3-pytest python3-scipy             # its tests: pytest, scipy as the reference
   time                     # /usr/bin/time: peak memory in bench/memory.sh
+  blender python3-numpy    # tests/clients: Blender imports what rotinterp writes (its glTF importer needs numpy)
+  assimp-utils             # tests/clients: `assimp info` reads every BVH rotinterp writes
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -1,5 +1,6 @@
 // rotinterp info CLIP [--json] [--anim NAME|INDEX]: what a clip file holds.
 #include "common.h"
+#include "rotinterp/clip/resample.h"
 #include "rotinterp/io/info.h"
 
 #include <fmt/core.h>
@@ -37,6 +38,10 @@ int run_info(const InfoArgs& args) {
   const Skeleton& sk = clip.skeleton;
   const std::vector<std::string> odd = clip_oddities(clip);
   const double duration = clip.end_time() - clip.start_time();
+  // The rate every command uses (resample too): BVH ".0333330" is 30 Hz, NTSC 30000/1001.
+  const std::optional<Rate> rate = clip_rate(clip);
+  // BVH has no unit.
+  const bool has_unit = info->format != "bvh";
   std::vector<int> depth(sk.joints.size(), 0);
   for (std::size_t j = 0; j < sk.joints.size(); ++j)
     if (sk.joints[j].parent >= 0) depth[j] = depth[static_cast<std::size_t>(sk.joints[j].parent)] + 1;
@@ -54,11 +59,12 @@ int run_info(const InfoArgs& args) {
     }
     out["frames"] = clip.frame_count();
     out["frame_time_s"] = clip.frame_time;
-    out["frame_rate_hz"] = clip.frame_time > 0 ? 1.0 / clip.frame_time : 0.0;
+    out["frame_rate_hz"] = rate ? rate->hz() : 0.0;
+    out["frame_rate"] = rate ? nlohmann::json(rate->to_string()) : nlohmann::json(nullptr);
     out["start_s"] = clip.start_time();
     out["end_s"] = clip.end_time();
     out["duration_s"] = duration;
-    out["unit_scale_m"] = clip.unit_scale;
+    out["unit_scale_m"] = has_unit ? nlohmann::json(clip.unit_scale) : nlohmann::json(nullptr);
     out["folded_helpers"] = info->folded_helpers;
     nlohmann::json joints = nlohmann::json::array();
     nlohmann::json translated = nlohmann::json::array();
@@ -92,13 +98,14 @@ int run_info(const InfoArgs& args) {
                s.duration, s.ticks_per_second, s.default_rate ? " (default)" : "", s.channels);
   }
   fmt::print("frames:      {}\n", clip.frame_count());
-  if (clip.frame_time > 0)
-    fmt::print("frame rate:  {:.9g} Hz (frame time {} s)\n", 1.0 / clip.frame_time,
+  if (rate)
+    fmt::print("frame rate:  {} Hz{} (frame time {} s)\n", rate->to_string(),
+               rate->den == 1 ? std::string() : fmt::format(" = {:.9g} Hz", rate->hz()),
                clip.frame_time_text.empty() ? fmt::format("{:.9g}", clip.frame_time) : clip.frame_time_text);
   else
     fmt::print("frame rate:  none (keys not on a uniform grid)\n");
   fmt::print("duration:    {:.6g} s (keys from {:.6g} s to {:.6g} s)\n", duration, clip.start_time(), clip.end_time());
-  if (info->format != "bvh") fmt::print("unit:        {:.6g} m per unit\n", clip.unit_scale);
+  fmt::print("unit:        {}\n", has_unit ? fmt::format("{:.6g} m per unit", clip.unit_scale) : std::string("none (BVH has no unit)"));
   if (info->folded_helpers > 0) fmt::print("helpers:     {} $AssimpFbx$ helper nodes folded into their bones\n", info->folded_helpers);
   fmt::print("joints:      {} (+{} End Sites)\n", sk.joints.size(), sk.end_sites.size());
   for (std::size_t j = 0; j < sk.joints.size(); ++j) {

@@ -31,6 +31,7 @@ struct ResampleArgs {
   std::string fps, keep_every, method = kDefaultResampleMethod, translation = "cubic", range, anim, bvh_order = "ZXY";
   std::vector<std::string> method_for;
   bool quiet = false;
+  bool fbx_ascii = false;
 };
 
 // A number of seconds ≥ 0, or nothing for an empty text.
@@ -115,6 +116,8 @@ int run_resample(const ResampleArgs& a) {
 
   WriteOptions write_options;
   write_options.bvh_order = a.bvh_order;
+  write_options.fbx_ascii = a.fbx_ascii;
+  write_options.on_warning = [](const std::string& w) { std::fprintf(stderr, "rotinterp: warning: %s\n", w.c_str()); };
   stage("writing " + a.output);
   const Status written = write_clip(*out, a.output, write_options);
   end_progress(a.quiet);
@@ -162,6 +165,7 @@ void add_resample_command(CLI::App& app, int& exit_code) {
   sub->add_option("--anim", a->anim, "Animation to read: its name or index (default the first)");
   sub->add_option("--bvh-order", a->bvh_order,
                   "Euler order for BVH output of joints without a BVH layout (non-BVH input); default ZXY");
+  sub->add_flag("--fbx-ascii", a->fbx_ascii, "FBX output as ASCII FBX 7.4 (default: binary FBX 7.4, which Blender needs)");
   sub->add_flag("-q,--quiet", a->quiet, "No progress and no summary line");
   sub->callback([a, &exit_code] { exit_code = run_resample(*a); });
 }

@@ -202,6 +202,7 @@ Result<Clip> resample_clip(const Clip& in, const ResampleOptions& opt) {
   out.skeleton = in.skeleton;
   out.unit_scale = in.unit_scale;
   out.source_format = in.source_format;
+  out.source_meshes = in.source_meshes;
   if (opt.keep_every) {
     const Rate& r = grid->rate;
     const double fa = a * static_cast<double>(r.num) / static_cast<double>(r.den);

@@ -127,6 +127,19 @@ Result<Rate> parse_rate(std::string_view text) {
   return r;
 }
 
+std::optional<Rate> recognize_rate(double hz, double relative_tolerance) {
+  if (!std::isfinite(hz) || hz <= 0.0) return std::nullopt;
+  const double n = std::round(hz);
+  if (n >= 1.0 && n <= static_cast<double>(kMaxIntegerRate) && std::abs(hz - n) <= relative_tolerance * hz)
+    return Rate{static_cast<std::int64_t>(n), 1};
+  const double m = std::round(hz * 1.001);
+  if (m >= 1.0 && m <= static_cast<double>(kMaxIntegerRate) && std::abs(hz - m * 1000.0 / 1001.0) <= relative_tolerance * hz) {
+    Rate r;
+    if (reduce_fits(static_cast<i128>(m) * 1000, 1001, r)) return r;
+  }
+  return std::nullopt;
+}
+
 Result<Rate> rate_from_frame_time(double frame_time) {
   if (!std::isfinite(frame_time) || frame_time <= 0.0)
     return make_error("frame time " + std::to_string(frame_time) + " is not a positive number");
@@ -164,7 +177,9 @@ Result<Rate> rate_from_frame_time(double frame_time) {
       if (reduce_fits(den, num, r)) return r;  // rate = 1/period
     }
   }
-  // A computed (not printed) value: the simplest nearby rational.
+  // A computed (not printed) value: a known rate within float precision, else the
+  // simplest nearby rational.
+  if (const std::optional<Rate> r = recognize_rate(hz, kComputedRateTolerance)) return *r;
   return approximate(hz, 1000000);
 }
 

@@ -8,7 +8,6 @@
 #include <atomic>
 #include <charconv>
 #include <exception>
-#include <functional>
 #include <cmath>
 #include <optional>
 #include <ostream>
@@ -199,7 +198,18 @@ Status write_bvh(const Clip& clip, std::ostream& out, const WriteOptions& option
   }
   for (std::size_t e = 0; e < sk.end_sites.size(); ++e) sites[static_cast<std::size_t>(sk.end_sites[e].parent)].push_back(e);
 
-  // HIERARCHY, recording the emission order (the motion columns follow it).
+  // Several roots (an FBX with IK targets beside the skeleton): one synthetic ROOT at
+  // the origin above them, 6 channels all zero, so that every BVH reader takes the
+  // file; the clip's roots become its JOINTs.
+  std::string synthetic_root;
+  if (roots.size() > 1) {
+    synthetic_root = "rotinterp_root";
+    while (used.count(synthetic_root)) synthetic_root += "_";
+  }
+  const std::size_t lead_columns = synthetic_root.empty() ? 0 : 6;
+
+  // HIERARCHY, recording the emission order (the motion columns follow it). An
+  // explicit stack, not recursion: skeletons may be thousands of joints deep.
   std::string text = "HIERARCHY\n";
   std::vector<std::size_t> order;
   auto offset_line = [&](const std::string& indent, const Vec3& o) {
@@ -210,23 +220,39 @@ Status write_bvh(const Clip& clip, std::ostream& out, const WriteOptions& option
     }
     text += '\n';
   };
-  std::function<void(std::size_t, int)> emit = [&](std::size_t j, int depth) {
-    const std::string in(static_cast<std::size_t>(depth), '\t');
+  const std::size_t base_depth = lead_columns ? 1 : 0;
+  if (lead_columns)
+    text += "ROOT " + synthetic_root + "\n{\n\tOFFSET 0 0 0\n\tCHANNELS 6 Xposition Yposition Zposition Zrotation Xrotation Yrotation\n";
+  struct Step {
+    std::size_t joint, depth;
+    bool close;
+  };
+  std::vector<Step> stack;
+  for (auto r = roots.rbegin(); r != roots.rend(); ++r) stack.push_back({*r, base_depth, false});
+  while (!stack.empty()) {
+    const Step step = stack.back();
+    stack.pop_back();
+    const std::size_t j = step.joint;
+    const std::string in(step.depth, '\t');
+    if (step.close) {
+      for (std::size_t e : sites[j]) {
+        text += in + "\tEnd Site\n" + in + "\t{\n";
+        offset_line(in + "\t\t", sk.end_sites[e].offset);
+        text += in + "\t}\n";
+      }
+      text += in + "}\n";
+      continue;
+    }
     order.push_back(j);
-    text += in + (sk.joints[j].parent < 0 ? "ROOT " : "JOINT ") + names[j] + "\n" + in + "{\n";
+    text += in + (step.depth == 0 ? "ROOT " : "JOINT ") + names[j] + "\n" + in + "{\n";
     offset_line(in + "\t", sk.joints[j].offset);
     text += in + "\tCHANNELS " + std::to_string(layout[j].size());
     for (Channel c : layout[j]) text += std::string(" ") + channel_name(c);
     text += '\n';
-    for (std::size_t c : children[j]) emit(c, depth + 1);
-    for (std::size_t e : sites[j]) {
-      text += in + "\tEnd Site\n" + in + "\t{\n";
-      offset_line(in + "\t\t", sk.end_sites[e].offset);
-      text += in + "\t}\n";
-    }
-    text += in + "}\n";
-  };
-  for (std::size_t r : roots) emit(r, 0);
+    stack.push_back({j, step.depth, true});
+    for (auto c = children[j].rbegin(); c != children[j].rend(); ++c) stack.push_back({*c, step.depth + 1, false});
+  }
+  if (lead_columns) text += "}\n";
 
   text += "MOTION\nFrames: " + std::to_string(frames) + "\nFrame Time: ";
   double parsed = 0.0;
@@ -246,7 +272,7 @@ Status write_bvh(const Clip& clip, std::ostream& out, const WriteOptions& option
   std::vector<Vec3> previous(n, Vec3::Zero());
   for (std::size_t j = 0; j < n; ++j) plans[j] = plan_rotation(layout[j]);
   std::vector<std::size_t> first_column(n);  // of each joint in a row
-  std::size_t columns = 0;
+  std::size_t columns = lead_columns;  // the synthetic root's columns stay 0
   for (std::size_t j : order) first_column[j] = columns, columns += layout[j].size();
   constexpr std::size_t kBlockFrames = 4096;
   constexpr std::size_t kMinValuesForThreads = 200000;

@@ -169,6 +169,7 @@ void put(Writer& w, const Clip& clip) {
   w.str(clip.frame_time_text);
   w.f64(clip.unit_scale);
   w.str(clip.source_format);
+  w.u64(clip.source_meshes);
 }
 
 void get(Reader& r, Clip& clip) {
@@ -210,6 +211,7 @@ void get(Reader& r, Clip& clip) {
   clip.frame_time_text = r.str();
   clip.unit_scale = r.f64();
   clip.source_format = r.str();
+  clip.source_meshes = r.size();
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include "assimp_iosystem.h"
 #include "assimp_text.h"
+#include "track_sample.h"
 #include "rotinterp/io/atomic_file.h"
 
 #include <assimp/Exporter.hpp>
@@ -35,24 +36,6 @@ aiQuaternion to_ai(const Quat& q) {
 }
 aiVector3D to_ai(const Vec3& v) {
   return aiVector3D(static_cast<ai_real>(v.x()), static_cast<ai_real>(v.y()), static_cast<ai_real>(v.z()));
-}
-
-// The track at time t: its key where it has one, slerp/lerp between keys (the
-// reading every importer applies), clamped outside.
-template <class Track, class Mix>
-auto sample_track(const Track& track, double t, Mix mix) {
-  const auto& ts = track.times;
-  if (t <= ts.front()) return track.keys.front();
-  if (t >= ts.back()) return track.keys.back();
-  const auto hi = static_cast<std::size_t>(std::upper_bound(ts.begin(), ts.end(), t) - ts.begin());
-  if (ts[hi - 1] == t) return track.keys[hi - 1];
-  return mix(track.keys[hi - 1], track.keys[hi], (t - ts[hi - 1]) / (ts[hi] - ts[hi - 1]));
-}
-Quat sample_rotation(const RotationTrack& r, double t) {
-  return sample_track(r, t, [](const Quat& a, const Quat& b, double u) { return Quat(a.slerp(u, b).normalized()); });
-}
-Vec3 sample_translation(const TranslationTrack& tr, double t) {
-  return sample_track(tr, t, [](const Vec3& a, const Vec3& b, double u) { return Vec3((1 - u) * a + u * b); });
 }
 
 std::unique_ptr<aiScene> build_scene(const Clip& clip) {
@@ -129,7 +112,6 @@ std::unique_ptr<aiScene> build_scene(const Clip& clip) {
 }  // namespace
 
 std::optional<std::string> assimp_export_format(const std::string& ext) {
-  if (ext == ".fbx") return std::string("fbxa");
   if (ext == ".gltf") return std::string("gltf2");
   if (ext == ".glb") return std::string("glb2");
   if (ext == ".dae") return std::string("collada");

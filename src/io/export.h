@@ -1,4 +1,4 @@
-// Writing FBX, glTF/GLB and Collada through assimp's exporter (private to src/io).
+// Writing glTF/GLB and Collada through assimp's exporter (private to src/io).
 #pragma once
 
 #include "rotinterp/clip/clip.h"
@@ -10,8 +10,7 @@
 
 namespace rotinterp {
 
-// assimp exporter id for a lower-case extension with dot (".fbx" → "fbx",
-// ".gltf" → "gltf2", ".glb" → "glb2", ".dae" → "collada"); nullopt otherwise.
+// assimp exporter id for a lower-case extension with dot (".gltf" → "gltf2", ".glb" → "glb2", ".dae" → "collada"); nullopt otherwise.
 std::optional<std::string> assimp_export_format(const std::string& extension);
 
 // Builds an aiScene from `clip` (a node per joint with its rest transform

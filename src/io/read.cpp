@@ -5,6 +5,7 @@
 #include "assimp_text.h"
 #include "clip_wire.h"
 #include "import.h"
+#include "rotinterp/clip/sampling.h"
 #include "rotinterp/io/bvh.h"
 #include "rotinterp/io/info.h"
 
@@ -145,7 +146,7 @@ void add_times(const aiNodeAnim* ch, std::vector<double>& times) {
 // The step d when every time is t₀ + k·d (within kGridTolerance of d), d the
 // smallest gap; 0 otherwise. Formats that store seconds in float (glTF) or at a
 // fixed tick rate (Collada: 1000/s) keep their frame rate this way. A step within
-// 1e-5 of a whole number of frames per second snaps to it.
+// 1e-5 of an integer or NTSC (n·1000/1001) rate is that rate (recognize_rate).
 constexpr double kGridTolerance = 1e-3;
 constexpr double kRateSnapTolerance = 1e-5;
 double uniform_grid_step(std::vector<double> ticks) {
@@ -476,9 +477,12 @@ Status fill_scene(const aiScene* scene, const aiAnimation* anim, double tps, Cli
   if (whole_ticks && tps <= kMaxFrameRate) {
     clip.frame_time = 1.0 / tps;
   } else if (const double step = uniform_grid_step(all_ticks) / tps; step > 0.0) {
-    const double rate = 1.0 / step;
-    clip.frame_time = std::abs(rate - std::round(rate)) < kRateSnapTolerance * rate ? 1.0 / std::round(rate) : step;
+    // Float times: an integer or NTSC rate within the tolerance is that exact rate.
+    const std::optional<Rate> exact = recognize_rate(1.0 / step, kRateSnapTolerance);
+    clip.frame_time = exact ? exact->period() : step;
   }
+
+  clip.source_meshes = scene->mNumMeshes;
 
   // Unit scale: FBX gives centimetres per unit.
   if (scene->mMetaData) {

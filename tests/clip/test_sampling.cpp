@@ -65,6 +65,19 @@ TEST(Sampling, PrintedFrameTimesAreRecognizedWithinTheirPrecision) {
   EXPECT_FALSE(rate_from_frame_time(NAN).ok());
 }
 
+// Computed rates (1/ticks-per-second in float, a float grid's step) are the integer
+// or NTSC rate within float precision: assimp's FBX NTSC 29.9700262 Hz is 30000/1001.
+TEST(Sampling, ComputedRatesAreRecognizedWithinFloatPrecision) {
+  EXPECT_EQ(recognize_rate(29.9700262, kComputedRateTolerance), (Rate{30000, 1001}));
+  EXPECT_EQ(recognize_rate(59.94005994, kComputedRateTolerance), (Rate{60000, 1001}));
+  EXPECT_EQ(recognize_rate(60.00001, kComputedRateTolerance), (Rate{60, 1}));
+  EXPECT_EQ(recognize_rate(1.0 / static_cast<double>(static_cast<float>(1.0 / 60.0)), kComputedRateTolerance), (Rate{60, 1}));
+  EXPECT_FALSE(recognize_rate(59.99, kComputedRateTolerance));
+  EXPECT_FALSE(recognize_rate(29.97, kComputedRateTolerance));  // 2997/100 is not NTSC: 1e-6 apart
+  EXPECT_EQ(*rate_from_frame_time(1.0 / 29.9700262), (Rate{30000, 1001}));
+  EXPECT_EQ(*rate_from_frame_time(1.0 / static_cast<float>(120.0)), (Rate{120, 1}));
+}
+
 TEST(Sampling, SampleTimesComeFromIntegersAndMeetSourceFramesExactly) {
   // 120 → 30: output k is bit-identical to source frame 4k.
   const Rate src{120, 1}, dst{30, 1};

@@ -1,4 +1,4 @@
-// FBX reading and the assimp exporters: helper folding is exact, FBX → clip →
+// FBX reading and the writers: helper folding is exact, FBX → clip →
 // FBX/glTF/GLB/Collada → clip keeps every orientation, FBX → BVH keeps world
 // joint positions.
 #include "io_test_util.h"
@@ -138,16 +138,13 @@ TEST(Fbx, FoldingKeepsMotionAssimpsPivotRemovalLoses) {
 
 class FbxExport : public ::testing::TestWithParam<const char*> {};
 
-// Tolerances per written format. glTF/GLB/Collada store floats: 1e-4°. FBX is
-// written as ASCII FBX (assimp 5.2.5 cannot re-read its own binary FBX export:
-// "FBX-Tokenize … block offset is out of range"), whose exporter prints 6
-// significant digits: an Euler angle near 180° is off by up to 180·5e-6 = 9e-4°,
-// three of them by up to 2e-3°; translations by 5e-6 relative.
+// Tolerances per written format. glTF/GLB/Collada and our FBX store floats: 1e-4°
+// (FBX: Euler angles in float degrees, an angle near 360° is off by up to 2e-5°).
 struct Tolerance {
   double degrees;
   double of_size;
 };
-Tolerance tolerance_for(const std::string& ext) { return ext == ".fbx" ? Tolerance{2e-3, 5e-5} : Tolerance{1e-4, 1e-5}; }
+Tolerance tolerance_for(const std::string&) { return Tolerance{1e-4, 1e-5}; }
 
 // FBX → clip → <format> → clip: same joints, orientations within tolerance.
 TEST_P(FbxExport, ReimportKeepsEveryOrientation) {
@@ -166,10 +163,8 @@ TEST_P(FbxExport, ReimportKeepsEveryOrientation) {
     EXPECT_LE(d.local_angle, tol.degrees * kDeg) << source << ": " << d.local_angle / kDeg << " degrees";
     EXPECT_LE(d.world_angle, tol.degrees * kDeg) << source << ": " << d.world_angle / kDeg << " degrees";
     EXPECT_LE(d.world_position, tol.of_size * test::skeleton_size(*a)) << source;
-    // Float seconds (glTF) and Collada times come back on the source's frame grid.
-    if (std::string(GetParam()) != ".fbx") {
-      EXPECT_NEAR(b->frame_time, a->frame_time, 1e-12) << source;
-    }
+    // FBX ticks, float seconds (glTF) and Collada times come back on the source's frame grid.
+    EXPECT_NEAR(b->frame_time, a->frame_time, 1e-12) << source;
     std::printf("[ %s -> %s ] local %.3g deg, world %.3g deg, position %.3g\n", source, GetParam(), d.local_angle / kDeg,
                 d.world_angle / kDeg, d.world_position);
     // Only the written file (plus the .gltf buffer): no temporaries left.
@@ -202,12 +197,15 @@ TEST(Fbx, ToBvhKeepsWorldJointPositions) {
       ASSERT_TRUE(s) << s.error();
       Result<Clip> b = read_clip(dir / "out.bvh");
       ASSERT_TRUE(b) << b.error();
-      ASSERT_EQ(b->skeleton.joints.size(), uniform.skeleton.joints.size());
+      // Several roots get one synthetic root above them (see below).
+      const std::size_t shift = b->skeleton.joints.size() - uniform.skeleton.joints.size();
+      ASSERT_LE(shift, 1u);
       double worst = 0.0;
       for (std::size_t f = 0; f < uniform.frame_count(); ++f) {
         const double t = uniform.start_time() + static_cast<double>(f) * uniform.frame_time;
         const WorldPose pa = test::pose_at(uniform, t), pb = test::pose_at(*b, t - uniform.start_time());
-        for (std::size_t j = 0; j < pa.position.size(); ++j) worst = std::max(worst, (pa.position[j] - pb.position[j]).norm());
+        for (std::size_t j = 0; j < pa.position.size(); ++j)
+          worst = std::max(worst, (pa.position[j] - pb.position[j + shift]).norm());
       }
       EXPECT_LE(worst, 1e-3 * size) << c.file << " " << order << ": " << worst << " of " << size;
       std::printf("[ %s -> bvh %s ] worst joint position %.3g (skeleton size %.3g)\n", c.file, order, worst, size);
@@ -236,6 +234,40 @@ TEST(Fbx, ReportsUnitScaleAndFrameRate) {
   ASSERT_TRUE(inch) << inch.error();
   EXPECT_NEAR(inch->unit_scale, 0.0254, 1e-7);
   EXPECT_LT(inch->start_time(), 0.0);  // first key at t = −1 tick is kept
+}
+
+}  // namespace
+}  // namespace rotinterp
+
+namespace rotinterp {
+namespace {
+
+// Marine_Run has three roots (Root, L_FOOT, R_FOOT): the BVH has one ROOT, a
+// synthetic joint at the origin above them, and every joint keeps its world pose.
+TEST(Fbx, SeveralRootsAreWrittenAsBvhUnderOneSyntheticRoot) {
+  Result<Clip> a = read_clip(test::kData / "fbx" / "digitalrune_Marine_Run.fbx");
+  ASSERT_TRUE(a) << a.error();
+  const Clip uniform = test::resample_uniform(*a, a->frame_time);
+  test::TempDir dir;
+  ASSERT_TRUE(write_clip(uniform, dir / "out.bvh"));
+  const std::string text = test::read_text(dir / "out.bvh");
+  EXPECT_EQ(text.find("ROOT "), text.rfind("ROOT "));
+  EXPECT_EQ(text.find("ROOT rotinterp_root\n{\n\tOFFSET 0 0 0\n"), 10u);  // right after "HIERARCHY\n"
+  Result<Clip> b = read_clip(dir / "out.bvh");
+  ASSERT_TRUE(b) << b.error();
+  ASSERT_EQ(b->skeleton.joints.size(), uniform.skeleton.joints.size() + 1);
+  EXPECT_EQ(b->skeleton.joints[0].name, "rotinterp_root");
+  double worst = 0.0;
+  for (std::size_t f = 0; f < uniform.frame_count(); ++f) {
+    const double t = uniform.start_time() + static_cast<double>(f) * uniform.frame_time;
+    const WorldPose pa = test::pose_at(uniform, t), pb = test::pose_at(*b, t - uniform.start_time());
+    for (std::size_t j = 0; j < pa.position.size(); ++j) {
+      const int k = b->skeleton.find(uniform.skeleton.joints[j].name);
+      ASSERT_GE(k, 1);
+      worst = std::max(worst, (pa.position[j] - pb.position[static_cast<std::size_t>(k)]).norm());
+    }
+  }
+  EXPECT_LE(worst, 1e-5 * test::skeleton_size(uniform));
 }
 
 }  // namespace

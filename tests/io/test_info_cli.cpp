@@ -46,3 +46,47 @@ TEST(InfoCli, TextShowsTheExactFrameTimeTheJointTreeAndFbxOddities) {
 
 }  // namespace
 }  // namespace rotinterp
+
+namespace rotinterp {
+namespace {
+
+// One rate recognizer for every command: a BVH "Frame Time: .0333330" is 30 Hz in
+// `info` (text and JSON) and in `resample`'s summary; BVH has no unit.
+TEST(InfoCli, InfoAndResampleRecognizeTheSameRateAndBvhHasNoUnit) {
+  test::TempDir dir;
+  std::string text = test::read_text(kData / "bvh" / "bvhio_example.bvh");
+  const std::size_t at = text.find("Frame Time:");
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, text.find('\n', at) - at, "Frame Time: .0333330");
+  test::write_text(dir / "in.bvh", text);
+  const test::CliResult info = test::run_cli("info '" + (dir / "in.bvh").string() + "'");
+  ASSERT_EQ(info.exit_code, 0) << info.err;
+  EXPECT_NE(info.out.find("frame rate:  30 Hz (frame time .0333330 s)"), std::string::npos) << info.out;
+  EXPECT_NE(info.out.find("unit:        none"), std::string::npos) << info.out;
+  const test::CliResult json = test::run_cli("info --json '" + (dir / "in.bvh").string() + "'");
+  ASSERT_EQ(json.exit_code, 0) << json.err;
+  const nlohmann::json j = nlohmann::json::parse(json.out);
+  EXPECT_EQ(j["frame_rate"], "30");
+  EXPECT_EQ(j["frame_rate_hz"], 30.0);
+  EXPECT_TRUE(j["unit_scale_m"].is_null());
+  const test::CliResult resample = test::run_cli("resample '" + (dir / "in.bvh").string() + "' -o '" + (dir / "out.bvh").string() + "'");
+  ASSERT_EQ(resample.exit_code, 0) << resample.err;
+  EXPECT_NE(resample.out.find("(30 Hz → 30 Hz)"), std::string::npos) << resample.out;
+}
+
+// NTSC outputs of every format read back as the exact 30000/1001.
+TEST(InfoCli, NtscOutputsReadBackAsTheExactRational) {
+  test::TempDir dir;
+  for (const char* ext : {".fbx", ".glb", ".gltf", ".bvh", ".dae"}) {
+    const auto out = dir / (std::string("out") + ext);
+    const test::CliResult r = test::run_cli("resample '" + (kData / "bvh" / "NC_bandai2_raise-up-both-hands_active_031.bvh").string() +
+                                            "' -o '" + out.string() + "' --fps 30000/1001 -q");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const test::CliResult info = test::run_cli("info --json '" + out.string() + "'");
+    ASSERT_EQ(info.exit_code, 0) << info.err;
+    EXPECT_EQ(nlohmann::json::parse(info.out)["frame_rate"], "30000/1001") << ext;
+  }
+}
+
+}  // namespace
+}  // namespace rotinterp

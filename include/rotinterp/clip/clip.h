@@ -89,6 +89,7 @@ struct Clip {
   std::string frame_time_text;
   double unit_scale = 1.0;    // metres per clip unit where the source says so (FBX cm → 0.01)
   std::string source_format;  // "bvh", "fbx", … (informational)
+  std::size_t source_meshes = 0;  // meshes (with their skins) in the source: no writer keeps them
 
   // Invariants: skeleton valid; one rotation and one translation entry per joint;
   // every track valid.

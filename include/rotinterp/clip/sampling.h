@@ -12,6 +12,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -45,14 +46,27 @@ Result<Rate> make_rate(std::int64_t num, std::int64_t den);
 // or too large (> 1e9 Hz).
 Result<Rate> parse_rate(std::string_view text);
 
+// Relative precision of a rate computed from stored times rather than printed:
+// float32 key times (glTF) and assimp's float tick rates (FBX NTSC 29.9700262 Hz)
+// are good to ~6e-8; 1e-6 leaves room for a step averaged over a float grid.
+constexpr double kComputedRateTolerance = 1e-6;
+
+// The exact rate behind a rate `hz` known to `relative_tolerance`: the first of
+// (1) an integer rate n = 1 … 100 000 Hz, (2) an NTSC rate n·1000/1001 within
+// the tolerance; nothing otherwise.
+std::optional<Rate> recognize_rate(double hz, double relative_tolerance);
+
 // The exact rate behind a frame time read from a file. A frame time is printed with
 // finite precision (BVH "Frame Time: 0.008333" is 1/120 to 6 decimals). The
 // printed precision is taken from the shortest decimal that reads back as
 // `frame_time` (0.008333 → 6 decimals → ±5e-7 s). Within that precision the first
 // match of (1) an integer rate n = 1 … 100 000 Hz (period 1/n), (2) an NTSC rate
 // n·1000/1001 (period 1001/(1000 n)) is taken; otherwise the printed decimal itself
-// is the exact period (0.0123 → 10000/123 Hz). Returns an error for frame_time ≤ 0
-// or not finite.
+// is the exact period (0.0123 → 10000/123 Hz). A frame time with more than 12
+// decimals was computed, not printed (1/ticks-per-second, a float grid's step): it
+// goes through recognize_rate(1/frame_time, kComputedRateTolerance), then to the
+// simplest nearby rational. This is the one recognizer every command uses
+// (clip_rate in clip/resample.h). Returns an error for frame_time ≤ 0 or not finite.
 Result<Rate> rate_from_frame_time(double frame_time);
 
 // Number of samples of a grid at `rate` over `duration` seconds, first sample at

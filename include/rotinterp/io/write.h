@@ -1,5 +1,6 @@
-// Writing clips: BVH by our own writer (keeping a BVH source's layout), FBX,
-// glTF/GLB and Collada through assimp's exporter. The format follows the
+// Writing clips: BVH by our own writer (keeping a BVH source's layout), FBX by our
+// own writer (binary FBX 7.4, ASCII on request), glTF/GLB and Collada through
+// assimp's exporter. The format follows the
 // extension of the path. Every write is atomic (see io/atomic_file.h).
 #pragma once
 
@@ -7,6 +8,7 @@
 #include "rotinterp/core/result.h"
 
 #include <filesystem>
+#include <functional>
 #include <string>
 
 namespace rotinterp {
@@ -15,6 +17,12 @@ struct WriteOptions {
   // Euler order of rotation channels for joints that have no BVH layout (a
   // non-BVH source written as BVH), e.g. "ZXY" (default) — first letter outermost.
   std::string bvh_order = "ZXY";
+  // FBX: ASCII FBX 7.4 instead of binary (CLI: --fbx-ascii). Binary is what every
+  // current reader takes (Blender reads no ASCII FBX); ASCII is for reading by eye.
+  bool fbx_ascii = false;
+  // Receives one-line warnings ("<file>: <what>"), e.g. that the source's meshes and
+  // skins are not written; empty = dropped. The CLI prints them on stderr.
+  std::function<void(const std::string&)> on_warning;
 };
 
 // Writes `clip` to `path`; the format follows the extension (bvh, fbx, glb, gltf,

@@ -1,0 +1,412 @@
+#include "fbx_write.h"
+
+#include "fbx_encode.h"
+#include "rotinterp/clip/resample.h"
+#include "rotinterp/clip/sampling.h"
+#include "rotinterp/io/euler.h"
+#include "track_sample.h"
+
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <optional>
+
+namespace rotinterp {
+
+namespace {
+
+using i128 = __int128;
+
+constexpr int kTimeModeCustom = 14;
+constexpr int kTimeModeDefault = 0;
+// FbxAnimCurve key layout version and per-key attributes (one shared entry): linear
+// interpolation (0x4) with the SDK's default tangent bits, and the default tangent
+// weights 1/3 packed as two 16-bit 3333s into one float's bits.
+constexpr std::int32_t kKeyVersion = 4008;
+constexpr std::int32_t kKeyLinearFlags = 0x4 | 0x100 | 0x2000 | 0x4000;
+constexpr std::uint32_t kDefaultTangentWeights = 0x0D050D05;
+// A fixed creation time (and the FileId the format notes give for it), so that the
+// same command writes the same bytes.
+constexpr const char* kCreationTime = "1970-01-01 10:00:00:000";
+constexpr unsigned char kFileId[16] = {0x28, 0xb3, 0x2a, 0xeb, 0xb6, 0x24, 0xcc, 0xc2,
+                                       0xbf, 0xc8, 0xb0, 0x2a, 0xa9, 0x2b, 0xfc, 0xf1};
+// Key times within this (s, relative to max(1, |t|)) of a grid time are on the grid.
+constexpr double kOnGridTolerance = 1e-9;
+
+// Tick k of a rate num/den after `start_tick`: start + round(k·den·TPS/num), exactly.
+std::int64_t grid_tick(std::int64_t start_tick, std::int64_t k, const Rate& r) {
+  const i128 n = static_cast<i128>(k) * r.den * kFbxTicksPerSecond;
+  const i128 q = (2 * n + r.num) / (2 * static_cast<i128>(r.num));  // round half up (n ≥ 0)
+  return start_tick + static_cast<std::int64_t>(q);
+}
+
+std::vector<std::int64_t> fbx_ticks(const std::vector<double>& times, const std::optional<Rate>& rate) {
+  std::vector<std::int64_t> ticks(times.size());
+  const double t0 = times.front();
+  const auto start_tick = static_cast<std::int64_t>(std::llround(t0 * static_cast<double>(kFbxTicksPerSecond)));
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    const double t = times[i];
+    if (rate) {
+      const double k = std::round((t - t0) * rate->hz());
+      if (k >= 0 && k < 9e15 &&
+          std::abs(t0 + rate->time_of(static_cast<std::int64_t>(k)) - t) <= kOnGridTolerance * std::max(1.0, std::abs(t))) {
+        ticks[i] = grid_tick(start_tick, static_cast<std::int64_t>(k), *rate);
+        continue;
+      }
+    }
+    ticks[i] = static_cast<std::int64_t>(std::llround(t * static_cast<double>(kFbxTicksPerSecond)));
+  }
+  return ticks;
+}
+
+// The joint's rotation order: its BVH rotation channels when they are three
+// different axes, else FBX's default XYZ (R = Rz·Ry·Rx: our outermost-first ZYX).
+EulerAxes joint_axes(const Joint& joint) {
+  EulerAxes axes{};
+  int n = 0;
+  for (Channel c : joint.channels) {
+    if (c < Channel::Xrotation) continue;
+    if (n == 3) return {2, 1, 0};
+    axes[static_cast<std::size_t>(n++)] = static_cast<int>(c) - static_cast<int>(Channel::Xrotation);
+  }
+  if (n != 3 || axes[0] == axes[2]) return {2, 1, 0};
+  return axes;
+}
+
+// FBX's EFbxRotationOrder names the axes in the order they apply (innermost first):
+// eEulerXYZ = 0 is R = Rz·Ry·Rx.
+int fbx_rotation_order(const EulerAxes& a) {
+  static const char* names[] = {"XYZ", "XZY", "YZX", "YXZ", "ZXY", "ZYX"};
+  const std::string name{static_cast<char>('X' + a[2]), static_cast<char>('X' + a[1]), static_cast<char>('X' + a[0])};
+  for (int i = 0; i < 6; ++i)
+    if (name == names[i]) return i;
+  return 0;
+}
+
+constexpr double kDegrees = 180.0 / kPi;
+
+class Document {
+ public:
+  explicit Document(FbxEncoding e)
+      : enc_(e == FbxEncoding::binary ? FbxEncoder::Format::binary : FbxEncoder::Format::ascii) {}
+  FbxEncoder& enc() { return enc_; }
+
+  // A Properties70 entry: P: name, type, label, flags, values… (values follow; then end()).
+  FbxEncoder& p(std::string_view name, std::string_view type, std::string_view label, std::string_view flags) {
+    enc_.begin("P");
+    return enc_.str(name).str(type).str(label).str(flags);
+  }
+  void p_int(std::string_view name, std::string_view type, std::string_view label, std::int32_t v) {
+    p(name, type, label, "").i32(v);
+    enc_.end();
+  }
+  void p_double(std::string_view name, double v) {
+    p(name, "double", "Number", "").f64(v);
+    enc_.end();
+  }
+  void p_time(std::string_view name, std::int64_t ticks) {
+    p(name, "KTime", "Time", "").i64(ticks);
+    enc_.end();
+  }
+  void p_vec(std::string_view name, const Vec3& v) {
+    p(name, name, "", "A").f64(v.x()).f64(v.y()).f64(v.z());
+    enc_.end();
+  }
+  void leaf_i32(std::string_view name, std::int32_t v) {
+    enc_.begin(name);
+    enc_.i32(v);
+    enc_.end();
+  }
+  void leaf_str(std::string_view name, std::string_view v) {
+    enc_.begin(name);
+    enc_.str(v);
+    enc_.end();
+  }
+  void connect(std::int64_t child, std::int64_t parent, std::string_view property = {}) {
+    enc_.begin("C");
+    enc_.str(property.empty() ? "OO" : "OP").i64(child).i64(parent);
+    if (!property.empty()) enc_.str(property);
+    enc_.end();
+  }
+
+ private:
+  FbxEncoder enc_;
+};
+
+struct Curves {
+  std::vector<float> axis[3];
+};
+
+}  // namespace
+
+int fbx_time_mode(std::int64_t num, std::int64_t den) {
+  struct Mode {
+    std::int64_t num, den;
+    int mode;
+  };
+  static constexpr Mode modes[] = {{120, 1, 1},    {100, 1, 2},       {60, 1, 3},         {50, 1, 4},
+                                   {48, 1, 5},     {30, 1, 6},        {30000, 1001, 9},   {25, 1, 10},
+                                   {24, 1, 11},    {24000, 1001, 13}, {96, 1, 15},        {72, 1, 16},
+                                   {60000, 1001, 17}, {120000, 1001, 18}};
+  for (const Mode& m : modes)
+    if (m.num == num && m.den == den) return m.mode;
+  return kTimeModeCustom;
+}
+
+Result<std::string> encode_fbx(const Clip& clip, FbxEncoding encoding) {
+  if (Status s = clip.validate(); !s) return make_error("cannot write an invalid clip: " + s.error());
+  const Skeleton& sk = clip.skeleton;
+  const std::size_t n = sk.joints.size();
+  const std::vector<double> times = all_key_times(clip);
+  const std::optional<Rate> rate = clip_rate(clip);
+  const std::vector<std::int64_t> ticks = fbx_ticks(times, rate);
+  const std::int64_t first = ticks.front(), last = ticks.back();
+  const std::string take = clip.name.empty() ? std::string("clip") : clip.name;
+
+  // Curves: Euler angles (degrees) continuous from key to key, translations.
+  std::vector<EulerAxes> axes(n);
+  std::vector<Curves> rot(n), pos(n);
+  std::vector<Vec3> rest_euler(n);
+  for (std::size_t j = 0; j < n; ++j) {
+    axes[j] = joint_axes(sk.joints[j]);
+    // Angle i of a sequence turns about axis axes[i]; FBX stores them by axis (X, Y, Z).
+    const Vec3 rest = euler_nearest(sk.joints[j].rest_rotation, axes[j], Vec3::Zero()) * kDegrees;
+    for (int i = 0; i < 3; ++i) rest_euler[j][axes[j][static_cast<std::size_t>(i)]] = rest[i];
+    Vec3 previous = Vec3::Zero();
+    for (auto& a : rot[j].axis) a.reserve(times.size());
+    for (double t : times) {
+      previous = euler_nearest(sample_rotation(clip.rotations[j], t), axes[j], previous);
+      for (int i = 0; i < 3; ++i)
+        rot[j].axis[axes[j][static_cast<std::size_t>(i)]].push_back(static_cast<float>(previous[i] * kDegrees));
+    }
+    if (const auto& tr = clip.translations[j])
+      for (double t : times) {
+        const Vec3 v = sample_translation(*tr, t);
+        for (int a = 0; a < 3; ++a) pos[j].axis[a].push_back(static_cast<float>(v[a]));
+      }
+  }
+
+  Document doc(encoding);
+  FbxEncoder& e = doc.enc();
+  const std::string creator = std::string("rotinterp ") + ROTINTERP_VERSION;
+
+  e.begin("FBXHeaderExtension");
+  doc.leaf_i32("FBXHeaderVersion", 1003);
+  doc.leaf_i32("FBXVersion", static_cast<std::int32_t>(FbxEncoder::kVersion));
+  e.begin("CreationTimeStamp");
+  doc.leaf_i32("Version", 1000);
+  for (auto [field, v] : {std::pair<const char*, int>{"Year", 1970}, {"Month", 1}, {"Day", 1}, {"Hour", 10},
+                          {"Minute", 0}, {"Second", 0}, {"Millisecond", 0}})
+    doc.leaf_i32(field, v);
+  e.end();
+  doc.leaf_str("Creator", creator);
+  e.end();
+  if (encoding == FbxEncoding::binary) {
+    e.begin("FileId");
+    e.raw(std::string_view(reinterpret_cast<const char*>(kFileId), sizeof kFileId));
+    e.end();
+    doc.leaf_str("CreationTime", kCreationTime);
+    doc.leaf_str("Creator", creator);
+  }
+
+  // Global settings: axes as BVH (Y up, Z front, X right), units, the clip's rate.
+  e.begin("GlobalSettings");
+  doc.leaf_i32("Version", 1000);
+  e.begin("Properties70");
+  for (auto [name, v] : {std::pair<const char*, int>{"UpAxis", 1}, {"UpAxisSign", 1}, {"FrontAxis", 2},
+                         {"FrontAxisSign", 1}, {"CoordAxis", 0}, {"CoordAxisSign", 1}, {"OriginalUpAxis", 1},
+                         {"OriginalUpAxisSign", 1}})
+    doc.p_int(name, "int", "Integer", v);
+  doc.p_double("UnitScaleFactor", 100.0 * clip.unit_scale);
+  doc.p_double("OriginalUnitScaleFactor", 100.0 * clip.unit_scale);
+  doc.p("TimeMode", "enum", "", "").i32(rate ? fbx_time_mode(rate->num, rate->den) : kTimeModeDefault);
+  e.end();
+  doc.p_time("TimeSpanStart", first);
+  doc.p_time("TimeSpanStop", last);
+  doc.p_double("CustomFrameRate", rate ? rate->hz() : -1.0);
+  e.end();
+  e.end();
+
+  // Object ids: node attributes, models, stack, layer, curve nodes, curves.
+  std::int64_t next_id = 1000000;
+  auto new_id = [&next_id] { return next_id++; };
+  const std::int64_t document_id = new_id();
+  std::vector<std::int64_t> attr_id(n), model_id(n), rot_node(n), pos_node(n, 0);
+  std::vector<std::array<std::int64_t, 3>> rot_curve(n), pos_curve(n);
+  for (std::size_t j = 0; j < n; ++j) attr_id[j] = new_id(), model_id[j] = new_id();
+  const std::int64_t stack_id = new_id(), layer_id = new_id();
+  std::size_t curve_nodes = 0;
+  for (std::size_t j = 0; j < n; ++j) {
+    rot_node[j] = new_id();
+    for (auto& c : rot_curve[j]) c = new_id();
+    ++curve_nodes;
+    if (!pos[j].axis[0].empty()) {
+      pos_node[j] = new_id();
+      for (auto& c : pos_curve[j]) c = new_id();
+      ++curve_nodes;
+    }
+  }
+
+  e.begin("Documents");
+  doc.leaf_i32("Count", 1);
+  e.begin("Document");
+  e.i64(document_id).str("Scene").str("Scene");
+  e.begin("Properties70");
+  doc.p("SourceObject", "object", "", "");
+  e.end();
+  doc.p("ActiveAnimStackName", "KString", "", "").str(take);
+  e.end();
+  e.end();
+  e.begin("RootNode");
+  e.i64(0);
+  e.end();
+  e.end();
+  e.end();
+  e.begin("References");
+  e.end();
+
+  e.begin("Definitions");
+  doc.leaf_i32("Version", 100);
+  const std::pair<const char*, std::size_t> types[] = {{"GlobalSettings", 1}, {"NodeAttribute", n}, {"Model", n},
+                                                       {"AnimationStack", 1}, {"AnimationLayer", 1},
+                                                       {"AnimationCurveNode", curve_nodes},
+                                                       {"AnimationCurve", 3 * curve_nodes}};
+  std::size_t total = 0;
+  for (const auto& t : types) total += t.second;
+  doc.leaf_i32("Count", static_cast<std::int32_t>(total));
+  for (const auto& [type, count] : types) {
+    e.begin("ObjectType");
+    e.str(type);
+    doc.leaf_i32("Count", static_cast<std::int32_t>(count));
+    e.end();
+  }
+  e.end();
+
+  e.begin("Objects");
+  for (std::size_t j = 0; j < n; ++j) {
+    e.begin("NodeAttribute");
+    e.i64(attr_id[j]).str(e.object_name(sk.joints[j].name, "NodeAttribute")).str("LimbNode");
+    e.begin("Properties70");
+    doc.p_double("Size", 1.0);
+    e.end();
+    doc.leaf_str("TypeFlags", "Skeleton");
+    e.end();
+  }
+  for (std::size_t j = 0; j < n; ++j) {
+    const Joint& joint = sk.joints[j];
+    e.begin("Model");
+    e.i64(model_id[j]).str(e.object_name(joint.name, "Model")).str("LimbNode");
+    doc.leaf_i32("Version", 232);
+    e.begin("Properties70");
+    doc.p("RotationOrder", "enum", "", "").i32(fbx_rotation_order(axes[j]));
+    e.end();
+    doc.p_int("RotationActive", "bool", "", 1);
+    doc.p_int("InheritType", "enum", "", 1);
+    doc.p_int("DefaultAttributeIndex", "int", "Integer", 0);
+    doc.p_vec("Lcl Translation", joint.offset);
+    doc.p_vec("Lcl Rotation", rest_euler[j]);
+    doc.p_vec("Lcl Scaling", Vec3::Ones());
+    e.end();
+    doc.leaf_str("Culling", "CullingOff");
+    e.end();
+  }
+  e.begin("AnimationStack");
+  e.i64(stack_id).str(e.object_name(take, "AnimStack")).str("");
+  e.begin("Properties70");
+  doc.p_time("LocalStart", first);
+  doc.p_time("LocalStop", last);
+  doc.p_time("ReferenceStart", first);
+  doc.p_time("ReferenceStop", last);
+  e.end();
+  e.end();
+  e.begin("AnimationLayer");
+  e.i64(layer_id).str(e.object_name("BaseLayer", "AnimLayer")).str("");
+  e.end();
+  auto curve_node = [&](std::int64_t id, const char* name, const Curves& c) {
+    e.begin("AnimationCurveNode");
+    e.i64(id).str(e.object_name(name, "AnimCurveNode")).str("");
+    e.begin("Properties70");
+    for (int a = 0; a < 3; ++a) {
+      doc.p(std::string("d|") + static_cast<char>('X' + a), "Number", "", "A").f64(c.axis[a].front());
+      e.end();
+    }
+    e.end();
+    e.end();
+  };
+  const std::vector<float> key_data{0.0f, 0.0f, [] {
+                                      float f;
+                                      std::memcpy(&f, &kDefaultTangentWeights, 4);
+                                      return f;
+                                    }(),
+                                    0.0f};
+  auto curve = [&](std::int64_t id, const std::vector<float>& values) {
+    e.begin("AnimationCurve");
+    e.i64(id).str(e.object_name("", "AnimCurve")).str("");
+    e.begin("Default");
+    e.f64(values.front());
+    e.end();
+    doc.leaf_i32("KeyVer", kKeyVersion);
+    e.begin("KeyTime");
+    e.i64_array(ticks);
+    e.end();
+    e.begin("KeyValueFloat");
+    e.f32_array(values);
+    e.end();
+    e.begin("KeyAttrFlags");
+    e.i32_array({kKeyLinearFlags});
+    e.end();
+    e.begin("KeyAttrDataFloat");
+    e.f32_array(key_data);
+    e.end();
+    e.begin("KeyAttrRefCount");
+    e.i32_array({static_cast<std::int32_t>(values.size())});
+    e.end();
+    e.end();
+  };
+  for (std::size_t j = 0; j < n; ++j) {
+    curve_node(rot_node[j], "R", rot[j]);
+    if (pos_node[j]) curve_node(pos_node[j], "T", pos[j]);
+  }
+  for (std::size_t j = 0; j < n; ++j) {
+    for (int a = 0; a < 3; ++a) curve(rot_curve[j][static_cast<std::size_t>(a)], rot[j].axis[a]);
+    if (pos_node[j])
+      for (int a = 0; a < 3; ++a) curve(pos_curve[j][static_cast<std::size_t>(a)], pos[j].axis[a]);
+  }
+  e.end();
+
+  e.begin("Connections");
+  for (std::size_t j = 0; j < n; ++j) {
+    const int parent = sk.joints[j].parent;
+    doc.connect(model_id[j], parent >= 0 ? model_id[static_cast<std::size_t>(parent)] : 0);
+    doc.connect(attr_id[j], model_id[j]);
+  }
+  doc.connect(layer_id, stack_id);
+  static const char* axis_names[] = {"d|X", "d|Y", "d|Z"};
+  for (std::size_t j = 0; j < n; ++j) {
+    doc.connect(rot_node[j], layer_id);
+    doc.connect(rot_node[j], model_id[j], "Lcl Rotation");
+    for (std::size_t a = 0; a < 3; ++a) doc.connect(rot_curve[j][a], rot_node[j], axis_names[a]);
+    if (!pos_node[j]) continue;
+    doc.connect(pos_node[j], layer_id);
+    doc.connect(pos_node[j], model_id[j], "Lcl Translation");
+    for (std::size_t a = 0; a < 3; ++a) doc.connect(pos_curve[j][a], pos_node[j], axis_names[a]);
+  }
+  e.end();
+
+  e.begin("Takes");
+  doc.leaf_str("Current", take);
+  e.begin("Take");
+  e.str(take);
+  doc.leaf_str("FileName", take + ".tak");
+  e.begin("LocalTime");
+  e.i64(first).i64(last);
+  e.end();
+  e.begin("ReferenceTime");
+  e.i64(first).i64(last);
+  e.end();
+  e.end();
+  e.end();
+  return e.finish();
+}
+
+}  // namespace rotinterp

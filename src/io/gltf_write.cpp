@@ -1,0 +1,210 @@
+#include "gltf_write.h"
+
+#include "rotinterp/clip/resample.h"
+#include "rotinterp/io/atomic_file.h"
+#include "track_sample.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cerrno>
+#include <cstdint>
+#include <fstream>
+#include <cstdio>
+#include <cstring>
+#include <optional>
+
+namespace rotinterp {
+
+namespace {
+
+constexpr int kFloat = 5126;            // glTF componentType FLOAT
+constexpr std::uint32_t kGlbMagic = 0x46546C67;  // "glTF"
+constexpr std::uint32_t kChunkJson = 0x4E4F534A;  // "JSON"
+constexpr std::uint32_t kChunkBin = 0x004E4942;   // "BIN\0"
+
+template <class U>
+void put_le(std::string& out, U v) {
+  for (std::size_t i = 0; i < sizeof(U); ++i) out.push_back(static_cast<char>((v >> (8 * i)) & 0xff));
+}
+void put_float(std::string& out, double v) {
+  const auto f = static_cast<float>(v);
+  std::uint32_t u;
+  std::memcpy(&u, &f, 4);
+  put_le(out, u);
+}
+
+// The buffer and the accessors into it: one buffer view per accessor.
+struct Builder {
+  std::string bin;
+  nlohmann::json views = nlohmann::json::array();
+  nlohmann::json accessors = nlohmann::json::array();
+
+  // Floats already appended from `start`; `count` elements of `type` ("VEC4", …).
+  int accessor(std::size_t start, std::size_t count, const char* type, nlohmann::json extra = nlohmann::json::object()) {
+    views.push_back({{"buffer", 0}, {"byteOffset", start}, {"byteLength", bin.size() - start}});
+    nlohmann::json a = {{"bufferView", views.size() - 1}, {"componentType", kFloat}, {"count", count}, {"type", type}};
+    a.update(extra);
+    accessors.push_back(a);
+    return static_cast<int>(accessors.size() - 1);
+  }
+};
+
+// Inverse bind matrices: the inverse of each joint's world rest transform, column-major.
+std::vector<double> rest_world_inverse(const Skeleton& sk) {
+  std::vector<double> out;
+  std::vector<Eigen::Matrix4d> world(sk.joints.size());
+  for (std::size_t j = 0; j < sk.joints.size(); ++j) {
+    Eigen::Matrix4d local = Eigen::Matrix4d::Identity();
+    local.topLeftCorner<3, 3>() = sk.joints[j].rest_rotation.normalized().toRotationMatrix();
+    local.topRightCorner<3, 1>() = sk.joints[j].offset;
+    const int p = sk.joints[j].parent;
+    world[j] = p >= 0 ? Eigen::Matrix4d(world[static_cast<std::size_t>(p)] * local) : local;
+    const Eigen::Matrix4d inv = world[j].inverse();
+    for (int c = 0; c < 4; ++c)
+      for (int r = 0; r < 4; ++r) out.push_back(inv(r, c));  // column-major
+  }
+  return out;
+}
+
+Status write_bytes(const std::filesystem::path& temp, const std::string& bytes) {
+  std::ofstream f(temp, std::ios::binary | std::ios::trunc);
+  if (!f) return make_error(std::string("cannot write: ") + std::strerror(errno));
+  f.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  f.flush();
+  if (!f) return make_error(std::string("write failed: ") + std::strerror(errno));
+  return Ok{};
+}
+
+std::uint64_t fnv1a(const std::string& bytes) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (unsigned char c : bytes) h = (h ^ c) * 1099511628211ull;
+  return h;
+}
+
+struct Document {
+  nlohmann::json json;
+  std::string buffer;
+};
+
+Result<Document> build(const Clip& clip) {
+  if (Status s = clip.validate(); !s) return make_error("cannot write an invalid clip: " + s.error());
+  const Skeleton& sk = clip.skeleton;
+  const std::size_t n = sk.joints.size();
+  const std::vector<double> times = all_key_times(clip);
+  Builder b;
+
+  std::size_t start = b.bin.size();
+  float lo = INFINITY, hi = -INFINITY;
+  for (double t : times) {
+    put_float(b.bin, t);
+    lo = std::min(lo, static_cast<float>(t));
+    hi = std::max(hi, static_cast<float>(t));
+  }
+  const int input = b.accessor(start, times.size(), "SCALAR", {{"min", {lo}}, {"max", {hi}}});
+
+  nlohmann::json nodes = nlohmann::json::array(), roots = nlohmann::json::array();
+  nlohmann::json samplers = nlohmann::json::array(), channels = nlohmann::json::array();
+  std::vector<nlohmann::json> children(n, nlohmann::json::array());
+  for (std::size_t j = 0; j < n; ++j) {
+    const int p = sk.joints[j].parent;
+    if (p < 0) roots.push_back(j);
+    else children[static_cast<std::size_t>(p)].push_back(j);
+  }
+  for (std::size_t j = 0; j < n; ++j) {
+    const Joint& joint = sk.joints[j];
+    const Quat r = joint.rest_rotation.normalized();
+    nlohmann::json node = {{"name", joint.name},
+                           {"translation", {joint.offset.x(), joint.offset.y(), joint.offset.z()}},
+                           {"rotation", {r.x(), r.y(), r.z(), r.w()}}};
+    if (!children[j].empty()) node["children"] = children[j];
+    nodes.push_back(node);
+
+    auto channel = [&](int output, const char* path) {
+      samplers.push_back({{"input", input}, {"output", output}, {"interpolation", "LINEAR"}});
+      channels.push_back({{"sampler", samplers.size() - 1}, {"target", {{"node", j}, {"path", path}}}});
+    };
+    start = b.bin.size();
+    // Sign-continuous keys (the clip's tracks are): no reader takes the long way round.
+    Quat previous = sample_rotation(clip.rotations[j], times.front());
+    for (double t : times) {
+      Quat q = sample_rotation(clip.rotations[j], t);
+      if (q.dot(previous) < 0) q.coeffs() = -q.coeffs();
+      previous = q;
+      for (double c : {q.x(), q.y(), q.z(), q.w()}) put_float(b.bin, c);
+    }
+    channel(b.accessor(start, times.size(), "VEC4"), "rotation");
+    if (const auto& tr = clip.translations[j]) {
+      start = b.bin.size();
+      for (double t : times) {
+        const Vec3 v = sample_translation(*tr, t);
+        for (int a = 0; a < 3; ++a) put_float(b.bin, v[a]);
+      }
+      channel(b.accessor(start, times.size(), "VEC3"), "translation");
+    }
+  }
+  start = b.bin.size();
+  for (double v : rest_world_inverse(sk)) put_float(b.bin, v);
+  const int ibm = b.accessor(start, n, "MAT4");
+
+  nlohmann::json joints = nlohmann::json::array();
+  for (std::size_t j = 0; j < n; ++j) joints.push_back(j);
+  nlohmann::json skin = {{"name", "skeleton"}, {"joints", joints}, {"inverseBindMatrices", ibm}};
+  if (roots.size() == 1) skin["skeleton"] = roots[0];
+  const nlohmann::json buffer = {{"byteLength", b.bin.size()}};
+  nlohmann::json doc = {
+      {"asset", {{"version", "2.0"}, {"generator", std::string("rotinterp ") + ROTINTERP_VERSION}}},
+      {"scene", 0},
+      {"scenes", {{{"nodes", roots}}}},
+      {"nodes", nodes},
+      {"skins", {skin}},
+      {"animations", {{{"name", clip.name.empty() ? std::string("clip") : clip.name}, {"samplers", samplers}, {"channels", channels}}}},
+      {"buffers", {buffer}},
+      {"bufferViews", b.views},
+      {"accessors", b.accessors}};
+  return Document{std::move(doc), std::move(b.bin)};
+}
+
+}  // namespace
+
+Status write_gltf(const Clip& clip, const std::filesystem::path& path, bool binary) {
+  const std::string label = path.string();
+  Result<Document> doc = build(clip);
+  if (!doc) return make_error(label + ": " + doc.error());
+  if (binary) {
+    std::string json = doc->json.dump();
+    std::string& bin = doc->buffer;
+    json.append((4 - json.size() % 4) % 4, ' ');
+    bin.append((4 - bin.size() % 4) % 4, '\0');
+    const std::uint64_t total = 12 + 8 + json.size() + 8 + bin.size();
+    if (total > UINT32_MAX) return make_error(label + ": the GLB would pass 4 GiB; write .gltf instead");
+    return write_file_atomically(path, [&](std::ostream& out) -> Status {
+      std::string head;
+      put_le(head, kGlbMagic);
+      put_le<std::uint32_t>(head, 2);
+      put_le(head, static_cast<std::uint32_t>(total));
+      put_le(head, static_cast<std::uint32_t>(json.size()));
+      put_le(head, kChunkJson);
+      out << head << json;
+      head.clear();
+      put_le(head, static_cast<std::uint32_t>(bin.size()));
+      put_le(head, kChunkBin);
+      out << head << bin;
+      return Ok{};
+    });
+  }
+  // The buffer is named by its bytes: a .gltf never names a buffer another run
+  // wrote. Both are written to temporaries first, then the buffer is renamed into
+  // place before the .gltf, so a .gltf never names a missing or partial buffer.
+  char hash[17];
+  std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(fnv1a(doc->buffer)));
+  const std::filesystem::path bin_path = std::filesystem::path(path).replace_filename(path.stem().string() + "-" + hash + ".bin");
+  doc->json["buffers"][0]["uri"] = bin_path.filename().string();
+  AtomicOutput bin_out(bin_path), gltf_out(path);
+  if (Status s = write_bytes(bin_out.temp_path(), doc->buffer); !s)
+    return make_error(label + ": cannot write its buffer " + bin_path.filename().string() + ": " + s.error());
+  if (Status s = write_bytes(gltf_out.temp_path(), doc->json.dump()); !s) return make_error(label + ": " + s.error());
+  if (Status s = bin_out.commit(); !s) return make_error(label + ": cannot write its buffer: " + s.error());
+  return gltf_out.commit();
+}
+
+}  // namespace rotinterp

@@ -1,0 +1,25 @@
+// Our own glTF 2.0 writer (private to src/io): `.glb` (one binary file) or `.gltf`
+// (JSON plus a `.bin` buffer named by its content). What it writes:
+//  * every joint as a node (name, rest translation and rotation, children); the
+//    roots are the scene's nodes;
+//  * one skin over all joints, inverse bind matrices from the rest pose, so that
+//    readers (Blender) build an armature;
+//  * one animation: per joint a rotation channel (and a translation channel where
+//    the joint has a translation track), LINEAR, keys at every key time of the clip
+//    (the union over all joints), times as the float nearest start + k/rate.
+// Translations are in clip units (glTF means metres; BVH has no unit).
+#pragma once
+
+#include "rotinterp/clip/clip.h"
+#include "rotinterp/core/result.h"
+
+#include <filesystem>
+
+namespace rotinterp {
+
+// Writes `path`: a .glb, or a .gltf whose buffer goes first, atomically, to
+// `<stem>-<hash of its bytes>.bin` beside it, so that runs writing the same .gltf
+// at once never pair a .gltf with another run's buffer.
+Status write_gltf(const Clip& clip, const std::filesystem::path& path, bool binary);
+
+}  // namespace rotinterp

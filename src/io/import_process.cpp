@@ -226,6 +226,11 @@ int importer_main(int argc, char** argv) {
   // nothing if that one is gone already.
   ::prctl(PR_SET_PDEATHSIG, SIGKILL);
   if (std::to_string(::getppid()) != argv[2]) return 3;
+  // The reply gets a descriptor of its own; anything a library prints to stdout
+  // goes nowhere instead of into the reply.
+  const int reply = ::fcntl(STDOUT_FILENO, F_DUPFD_CLOEXEC, 3);
+  if (const int null = ::open("/dev/null", O_WRONLY); null >= 0) ::dup2(null, STDOUT_FILENO);
+  if (reply < 0) return 4;
   ReadOptions options;
   options.animation = argv[4];
   options.fold_fbx_helpers = std::string_view(argv[5]) == "1";
@@ -233,7 +238,7 @@ int importer_main(int argc, char** argv) {
   const std::string payload = wire::encode(read_in_this_process(argv[3], options));
   // _exit: no exit handlers, so LeakSanitizer does not turn assimp's leaks on a
   // bad file into a failed import.
-  ::_exit(write_all(STDOUT_FILENO, payload) ? 0 : 1);
+  ::_exit(write_all(reply, payload) ? 0 : 1);
 }
 
 }  // namespace detail

@@ -14,7 +14,6 @@
 #include <assimp/scene.h>
 
 #include <fcntl.h>
-#include <sys/prctl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 

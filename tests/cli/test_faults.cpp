@@ -397,7 +397,8 @@ TEST_F(Faults, StaleTemporariesOfDeadRunsAreRemovedAndLiveOnesKept) {
   const struct utimbuf hour_ago{std::time(nullptr) - 3600, std::time(nullptr) - 3600};
   ::utime((out_ / stale).c_str(), &hour_ago);
   ::utime((out_ / alive).c_str(), &hour_ago);
-  ASSERT_EQ(run_cli("resample " + clip().string() + " -o " + (out_ / "x.bvh").string() + " -q").exit_code, 0);
+  const auto r = run_cli("resample " + clip().string() + " -o " + (out_ / "x.bvh").string() + " -q");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(names_in(out_), (std::vector<std::string>{alive, fresh, "x.bvh"}));
 }
 

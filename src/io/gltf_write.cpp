@@ -203,8 +203,14 @@ Status write_gltf(const Clip& clip, const std::filesystem::path& path, bool bina
   if (Status s = write_bytes(bin_out.temp_path(), doc->buffer); !s)
     return make_error(label + ": cannot write its buffer " + bin_path.filename().string() + ": " + s.error());
   if (Status s = write_bytes(gltf_out.temp_path(), doc->json.dump()); !s) return make_error(label + ": " + s.error());
+  // A buffer of the same name holds the same bytes (its name is their hash): one
+  // that was there before stays if the .gltf fails; one this run added goes.
+  std::error_code ec;
+  const bool bin_existed = std::filesystem::exists(bin_path, ec);
   if (Status s = bin_out.commit(); !s) return make_error(label + ": cannot write its buffer: " + s.error());
-  return gltf_out.commit();
+  Status s = gltf_out.commit();
+  if (!s && !bin_existed) std::filesystem::remove(bin_path, ec);
+  return s;
 }
 
 }  // namespace rotinterp

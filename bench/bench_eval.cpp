@@ -44,7 +44,7 @@ namespace {
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // CPU seconds of the whole process (all threads) and of its finished children (the
-// reader's isolated assimp imports, ReadOptions::isolate_assimp): less sensitive than
+// reader's assimp imports in the importer process, src/io/import.h): less sensitive than
 // wall time to other work on a shared machine, for the single-threaded ratio.
 double cpu_seconds() {
   double total = 0.0;
@@ -113,13 +113,13 @@ double curves_alone(const std::vector<rotinterp::ClipReference>& refs, const std
         const rotinterp::RotationTrack track = rotinterp::decimated_track(ref, j, keep);
         auto curve = rotinterp::make_interpolator(method, track);
         if (!curve) continue;
-        out.resize(ref.times.size());
-        (*curve)->evaluate(ref.times.data(), out.size(), out.data());
+        out.resize(ref.frames.size());  // no subframes here: the samples are the frames
+        (*curve)->evaluate(ref.frames.data(), out.size(), out.data());
         // The stencils' centres are among the frames, as in evaluate_method.
         const double s0 = cpu_seconds();
         const std::vector<std::size_t> kf = rotinterp::key_frames(ref.frames.size(), keep);
         at_keys.resize(kf.size());
-        for (std::size_t i = 0; i < kf.size(); ++i) at_keys[i] = out[kf[i] * ref.per_frame];
+        for (std::size_t i = 0; i < kf.size(); ++i) at_keys[i] = out[kf[i]];
         (void)rotinterp::key_jumps(**curve, track.times, at_keys.data());
         stencils += cpu_seconds() - s0;
       }

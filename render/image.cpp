@@ -6,6 +6,7 @@
 
 #include <cstdlib>
 #include <ostream>
+#include <string>
 
 namespace {
 
@@ -60,8 +61,10 @@ Status write_png(const Image& image, const std::filesystem::path& path) {
     auto sink = [](void* context, void* data, int size) {
       static_cast<std::ostream*>(context)->write(static_cast<const char*>(data), size);
     };
+    // stb fails only when an allocation does (its row filters, zlib's buffers).
     if (!stbi_write_png_to_func(sink, &out, image.width, image.height, 3, image.rgb.data(), image.width * 3))
-      return make_error(path.string() + ": PNG encoding failed");
+      return make_error(path.string() + ": out of memory encoding the " + std::to_string(image.width) + "x" +
+                        std::to_string(image.height) + " PNG");
     return Ok{};
   });
 }

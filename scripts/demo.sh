@@ -18,7 +18,7 @@ $rotinterp resample "$sample" -o "$out/walk_keep4.bvh" --keep-every 4 --quiet
 # Eval: every method at key spacings 2, 4, 8, 16 — table on stdout, CSV/JSON/plots in a directory.
 $rotinterp eval "$sample" -o "$out/eval" --quiet
 # Render: three methods side by side for a few frames between keys, a trail and a contact sheet.
-$rotinterp render "$sample" -o "$out/render" --methods slerp,squad,bf --keep-every 8 --frames 20:60:10 \
+$rotinterp render "$sample" -o "$out/render" --methods slerp,squad,clamped --keep-every 8 --frames 20:60:10 \
   --trail LeftHand --sheet --quiet
 
 echo "wrote:"

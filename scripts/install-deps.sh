@@ -16,6 +16,8 @@ packages=(
   libosmesa6-dev libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri   # offscreen rendering
   libgtest-dev libgmock-dev libbenchmark-dev   # tests and benchmarks
   libglm-dev               # test-only reference for squad
+  python3-dev pybind11-dev python3-numpy   # the Python module (import rotinterp)
+  python3-pytest python3-scipy             # its tests: pytest, scipy as the reference
   time                     # /usr/bin/time: peak memory in bench/memory.sh
   blender python3-numpy    # tests/clients: Blender imports what rotinterp writes (its glTF importer needs numpy)
   assimp-utils             # tests/clients: `assimp info` reads every BVH rotinterp writes

@@ -8,7 +8,11 @@ bash scripts/install-deps.sh
 jobs=$(nproc)
 
 echo "== Release build and tests"
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS="-Werror"
+# The Python module is built for Debian's python3, whose numpy, scipy and pytest the
+# install script brings (a python3 earlier on PATH, e.g. pyenv's, may have none).
+python=()
+[ -x /usr/bin/python3 ] && python=(-DPython_EXECUTABLE=/usr/bin/python3)
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS="-Werror" "${python[@]}"
 cmake --build build -j "$jobs"
 ctest --test-dir build --output-on-failure -j "$jobs"
 

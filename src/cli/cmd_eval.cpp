@@ -2,13 +2,16 @@
 #include "common.h"
 #include "rotinterp/eval/batch.h"
 #include "rotinterp/eval/inputs.h"
+#include "rotinterp/eval/plots.h"
 #include "rotinterp/eval/synth_truth.h"
 #include "rotinterp/interp/interpolator.h"
+#include "rotinterp/io/atomic_file.h"
 
 #include <fmt/core.h>
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -37,6 +40,13 @@ int run(const EvalArgs& a) {
   const bool quiet = a.quiet;
   auto print_failure = [](const EvalFailure& f) { std::fprintf(stderr, "rotinterp: %s\n", f.message.c_str()); };
   Result<EvalReport> report = make_error("");
+  // No output file may be one of the inputs (a shard merged into itself, -o where a
+  // clip of the same name is read).
+  for (const std::string& p : a.paths) protect_input(p);
+  for (const std::string& d : a.merge)
+    for (const char* name : {kErrorsCsvName, kSummaryJsonName}) protect_input(std::filesystem::path(d) / name);
+  for (const char* name : {kErrorsCsvName, kSummaryJsonName, kSpacingPlotName, kWorstClipPlotName})
+    if (Status s = check_not_an_input(std::filesystem::path(a.output) / name); !s) return fail(s.error());
   if (!a.merge.empty()) {
     if (!a.paths.empty()) return fail_usage("eval --merge takes directories after --merge, not input paths");
     std::vector<std::filesystem::path> dirs(a.merge.begin(), a.merge.end());
@@ -59,9 +69,9 @@ int run(const EvalArgs& a) {
     }
     if (o.clip.methods.empty()) return fail("no methods to evaluate");
     for (const std::string& k : split_comma_list(a.keep_every)) {
-      if (k.empty() || k.size() > 7 || k.find_first_not_of("0123456789") != std::string::npos || std::stoi(k) < 1)
-        return fail_usage("--keep-every '" + k + "' is not a whole number ≥ 1");
-      o.clip.keep_every.push_back(std::stoi(k));
+      auto n = parse_whole_option("--keep-every", k, 1, kMaxKeepEvery);
+      if (!n) return fail_usage(n.error());
+      o.clip.keep_every.push_back(static_cast<int>(*n));
     }
     std::sort(o.clip.keep_every.begin(), o.clip.keep_every.end());
     o.clip.keep_every.erase(std::unique(o.clip.keep_every.begin(), o.clip.keep_every.end()), o.clip.keep_every.end());

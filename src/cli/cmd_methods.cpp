@@ -22,7 +22,9 @@ void add_methods_command(CLI::App& app, int& exit_code) {
         out.push_back({{"name", m.name},
                        {"description", m.description},
                        {"continuity", "C" + std::to_string(m.continuity)},
-                       {"coordinate_invariant", m.coordinate_invariant}});
+                       {"coordinate_invariant", m.coordinate_invariant},
+                       {"exact_on_constant_velocity", m.exact_on_constant_velocity},
+                       {"preserves_holds", m.preserves_holds}});
       fmt::print("{}\n", out.dump(2));
     } else {
       std::size_t width = 6;  // "method"

@@ -3,6 +3,7 @@
 #if ROTINTERP_HAVE_RENDER
 #include "common.h"
 #include "rotinterp/interp/interpolator.h"
+#include "rotinterp/io/atomic_file.h"
 #include "rotinterp/io/read.h"
 #include "rotinterp/render/comparison.h"
 #include "rotinterp/render/context.h"
@@ -21,7 +22,7 @@ struct RenderArgs {
   std::string input;
   std::string out_dir;
   std::string methods;
-  std::size_t keep_every = 10;
+  std::string keep_every = "10";
   std::string frames;
   std::string size = "960x540";
   std::string trail;
@@ -40,8 +41,9 @@ int run_render(const RenderArgs& a) {
   if (options.methods.empty()) return fail_usage("--methods: no method given (valid: " + method_names() + ")");
   for (const std::string& m : options.methods)
     if (!find_method(m)) return fail_usage("--methods: unknown method '" + m + "' (valid: " + method_names() + ")");
-  if (a.keep_every < 1) return fail_usage("--keep-every must be at least 1");
-  options.keep_every = a.keep_every;
+  auto keep_every = parse_whole_option("--keep-every", a.keep_every, 1, kMaxKeepEvery);
+  if (!keep_every) return fail_usage(keep_every.error());
+  options.keep_every = static_cast<std::size_t>(*keep_every);
   if (!a.frames.empty()) {
     auto range = render::parse_frame_range(a.frames);
     if (!range) return fail_usage(range.error());
@@ -66,6 +68,7 @@ int run_render(const RenderArgs& a) {
   options.trail_joint = a.trail;
   options.sheet = a.sheet;
 
+  protect_input(a.input);  // no frame written may replace it
   auto clip = read_clip(a.input);
   if (!clip) return fail(clip.error());
   options.progress = make_progress("render", a.quiet);

@@ -3,6 +3,7 @@
 #include "common.h"
 #include "rotinterp/clip/resample.h"
 #include "rotinterp/interp/interpolator.h"
+#include "rotinterp/io/atomic_file.h"
 #include "rotinterp/io/read.h"
 #include "rotinterp/io/write.h"
 
@@ -55,17 +56,14 @@ int run_resample(const ResampleArgs& a) {
   // Everything that can be checked without the input is checked first (exit 2).
   if (!a.fps.empty() && !a.keep_every.empty()) return fail_usage("give either --fps or --keep-every, not both");
   if (!a.fps.empty()) {
-    auto r = parse_rate(a.fps);
-    if (!r) return fail_usage("--fps: " + r.error());
+    auto r = parse_rate_option("--fps", a.fps);
+    if (!r) return fail_usage(r.error());
     opt.fps = *r;
   }
   if (!a.keep_every.empty()) {
-    char* end = nullptr;
-    errno = 0;
-    const long long n = std::strtoll(a.keep_every.c_str(), &end, 10);
-    if (end != a.keep_every.c_str() + a.keep_every.size() || errno == ERANGE || n < 1)
-      return fail_usage("--keep-every '" + a.keep_every + "' must be a whole number ≥ 1");
-    opt.keep_every = static_cast<std::size_t>(n);
+    auto n = parse_whole_option("--keep-every", a.keep_every, 1, kMaxKeepEvery);
+    if (!n) return fail_usage(n.error());
+    opt.keep_every = static_cast<std::size_t>(*n);
   }
   if (!find_method(a.method)) return fail_usage("unknown method '" + a.method + "' (valid: " + method_names() + ")");
   opt.method = a.method;
@@ -96,6 +94,8 @@ int run_resample(const ResampleArgs& a) {
   if (!valid_bvh_order(a.bvh_order)) return fail_usage("--bvh-order '" + a.bvh_order + "' must be a permutation of XYZ, e.g. ZXY");
   if (!can_write_format(a.output))
     return fail_usage("output '" + a.output + "': unknown format (use .bvh, .fbx, .glb, .gltf or .dae)");
+  protect_input(a.input);
+  if (Status s = check_not_an_input(a.output); !s) return fail(s.error());
 
   // Stage names on the progress line (reading and writing long clips take seconds).
   const bool show = !a.quiet && ::isatty(STDERR_FILENO);

@@ -38,8 +38,8 @@ int run_synth(const SynthArgs& a) {
         o.seconds <= 0.0)
       return fail_usage("--seconds '" + a.seconds + "' must be a number greater than 0");
   }
-  auto fps = parse_rate(a.fps);
-  if (!fps) return fail_usage("--fps: " + fps.error());
+  auto fps = parse_rate_option("--fps", a.fps);
+  if (!fps) return fail_usage(fps.error());
   o.fps = *fps;
   {
     errno = 0;
@@ -61,11 +61,19 @@ int run_synth(const SynthArgs& a) {
   auto clip = make_synth_clip(o);
   if (!clip) return fail_usage(clip.error());
   // The spec next to the clip, so the analytic truth can be rebuilt (eval --truth).
-  // An older spec is moved aside while the clip is written: put back if the write
-  // fails, dropped if it succeeds or the run is interrupted, so a new clip never
-  // sits beside the spec of another one.
+  // It is written (not committed) first, so that once the clip is committed only a
+  // rename is left to fail. An older spec is moved aside while the clip is written:
+  // put back if the write fails, dropped if it succeeds or the run is interrupted,
+  // so a new clip never sits beside the spec of another one.
   const std::filesystem::path spec_path = synth_spec_path(a.output);
   const std::string spec = synth_spec(o);
+  AtomicOutput spec_out(spec_path, TempKind::unnamed);
+  if (Status s = write_to(spec_out, [&](std::ostream& os) -> Status {
+        os << spec << "\n";
+        return Ok{};
+      });
+      !s)
+    return fail(s.error());
   {
     AtomicOutput old_spec(spec_path);
     std::error_code ec;
@@ -77,12 +85,7 @@ int run_synth(const SynthArgs& a) {
       return fail(s.error());
     }
   }
-  if (Status s = write_file_atomically(spec_path, [&](std::ostream& os) -> Status {
-        os << spec << "\n";
-        return Ok{};
-      });
-      !s)
-    return fail(s.error());
+  if (Status s = spec_out.commit(); !s) return fail(s.error());
   if (!a.quiet) {
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     fmt::print("{}: {} frames × {} joints ({}), {:.3f} s; spec in {}\n", a.output, clip->frame_count(),

@@ -3,8 +3,13 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <charconv>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
 #include <mutex>
 
@@ -18,6 +23,47 @@ int fail(std::string_view message) {
 int fail_usage(std::string_view message) {
   fail(message);
   return kExitUsage;
+}
+
+namespace {
+
+// `text` as a finite double when all of it is one (strtod's forms: 1e9, -30, 0x1p4).
+bool whole_text_number(const std::string& text, double& value) {
+  if (text.empty() || std::isspace(static_cast<unsigned char>(text[0]))) return false;
+  errno = 0;
+  char* end = nullptr;
+  value = std::strtod(text.c_str(), &end);
+  return end == text.c_str() + text.size() && std::isfinite(value);
+}
+
+}  // namespace
+
+Result<Rate> parse_rate_option(const std::string& option, const std::string& text) {
+  auto rate = parse_rate(text);
+  if (rate) return rate;
+  double v = 0;
+  if (!whole_text_number(text, v)) return make_error(option + ": " + rate.error());
+  const std::string quoted = "'" + text + "'";
+  if (v <= 0) return make_error(option + " " + quoted + " must be greater than 0");
+  // In range but in a form parse_rate does not read (1e3): the same value as the
+  // shortest decimal that reads back as it. Any number ≥ 1 so written reads unless
+  // it is above parse_rate's limit.
+  char buf[400];
+  const auto printed = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed);
+  if (auto again = parse_rate(std::string_view(buf, static_cast<std::size_t>(printed.ptr - buf)))) return again;
+  if (v >= 1) return make_error(option + " " + quoted + " is out of range (at most 1e9 Hz)");
+  return make_error(option + " " + quoted + " is too small or too precise for an exact rate; use a ratio such as 1/3600");
+}
+
+Result<long long> parse_whole_option(const std::string& option, const std::string& text, long long min, long long max) {
+  const std::string quoted = "'" + text + "'";
+  const std::string range = "from " + std::to_string(min) + " to " + std::to_string(max);
+  double v = 0;
+  if (!whole_text_number(text, v)) return make_error(option + " " + quoted + " is not a number (a whole number " + range + ")");
+  if (v < static_cast<double>(min)) return make_error(option + " " + quoted + " is too small (a whole number " + range + ")");
+  if (v > static_cast<double>(max)) return make_error(option + " " + quoted + " is too large (a whole number " + range + ")");
+  if (v != std::floor(v)) return make_error(option + " " + quoted + " is not a whole number (" + range + ")");
+  return static_cast<long long>(v);
 }
 
 std::vector<std::string> split_comma_list(std::string_view text) {

@@ -1,7 +1,9 @@
 // Shared plumbing of the subcommands: exit codes, error lines, progress.
 #pragma once
 
+#include "rotinterp/clip/sampling.h"
 #include "rotinterp/core/progress.h"
+#include "rotinterp/core/result.h"
 
 #include <CLI/CLI.hpp>
 
@@ -17,10 +19,21 @@ constexpr int kExitFailure = 1;  // bad input or a failed run
 constexpr int kExitUsage = 2;    // the command line itself is wrong
 constexpr int kExitPartial = 3;  // eval: some inputs failed, the rest were written
 
+// Largest --keep-every (frames between keys): far above any clip's frame count.
+constexpr long long kMaxKeepEvery = 1000000000;
+
 // Prints "rotinterp: <message>" on stderr and returns kExitFailure.
 int fail(std::string_view message);
 // The same for a bad option value: returns kExitUsage.
 int fail_usage(std::string_view message);
+
+// A frame-rate option (--fps): parse_rate's forms, plus plain numbers it does not
+// take (exponent notation: 1e3); a number out of range is called that, with the
+// range, not "not a number". Errors start with the option name.
+Result<Rate> parse_rate_option(const std::string& option, const std::string& text);
+// A whole-number option value in [min, max] ("12", also "1e3"); errors say which of
+// not a number / not whole / too small / too large it is.
+Result<long long> parse_whole_option(const std::string& option, const std::string& text, long long min, long long max);
 
 // "a,b,,c" → {"a", "b", "c"}: the items of a comma-separated option, empty ones dropped.
 std::vector<std::string> split_comma_list(std::string_view text);

@@ -5,13 +5,41 @@
 
 #include <CLI/CLI.hpp>
 
+#include <unistd.h>
+
 #include <cstdio>
 #include <exception>
+#include <new>
 #include <string>
+
+namespace {
+
+// Out of memory on any thread (a worker of eval or render) ends the run with one
+// line and exit 1, its temporary files removed, instead of an abort; anything else
+// uncaught is a bug: named on one line, then an abort.
+[[noreturn]] void on_terminate() {
+  if (const std::exception_ptr e = std::current_exception()) {
+    try {
+      std::rethrow_exception(e);
+    } catch (const std::bad_alloc&) {
+      static const char line[] = "rotinterp: out of memory\n";
+      rotinterp::remove_live_temporaries();
+      (void)!::write(STDERR_FILENO, line, sizeof line - 1);
+      _exit(rotinterp::cli::kExitFailure);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "rotinterp: internal error: %s\n", e.what());
+    } catch (...) {
+    }
+  }
+  std::abort();
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   using namespace rotinterp::cli;
   rotinterp::install_interrupt_cleanup();
+  std::set_terminate(on_terminate);
 
   CLI::App app{"rotinterp: resample, compare and evaluate keyframed 3-D orientations in motion clips"};
   app.set_version_flag("--version", std::string("rotinterp ") + ROTINTERP_VERSION);
@@ -44,6 +72,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "rotinterp: %s (run 'rotinterp --help' for usage)\n", message.c_str());
     return kExitUsage;
   } catch (const std::bad_alloc&) {
+    // Unwound: every AtomicOutput on the way removed its temporary.
     return fail("out of memory");
   } catch (const std::exception& e) {
     return fail(e.what());

@@ -71,8 +71,34 @@ json failures_json(const std::vector<EvalFailure>& failures) {
   return a;
 }
 
-// Writes summary.json (meta + results) and the plots.
-Status write_outputs(const fs::path& dir, json meta, const Summary& summary, bool plots) {
+// errors.csv into an unnamed temporary, one clip's rows at a time; committed with
+// the other outputs by write_outputs.
+class CsvWriter {
+ public:
+  explicit CsvWriter(const fs::path& target) : out_(target, TempKind::unnamed) {
+    const std::string header = error_csv_header() + '\n';
+    (void)out_.write(header.data(), header.size());
+  }
+  bool good() const { return out_.status().ok(); }
+  // Writes the rows of one clip and adds them to the summary.
+  void add_clip(const std::vector<ErrorRow>& rows, SummaryBuilder& summary) {
+    std::string text;
+    for (const ErrorRow& r : rows) text += format_error_row(r) + '\n';
+    (void)out_.write(text.data(), text.size());
+    summary.add_clip(rows);
+  }
+  std::string failure() const { return out_.status() ? out_.target().string() + ": write failed" : out_.status().error(); }
+  AtomicOutput& output() { return out_; }
+
+ private:
+  AtomicOutput out_;
+};
+
+// Writes summary.json (meta + results) and the plots, then commits them with
+// errors.csv as a unit: an interrupt before the end leaves the previous run's files
+// (all of them), after it this run's. Plots of an earlier run that this one does
+// not draw are removed, so no file in DIR is older than the others.
+Status write_outputs(const fs::path& dir, json meta, const Summary& summary, bool plots, CsvWriter& csv) {
   json results = json::array();
   for (const SummaryEntry& e : summary.entries) results.push_back(entry_json(e));
   meta["clips_evaluated"] = summary.clips;
@@ -83,40 +109,29 @@ Status write_outputs(const fs::path& dir, json meta, const Summary& summary, boo
                    {"acc", "deg/s^2"},
                    {"vel", "deg/s"}};
   const std::string text = meta.dump(2) + "\n";
-  if (Status s = write_file_atomically(dir / kSummaryJsonName,
-                                       [&](std::ostream& os) -> Status {
-                                         os << text;
-                                         return Ok{};
-                                       });
+  if (!csv.good()) return make_error(csv.failure());
+  AtomicOutput json_out(dir / kSummaryJsonName, TempKind::unnamed);
+  if (Status s = write_to(json_out,
+                          [&](std::ostream& os) -> Status {
+                            os << text;
+                            return Ok{};
+                          });
       !s)
     return s;
-  if (plots && summary.clips > 0) return write_plots(summary, dir);
+  std::vector<std::unique_ptr<AtomicOutput>> plot_outputs;
+  const bool draw = plots && summary.clips > 0;
+  if (draw)
+    if (Status s = draw_plots(summary, dir, plot_outputs); !s) return s;
+  std::vector<AtomicOutput*> all = {&csv.output(), &json_out};
+  for (auto& p : plot_outputs) all.push_back(p.get());
+  if (Status s = commit_together(all); !s) return s;
+  if (!draw)
+    for (const char* name : {kSpacingPlotName, kWorstClipPlotName}) {
+      std::error_code ec;
+      fs::remove(dir / name, ec);
+    }
   return Ok{};
 }
-
-// errors.csv through a temporary file: rows of one clip at a time, then commit.
-class CsvWriter {
- public:
-  explicit CsvWriter(const fs::path& target) : out_(target), csv_(out_.temp_path(), std::ios::binary) {
-    csv_ << error_csv_header() << '\n';
-  }
-  bool good() const { return static_cast<bool>(csv_); }
-  // Writes the rows of one clip and adds them to the summary.
-  void add_clip(const std::vector<ErrorRow>& rows, SummaryBuilder& summary) {
-    for (const ErrorRow& r : rows) csv_ << format_error_row(r) << '\n';
-    summary.add_clip(rows);
-  }
-  Status commit() {
-    csv_.close();
-    if (!csv_) return make_error(out_.target().string() + ": write failed");
-    return out_.commit();
-  }
-  std::string failure() const { return out_.target().string() + ": write failed"; }
-
- private:
-  AtomicOutput out_;
-  std::ofstream csv_;
-};
 
 Status make_dir(const fs::path& dir) {
   std::error_code ec;
@@ -164,6 +179,8 @@ Result<EvalReport> run_eval(const EvalOptions& opt) {
   }
   const std::vector<std::string> files = shard_of(*all, opt.shard_index, opt.shard_count);
   if (Status s = make_dir(opt.output_dir); !s) return make_error(s.error());
+  auto lock = DirectoryLock::acquire(opt.output_dir);
+  if (!lock) return make_error(lock.error());
 
   unsigned hw = std::max(1u, std::thread::hardware_concurrency());
   const std::size_t jobs = opt.jobs > 0 ? static_cast<std::size_t>(opt.jobs) : hw;
@@ -188,8 +205,9 @@ Result<EvalReport> run_eval(const EvalOptions& opt) {
   auto prepare = [&](std::size_t i, ClipSlot& slot) {
     auto clip = read_clip(files[i]);
     if (!clip) {
-      // Only on failure: a mesh found next to the clips is not an error.
-      if (found_in_directory(files[i], opt.inputs) && animation_count(files[i]) == 0)
+      // A mesh found next to the clips is not an error. The reader's error kind
+      // says so: no second look at a file that may crash its importer.
+      if (found_in_directory(files[i], opt.inputs) && clip.error_kind() == ErrorKind::no_animation)
         slot.skipped = true;
       else
         slot.load_failure = EvalFailure{files[i], clip.error()};
@@ -305,7 +323,6 @@ Result<EvalReport> run_eval(const EvalOptions& opt) {
   }
   for (std::thread& t : threads) t.join();
   if (!write_error.empty()) return make_error(write_error);
-  if (Status s = csv.commit(); !s) return make_error(s.error());
 
   report.summary = builder.finish();
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -322,7 +339,7 @@ Result<EvalReport> run_eval(const EvalOptions& opt) {
                {"seconds", report.seconds},
                {"failed", failures_json(report.failures)},
                {"skipped", report.skipped}};
-  if (Status s = write_outputs(opt.output_dir, std::move(meta), report.summary, opt.plots); !s)
+  if (Status s = write_outputs(opt.output_dir, std::move(meta), report.summary, opt.plots, csv); !s)
     return make_error(s.error());
   return report;
 }
@@ -432,6 +449,8 @@ Result<EvalReport> merge_eval(const std::vector<fs::path>& dirs, const fs::path&
     readers.push_back(std::move(*r));
   }
   if (Status s = make_dir(out_dir); !s) return make_error(s.error());
+  auto lock = DirectoryLock::acquire(out_dir);
+  if (!lock) return make_error(lock.error());
   CsvWriter csv(out_dir / kErrorsCsvName);
   if (!csv.good()) return make_error(csv.failure());
   SummaryBuilder builder;
@@ -449,7 +468,6 @@ Result<EvalReport> merge_eval(const std::vector<fs::path>& dirs, const fs::path&
     csv.add_clip(*rows, builder);
     ++report.clips_evaluated;
   }
-  if (Status s = csv.commit(); !s) return make_error(s.error());
   report.summary = builder.finish();
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   json merged_from = json::array();
@@ -465,7 +483,7 @@ Result<EvalReport> merge_eval(const std::vector<fs::path>& dirs, const fs::path&
                {"merge_seconds", report.seconds},
                {"failed", failures_json(report.failures)},
                {"skipped", report.skipped}};
-  if (Status s = write_outputs(out_dir, std::move(meta), report.summary, plots); !s) return make_error(s.error());
+  if (Status s = write_outputs(out_dir, std::move(meta), report.summary, plots, csv); !s) return make_error(s.error());
   return report;
 }
 

@@ -4,7 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <iterator>
+#include <memory>
+#include <utility>
 
 namespace rotinterp {
 
@@ -79,6 +83,176 @@ std::vector<std::size_t> key_frames(std::size_t frames, int keep_every) {
   return k;
 }
 
+double sample_time(const ClipReference& R, std::size_t m) {
+  const std::size_t per = R.per_frame, k = m / per, i = m % per;
+  return i == 0 ? R.frames[k]
+                : R.frames[k] + (R.frames[k + 1] - R.frames[k]) * static_cast<double>(i) / static_cast<double>(per);
+}
+
+namespace {
+
+// Samples are handled in blocks of at least the clip's frame count (all at once
+// without subframes) and at least kBlockSampleJoints / joints, about 150 bytes per
+// sample and joint (≈ 20 MB): for any subframe count K memory stays proportional
+// to the clip, never to K.
+constexpr std::size_t kBlockSampleJoints = 1 << 17;
+std::size_t block_samples(const ClipReference& R) {
+  return std::max({R.frames.size(), kBlockSampleJoints / std::max<std::size_t>(R.skeleton.joints.size(), 1),
+                   std::size_t{64}});
+}
+
+// The reference over samples [m0, m0 + n). Without subframes its rows are the
+// stored frames themselves; otherwise they are computed here.
+class Block {
+ public:
+  // `only`: the one joint whose rotations are needed (no translations, no poses),
+  // or kAllJoints.
+  static constexpr std::size_t kAllJoints = static_cast<std::size_t>(-1);
+  void fill(const ClipReference& R, std::size_t m0, std::size_t n, bool poses, std::size_t only = kAllJoints) {
+    m0_ = m0;
+    direct_ = R.per_frame == 1;
+    const std::size_t nj = R.skeleton.joints.size();
+    times_.resize(n);
+    for (std::size_t m = 0; m < n; ++m) times_[m] = sample_time(R, m0 + m);
+    world_.clear();
+    if (direct_) return;
+    rotation_.resize(nj);
+    translation_.resize(nj);
+    for (std::size_t j = 0; j < nj; ++j) rotation_[j].resize(n), translation_[j].resize(n);
+    std::vector<Quat> r(nj);
+    std::vector<Vec3> t(nj);
+    for (std::size_t m = 0; m < n; ++m) {
+      const std::size_t k = (m0 + m) / R.per_frame, i = (m0 + m) % R.per_frame;
+      if (i == 0 || R.truth) {
+        if (i != 0) R.truth(times_[m], r, t);
+        for (std::size_t j = 0; j < nj; ++j) {
+          rotation_[j][m] = i == 0 ? R.reference[j][k] : normalized_or_identity(r[j]);
+          translation_[j][m] = i == 0 ? R.translation[j][k] : t[j].allFinite() ? t[j] : R.skeleton.joints[j].offset;
+        }
+        continue;
+      }
+      const double u = static_cast<double>(i) / static_cast<double>(R.per_frame);
+      for (std::size_t j = only == kAllJoints ? 0 : only; j < (only == kAllJoints ? nj : only + 1); ++j)
+        rotation_[j][m] = slerp(R.original[j][k], R.original[j][k + 1], u);
+    }
+    if (only != kAllJoints) return;
+    if (!R.truth)
+      for (std::size_t j = 0; j < nj; ++j) {
+        if (R.translation_tracks[j])
+          sample_translation(*R.translation_tracks[j], times_, translation_[j].data());
+        else
+          std::fill(translation_[j].begin(), translation_[j].end(), R.skeleton.joints[j].offset);
+      }
+    if (!poses) return;
+    world_.resize(n);
+    std::vector<Quat> local_r(nj);
+    std::vector<Vec3> local_t(nj);
+    for (std::size_t m = 0; m < n; ++m) {
+      if ((m0 + m) % R.per_frame == 0) continue;  // a frame: stored
+      for (std::size_t j = 0; j < nj; ++j) local_r[j] = rotation_[j][m], local_t[j] = translation_[j][m];
+      forward_kinematics(R.skeleton, local_r, local_t, world_[m]);
+    }
+  }
+  const std::vector<double>& times() const { return times_; }
+  const Quat* rotation(const ClipReference& R, std::size_t j) const {
+    return direct_ ? R.reference[j].data() + m0_ : rotation_[j].data();
+  }
+  const Vec3* translation(const ClipReference& R, std::size_t j) const {
+    return direct_ ? R.translation[j].data() + m0_ : translation_[j].data();
+  }
+  const WorldPose& world(const ClipReference& R, std::size_t m) const {
+    const std::size_t s = m0_ + m;
+    return s % R.per_frame == 0 ? R.world[s / R.per_frame] : world_[m];
+  }
+
+ private:
+  std::size_t m0_ = 0;
+  bool direct_ = true;
+  std::vector<double> times_;
+  std::vector<std::vector<Quat>> rotation_;
+  std::vector<std::vector<Vec3>> translation_;
+  std::vector<WorldPose> world_;
+};
+
+// sampled_smoothness over a stream of blocks: each block's samples follow the
+// two before it (kept in front of the next block), so every second difference is
+// counted once. One block gives exactly sampled_smoothness of all samples.
+struct SmoothnessSum {
+  double sum_sq = 0.0, max = 0.0, first_rms = 0.0;
+  std::size_t count = 0, blocks = 0;
+  // q[0..n): the two carried samples first unless this is the first block.
+  void add(const Quat* q, std::size_t n, double dt) {
+    const Smoothness s = sampled_smoothness(q, n, dt);
+    const std::size_t c = n >= 3 ? n - 2 : 0;
+    sum_sq += s.acceleration_rms * s.acceleration_rms * static_cast<double>(c);
+    max = std::max(max, s.acceleration_max);
+    count += c;
+    if (blocks++ == 0) first_rms = s.acceleration_rms;
+  }
+  double rms() const {
+    if (blocks == 1) return first_rms;  // bit for bit what one call gives
+    return count ? std::sqrt(sum_sq / static_cast<double>(count)) : 0.0;
+  }
+};
+
+// The two order statistics of rank lo and lo + 1 (0-based) of the non-negative
+// values `each_block` yields (it calls its argument with (values, n) per block, in
+// any order, the same values on every call), with memory independent of their
+// count: a radix selection on the values' bit patterns, which non-negative
+// doubles order like the numbers; 16 bits per pass, then one pass collects the
+// few values left with that prefix and the smallest value above them.
+template <class EachBlock>
+std::pair<double, double> select_two(const EachBlock& each_block, std::uint64_t lo) {
+  constexpr std::size_t kCollect = 1 << 20;
+  auto bits = [](double v) {
+    std::uint64_t b = 0;
+    v = std::isfinite(v) && v > 0.0 ? v : 0.0;  // as percentile() reads them
+    std::memcpy(&b, &v, sizeof b);
+    return b;
+  };
+  std::uint64_t prefix = 0, rank = lo, in_bucket = 0;
+  int known = 0;  // leading bits fixed so far
+  std::vector<std::uint64_t> count(1 << 16);
+  while (known < 64) {
+    std::fill(count.begin(), count.end(), 0);
+    const int shift = 64 - known - 16;
+    each_block([&](const double* v, std::size_t n) {
+      for (std::size_t i = 0; i < n; ++i) {
+        const std::uint64_t b = bits(v[i]);
+        if (known == 0 || (b >> (64 - known)) == prefix) ++count[(b >> shift) & 0xFFFF];
+      }
+    });
+    std::size_t d = 0;
+    while (rank >= count[d]) rank -= count[d++];
+    prefix = (prefix << 16) | d;
+    known += 16;
+    in_bucket = count[d];
+    if (in_bucket <= kCollect) break;
+  }
+  std::vector<double> bucket;
+  double above = INFINITY;
+  each_block([&](const double* v, std::size_t n) {
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::uint64_t b = bits(v[i]), top = b >> (64 - known);
+      if (top == prefix && in_bucket <= kCollect) bucket.push_back(std::isfinite(v[i]) && v[i] > 0.0 ? v[i] : 0.0);
+      else if (top > prefix) above = std::min(above, v[i]);
+    }
+  });
+  if (in_bucket > kCollect) {  // all 64 bits fixed: every value in the bucket is the same
+    double same = 0.0;
+    std::memcpy(&same, &prefix, sizeof same);
+    return {same, rank + 1 < in_bucket ? same : above};
+  }
+  std::nth_element(bucket.begin(), bucket.begin() + static_cast<std::ptrdiff_t>(rank), bucket.end());
+  const double a = bucket[rank];
+  const double b = rank + 1 < bucket.size()
+                       ? *std::min_element(bucket.begin() + static_cast<std::ptrdiff_t>(rank) + 1, bucket.end())
+                       : above;
+  return {a, b};
+}
+
+}  // namespace
+
 Result<ClipReference> prepare_reference(const Clip& clip, const std::string& clip_id,
                                         const ClipEvalOptions& options) {
   if (Status s = clip.validate(); !s) return make_error(clip_id + ": " + s.error());
@@ -94,68 +268,78 @@ Result<ClipReference> prepare_reference(const Clip& clip, const std::string& cli
   R.frames = frame_times(clip);
   const std::size_t nf = R.frames.size();
   const std::size_t per = R.per_frame = static_cast<std::size_t>(options.subframe) + 1;
-  const std::size_t ns = nf == 0 ? 0 : (nf - 1) * per + 1;
-  R.times.resize(ns);
-  for (std::size_t m = 0; m < ns; ++m) {
-    const std::size_t k = m / per, i = m % per;
-    R.times[m] = i == 0 ? R.frames[k]
-                        : R.frames[k] + (R.frames[k + 1] - R.frames[k]) * static_cast<double>(i) / static_cast<double>(per);
-  }
+  R.samples = nf == 0 ? 0 : (nf - 1) * per + 1;
   R.sample_dt = clip.frame_time > 0.0 ? clip.frame_time / static_cast<double>(per) : 0.0;
 
   // ---- the original at its frames (keys come from here) ----
   R.original.assign(nj, std::vector<Quat>(nf));
   for (std::size_t j = 0; j < nj; ++j) sample_rotation(clip.rotations[j], R.frames, R.original[j].data());
 
-  // ---- the reference at every sample, joint-major ----
-  R.reference.assign(nj, std::vector<Quat>(ns));
-  R.translation.assign(nj, std::vector<Vec3>(ns));
+  // ---- the reference at every frame, joint-major ----
+  R.reference.assign(nj, std::vector<Quat>(nf));
+  R.translation.assign(nj, std::vector<Vec3>(nf));
   if (options.truth) {
     std::vector<Quat> r(nj);
     std::vector<Vec3> t(nj);
-    for (std::size_t m = 0; m < ns; ++m) {
-      options.truth(R.times[m], r, t);
+    for (std::size_t k = 0; k < nf; ++k) {
+      options.truth(R.frames[k], r, t);
       if (r.size() != nj || t.size() != nj) return make_error(clip_id + ": the analytic truth has another skeleton");
       for (std::size_t j = 0; j < nj; ++j) {
-        R.reference[j][m] = normalized_or_identity(r[j]);
-        R.translation[j][m] = t[j].allFinite() ? t[j] : skel.joints[j].offset;
+        R.reference[j][k] = normalized_or_identity(r[j]);
+        R.translation[j][k] = t[j].allFinite() ? t[j] : skel.joints[j].offset;
       }
     }
+    R.truth = options.truth;
   } else {
     for (std::size_t j = 0; j < nj; ++j) {
-      for (std::size_t m = 0; m < ns; ++m) {
-        const std::size_t k = m / per, i = m % per;
-        R.reference[j][m] = i == 0 ? R.original[j][k]
-                                   : slerp(R.original[j][k], R.original[j][k + 1],
-                                           static_cast<double>(i) / static_cast<double>(per));
-      }
+      R.reference[j] = R.original[j];
       if (clip.translations[j])
-        sample_translation(*clip.translations[j], R.times, R.translation[j].data());
+        sample_translation(*clip.translations[j], R.frames, R.translation[j].data());
       else
         std::fill(R.translation[j].begin(), R.translation[j].end(), skel.joints[j].offset);
     }
+    if (per > 1) R.translation_tracks = clip.translations;
   }
 
-  // ---- reference world poses, computed once ----
-  R.world.resize(ns);
+  // ---- reference world poses at the frames, computed once ----
+  R.world.resize(nf);
   std::vector<Quat> local_r(nj);
   std::vector<Vec3> local_t(nj);
-  for (std::size_t m = 0; m < ns; ++m) {
+  for (std::size_t k = 0; k < nf; ++k) {
     for (std::size_t j = 0; j < nj; ++j) {
-      local_r[j] = R.reference[j][m];
-      local_t[j] = R.translation[j][m];
+      local_r[j] = R.reference[j][k];
+      local_t[j] = R.translation[j][k];
     }
-    forward_kinematics(skel, local_r, local_t, R.world[m]);
+    forward_kinematics(skel, local_r, local_t, R.world[k]);
   }
 
   R.height = skeleton_height(rest_pose(skel));
-  if (!(R.height > 0.0) && ns > 0) R.height = skeleton_height(R.world[0]);
+  if (!(R.height > 0.0) && nf > 0) R.height = skeleton_height(R.world[0]);
   if (!(R.height > 0.0)) R.height = 1.0;
   R.shell_distance = metres_in_clip_units(clip, options.shell_distance_m);
   R.bone_axis = bone_axes(skel);
   R.reference_acc_rms.assign(nj, 0.0);
-  for (std::size_t j = 0; j < nj; ++j)
-    R.reference_acc_rms[j] = sampled_smoothness(R.reference[j].data(), ns, R.sample_dt).acceleration_rms;
+  if (per == 1) {
+    for (std::size_t j = 0; j < nj; ++j)
+      R.reference_acc_rms[j] = sampled_smoothness(R.reference[j].data(), nf, R.sample_dt).acceleration_rms;
+    return R;
+  }
+  // Subframes: the reference's smoothness block by block.
+  std::vector<SmoothnessSum> smooth(nj);
+  std::vector<std::vector<Quat>> carried(nj);
+  Block block;
+  std::vector<Quat> q;
+  for (std::size_t m0 = 0; m0 < R.samples; m0 += block_samples(R)) {
+    const std::size_t n = std::min(block_samples(R), R.samples - m0);
+    block.fill(R, m0, n, false);
+    for (std::size_t j = 0; j < nj; ++j) {
+      q = carried[j];
+      q.insert(q.end(), block.rotation(R, j), block.rotation(R, j) + n);
+      smooth[j].add(q.data(), q.size(), R.sample_dt);
+      carried[j].assign(q.end() - static_cast<std::ptrdiff_t>(std::min<std::size_t>(2, q.size())), q.end());
+    }
+  }
+  for (std::size_t j = 0; j < nj; ++j) R.reference_acc_rms[j] = smooth[j].rms();
   return R;
 }
 
@@ -176,52 +360,113 @@ Result<std::vector<ErrorRow>> evaluate_method(const ClipReference& R, const std:
                                               const ClipEvalOptions& options) {
   const Skeleton& skel = R.skeleton;
   const std::size_t nj = skel.joints.size(), ne = skel.end_sites.size();
-  const std::size_t nf = R.frames.size(), ns = R.times.size();
+  const std::size_t nf = R.frames.size(), ns = R.samples;
   const double pct = 100.0 / R.height;
   for (int n : options.keep_every)
     if (n < 1) return make_error(R.clip_id + ": keep_every must be at least 1");
 
+  const std::size_t bs = block_samples(R);
+  const bool one_block = ns <= bs;
   std::vector<ErrorRow> rows;
   rows.reserve(options.keep_every.size() * (nj + ne));
-  std::vector<std::vector<Quat>> test(nj, std::vector<Quat>(ns));
+  // test[j]: two samples carried from the previous block (for smoothness), then the block.
+  std::vector<std::vector<Quat>> test(nj, std::vector<Quat>(2 + std::min(ns, bs)));
   std::vector<double> scratch;
   std::vector<Quat> local_r(nj);
   std::vector<Vec3> local_t(nj);
   WorldPose test_world;
-  std::vector<Quat> at_keys;
+  Block block;
   for (int keep : options.keep_every) {
     const std::vector<std::size_t> kf = key_frames(nf, keep);
-    at_keys.resize(kf.size());
-    std::vector<KeyJumps> jumps(nj);
-    std::vector<Smoothness> smooth(nj);
+    std::vector<RotationTrack> tracks(nj);
+    std::vector<std::unique_ptr<Interpolator>> curves(nj);
     for (std::size_t j = 0; j < nj; ++j) {
-      const RotationTrack track = decimated_track(R, j, keep);
-      auto curve = make_interpolator(method, track);
+      tracks[j] = decimated_track(R, j, keep);
+      auto curve = make_interpolator(method, tracks[j]);
       if (!curve)
         return make_error(R.clip_id + ": joint '" + skel.joints[j].name + "', method " + method + ": " + curve.error());
-      (*curve)->evaluate(R.times.data(), ns, test[j].data());
-      // The curve at its keys is among the samples (frame kf[i] is sample kf[i]·per_frame).
-      for (std::size_t i = 0; i < kf.size(); ++i) at_keys[i] = test[j][kf[i] * R.per_frame];
-      jumps[j] = key_jumps(**curve, track.times, at_keys.data());
-      smooth[j] = sampled_smoothness(test[j].data(), ns, R.sample_dt);
+      curves[j] = std::move(*curve);
     }
+    std::vector<std::vector<Quat>> at_keys(nj, std::vector<Quat>(kf.size()));
+    std::vector<SmoothnessSum> smooth(nj);
+    std::vector<RotationError> err(nj);  // summed over blocks: angle sums in mean·count, rms²·count
     PoseError pose = make_pose_error(skel);
-    for (std::size_t m = 0; m < ns; ++m) {
-      bool equal = true;  // the rebuilt pose is the reference's, bit for bit (at keys)
+    for (std::size_t m0 = 0; m0 < ns; m0 += bs) {
+      const std::size_t n = std::min(bs, ns - m0);
+      block.fill(R, m0, n, true);
+      const std::size_t carry = m0 == 0 ? 0 : 2;
       for (std::size_t j = 0; j < nj; ++j) {
-        local_r[j] = test[j][m];
-        local_t[j] = R.translation[j][m];
-        equal = equal && local_r[j].coeffs() == R.reference[j][m].coeffs();
+        Quat* out = test[j].data() + 2;
+        curves[j]->evaluate(block.times().data(), n, out);
+        // The curve at its keys is among the samples (frame kf[i] is sample kf[i]·per_frame).
+        for (std::size_t i = 0; i < kf.size(); ++i)
+          if (const std::size_t s = kf[i] * R.per_frame; s >= m0 && s < m0 + n) at_keys[j][i] = out[s - m0];
+        smooth[j].add(out - carry, n + carry, R.sample_dt);
+        const RotationError e = rotation_error(block.rotation(R, j), out, n, R.bone_axis[j], scratch);
+        if (one_block) {
+          err[j] = e;
+        } else {
+          ErrorStats& a = err[j].angle;
+          const double c = static_cast<double>(e.angle.count);
+          a.mean += e.angle.mean * c;  // sums until the end
+          a.rms += e.angle.rms * e.angle.rms * c;
+          a.max = std::max(a.max, e.angle.max);
+          a.count += e.angle.count;
+          for (auto [sum, part] : {std::pair{&err[j].swing, &e.swing}, {&err[j].twist, &e.twist}}) {
+            sum->count += part->count;
+            sum->sum += part->sum;
+            sum->sum_sq += part->sum_sq;
+            sum->max = std::max(sum->max, part->max);
+          }
+        }
+        test[j][0] = n >= 2 ? out[n - 2] : test[j][1];
+        test[j][1] = out[n - 1];
       }
-      if (equal) {
-        accumulate_equal_poses(pose);
-        continue;
+      for (std::size_t m = 0; m < n; ++m) {
+        bool equal = true;  // the rebuilt pose is the reference's, bit for bit (at keys)
+        for (std::size_t j = 0; j < nj; ++j) {
+          local_r[j] = test[j][2 + m];
+          local_t[j] = block.translation(R, j)[m];
+          equal = equal && local_r[j].coeffs() == block.rotation(R, j)[m].coeffs();
+        }
+        if (equal) {
+          accumulate_equal_poses(pose);
+          continue;
+        }
+        forward_kinematics(skel, local_r, local_t, test_world);
+        accumulate_pose_error(block.world(R, m), test_world, R.shell_distance, pose);
       }
-      forward_kinematics(skel, local_r, local_t, test_world);
-      accumulate_pose_error(R.world[m], test_world, R.shell_distance, pose);
     }
     for (std::size_t j = 0; j < nj; ++j) {
-      const RotationError e = rotation_error(R.reference[j].data(), test[j].data(), ns, R.bone_axis[j], scratch);
+      if (one_block) continue;
+      // Several blocks: the sums become means, and the 95th percentile is selected
+      // from the angles computed again, block by block (percentile()'s rank rule).
+      ErrorStats& a = err[j].angle;
+      if (a.count == 0) continue;
+      const double count = static_cast<double>(a.count);
+      a.mean /= count;
+      a.rms = std::sqrt(a.rms / count);
+      const double rank = 0.95 * (count - 1.0);
+      const auto lo = static_cast<std::uint64_t>(std::floor(rank));
+      const double frac = rank - static_cast<double>(lo);
+      Block joint_block;
+      std::vector<Quat> out(std::min(ns, bs));
+      const auto [v0, v1] = select_two(
+          [&](const auto& take) {
+            for (std::size_t m0 = 0; m0 < ns; m0 += bs) {
+              const std::size_t n = std::min(bs, ns - m0);
+              joint_block.fill(R, m0, n, false, j);
+              curves[j]->evaluate(joint_block.times().data(), n, out.data());
+              (void)rotation_error(joint_block.rotation(R, j), out.data(), n, R.bone_axis[j], scratch);
+              take(scratch.data(), n);  // the angles (in some order)
+            }
+          },
+          lo);
+      a.p95 = frac == 0.0 || lo + 1 >= a.count ? v0 : v0 + frac * (v1 - v0);
+    }
+    for (std::size_t j = 0; j < nj; ++j) {
+      const KeyJumps jumps = key_jumps(*curves[j], tracks[j].times, at_keys[j].data());
+      const RotationError& e = err[j];
       ErrorRow r;
       r.clip = R.clip_id;
       r.method = method;
@@ -241,10 +486,10 @@ Result<std::vector<ErrorRow>> evaluate_method(const ClipReference& R, const std:
       r.pos_max_pct = r.pos_max * pct;
       r.shell_rms = pose.joint_shell[j].rms();
       r.shell_max = pose.joint_shell[j].max;
-      r.acc_rms = smooth[j].acceleration_rms * kRadToDeg;
+      r.acc_rms = smooth[j].rms() * kRadToDeg;
       r.acc_rms_ref = R.reference_acc_rms[j] * kRadToDeg;
-      r.vel_jump_max = jumps[j].velocity * kRadToDeg;
-      r.acc_jump_max = jumps[j].acceleration * kRadToDeg;
+      r.vel_jump_max = jumps.velocity * kRadToDeg;
+      r.acc_jump_max = jumps.acceleration * kRadToDeg;
       r.height = R.height;
       rows.push_back(std::move(r));
     }

@@ -1,8 +1,6 @@
 #include "rotinterp/eval/inputs.h"
 
-#include <assimp/Importer.hpp>
-#include <assimp/config.h>
-#include <assimp/scene.h>
+#include "rotinterp/io/read.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -13,7 +11,6 @@ namespace rotinterp {
 namespace fs = std::filesystem;
 
 Result<std::vector<std::string>> discover_inputs(const std::vector<fs::path>& paths) {
-  Assimp::Importer importer;
   std::vector<std::string> files;
   for (const fs::path& p : paths) {
     std::error_code ec;
@@ -35,7 +32,7 @@ Result<std::vector<std::string>> discover_inputs(const std::vector<fs::path>& pa
       }
       if (!it->is_regular_file(ec)) continue;
       const std::string ext = f.extension().string();
-      if (ext.size() > 1 && importer.IsExtensionSupported(ext)) files.push_back(f.string());
+      if (ext.size() > 1 && importable_extension(ext)) files.push_back(f.string());
     }
   }
   std::sort(files.begin(), files.end());
@@ -47,13 +44,6 @@ bool found_in_directory(const std::string& path, const std::vector<fs::path>& na
   for (const fs::path& p : named)
     if (p.string() == path) return false;
   return true;
-}
-
-int animation_count(const std::string& path) {
-  Assimp::Importer importer;
-  importer.SetPropertyBool(AI_CONFIG_IMPORT_NO_SKELETON_MESHES, true);
-  const aiScene* scene = importer.ReadFile(path, 0);
-  return scene ? static_cast<int>(scene->mNumAnimations) : -1;
 }
 
 std::vector<std::string> shard_of(const std::vector<std::string>& files, int index, int count) {

@@ -4,11 +4,13 @@
 
 #include <fmt/format.h>
 #include <plplot/plplot.h>
+#include <sys/types.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -27,10 +29,30 @@ constexpr double kLogFloorDeg = 1e-6;
 
 int series_colour(std::size_t i) { return kFirstSeries + static_cast<int>(i % kPaletteSize); }
 
+// PLplot writes the PNG through a stdio stream of ours (plsfile) whose writes go
+// to an AtomicOutput, so each one is checked (PLplot and cairo ignore failed
+// writes) and nothing needs a path.
+struct PageSink {
+  AtomicOutput* out;
+  std::size_t bytes = 0;
+  bool closed = false;
+};
+
+ssize_t sink_write(void* cookie, const char* data, size_t size) {
+  auto* sink = static_cast<PageSink*>(cookie);
+  if (!sink->out->write(data, size)) return -1;
+  sink->bytes += size;
+  return static_cast<ssize_t>(size);
+}
+int sink_close(void* cookie) {
+  static_cast<PageSink*>(cookie)->closed = true;
+  return 0;
+}
+
 // Opens a pngcairo page of w × h pixels writing to `file`.
-void begin_page(const std::filesystem::path& file, int w, int h) {
+void begin_page(FILE* file, int w, int h) {
   plsdev("pngcairo");
-  plsfnam(file.c_str());
+  plsfile(file);
   plspage(0.0, 0.0, w, h, 0, 0);
   plscmap0n(kFirstSeries + kPaletteSize);
   plscol0(0, 255, 255, 255);
@@ -81,15 +103,42 @@ std::string tail(const std::string& text, std::size_t max_chars) {
   return "…" + text.substr(start);
 }
 
-Status finish(AtomicOutput& out) {
-  plend();
-  std::error_code ec;
-  if (!std::filesystem::exists(out.temp_path(), ec) || std::filesystem::file_size(out.temp_path(), ec) == 0)
-    return make_error(out.target().string() + ": PLplot wrote no image (is plplot-driver-cairo installed?)");
-  return out.commit();
-}
+// A page drawn into `out` (finished, not committed, by end()).
+class Page {
+ public:
+  Page(AtomicOutput& out, int w, int h) : sink_{&out} {
+    file_ = fopencookie(&sink_, "w", cookie_io_functions_t{nullptr, sink_write, nullptr, sink_close});
+    if (file_) begin_page(file_, w, h);
+  }
+  Page(const Page&) = delete;
+  Page& operator=(const Page&) = delete;
+  ~Page() {
+    if (file_ && !ended_) plend();
+    if (file_ && !sink_.closed) std::fclose(file_);
+  }
 
-Status spacing_plot(const Summary& s, const std::filesystem::path& file) {
+  // Ends the page: PLplot encodes the image and closes the stream.
+  Status end() {
+    const std::string label = sink_.out->target().string();
+    if (!file_) return make_error(label + ": cannot write: out of memory");
+    plend();
+    ended_ = true;
+    // PLplot closes the stream it was given; close it here if it did not.
+    const bool close_failed = !sink_.closed && std::fclose(file_) != 0;
+    sink_.closed = true;
+    if (Status s = sink_.out->status(); !s) return s;
+    if (close_failed) return make_error(label + ": cannot write the plot");
+    if (sink_.bytes == 0) return make_error(label + ": PLplot wrote no image (is plplot-driver-cairo installed?)");
+    return sink_.out->finish();
+  }
+
+ private:
+  PageSink sink_;
+  FILE* file_ = nullptr;
+  bool ended_ = false;
+};
+
+Status spacing_plot(const Summary& s, AtomicOutput& out) {
   std::vector<std::string> methods;
   for (const SummaryEntry& e : s.entries)
     if (std::find(methods.begin(), methods.end(), e.method) == methods.end()) methods.push_back(e.method);
@@ -106,8 +155,7 @@ Status spacing_plot(const Summary& s, const std::filesystem::path& file) {
   ymin = std::floor(ymin), ymax = std::ceil(ymax);
   if (ymax <= ymin) ymax = ymin + 1;
 
-  AtomicOutput out(file);
-  begin_page(out.temp_path(), 1200, 800);
+  Page page(out, 1200, 800);
   plvpor(0.12, viewport_right(methods), 0.11, 0.90);
   plwind(xmin - 0.25, xmax + 0.25, ymin, ymax);
   plcol0(kGrid);
@@ -138,10 +186,10 @@ Status spacing_plot(const Summary& s, const std::filesystem::path& file) {
   pllsty(1);
   plwidth(1.0);
   legend(methods, std::vector<int>(methods.size(), 1), true);
-  return finish(out);
+  return page.end();
 }
 
-Status worst_clip_plot(const Summary& s, const std::filesystem::path& file) {
+Status worst_clip_plot(const Summary& s, AtomicOutput& out) {
   std::vector<std::string> methods, joints;
   std::map<std::pair<std::string, std::string>, double> rms;
   double ymax = 0;
@@ -154,8 +202,7 @@ Status worst_clip_plot(const Summary& s, const std::filesystem::path& file) {
   if (!(ymax > 0)) ymax = 1;
   const double xmax = std::max<double>(1, static_cast<double>(joints.size()) - 1);
 
-  AtomicOutput out(file);
-  begin_page(out.temp_path(), 1400, 850);
+  Page page(out, 1400, 850);
   plvpor(0.09, viewport_right(methods), 0.26, 0.86);
   plwind(-0.5, xmax + 0.5, 0, ymax * 1.08);
   plcol0(kGrid);
@@ -187,14 +234,25 @@ Status worst_clip_plot(const Summary& s, const std::filesystem::path& file) {
   }
   plwidth(1.0);
   legend(methods, std::vector<int>(methods.size(), 1), true);
-  return finish(out);
+  return page.end();
 }
 
 }  // namespace
 
+Status draw_plots(const Summary& summary, const std::filesystem::path& dir,
+                  std::vector<std::unique_ptr<AtomicOutput>>& outputs) {
+  outputs.push_back(std::make_unique<AtomicOutput>(dir / kSpacingPlotName, TempKind::unnamed));
+  if (Status st = spacing_plot(summary, *outputs.back()); !st) return st;
+  outputs.push_back(std::make_unique<AtomicOutput>(dir / kWorstClipPlotName, TempKind::unnamed));
+  return worst_clip_plot(summary, *outputs.back());
+}
+
 Status write_plots(const Summary& summary, const std::filesystem::path& dir) {
-  if (Status st = spacing_plot(summary, dir / kSpacingPlotName); !st) return st;
-  return worst_clip_plot(summary, dir / kWorstClipPlotName);
+  std::vector<std::unique_ptr<AtomicOutput>> outputs;
+  if (Status st = draw_plots(summary, dir, outputs); !st) return st;
+  std::vector<AtomicOutput*> all;
+  for (auto& o : outputs) all.push_back(o.get());
+  return commit_together(all);
 }
 
 }  // namespace rotinterp

@@ -2,6 +2,7 @@
 
 #include "rotinterp/interp/bf.h"
 #include "rotinterp/interp/c2.h"
+#include "rotinterp/interp/clamped.h"
 #include "rotinterp/interp/expmap.h"
 #include "rotinterp/interp/nlerp.h"
 #include "rotinterp/interp/slerp.h"
@@ -18,24 +19,26 @@ Vec3 Interpolator::angular_velocity(double) const { return Vec3::Zero(); }
 const std::vector<MethodInfo>& methods() {
   using Made = Result<std::unique_ptr<Interpolator>>;
   static const std::vector<MethodInfo> all = {
-      {"slerp", "piecewise geodesic (shortest arc) between neighbouring keys", 0, true,
+      {"slerp", "piecewise geodesic (shortest arc) between neighbouring keys", 0, true, true, true,
        [](const RotationTrack& t) -> Made { return make_slerp(t); }},
-      {"squad", "Shoemake's spherical quadrangle, control points scaled for non-uniform times", 1, true,
+      {"squad", "Shoemake's spherical quadrangle, control points scaled for non-uniform times", 1, true, true, false,
        [](const RotationTrack& t) -> Made { return make_squad(t); }},
-      {"expmap", "Catmull-Rom spline of the unwrapped rotation vectors (Grassia), mapped back with exp", 1, false,
+      {"expmap", "Catmull-Rom spline of the unwrapped rotation vectors (Grassia), mapped back with exp", 1, false, false, false,
        [](const RotationTrack& t) -> Made { return make_expmap(t); }},
-      {"nlerp", "normalized linear blend of neighbouring keys (not constant speed)", 0, true,
+      {"nlerp", "normalized linear blend of neighbouring keys (not constant speed)", 0, true, false, true,
        [](const RotationTrack& t) -> Made { return make_nlerp(t); }},
-      {"bf", "Buss-Fillmore spherical cubic B-spline through the keys (weighted spherical averages)", 2, true,
+      {"bf", "Buss-Fillmore spherical cubic B-spline through the keys (weighted spherical averages)", 2, true, true, false,
        [](const RotationTrack& t) -> Made { return make_bf(t); }},
       {"c2", "cubic in the local rotation vector with continuous angular acceleration (as scipy RotationSpline)", 2,
-       true, [](const RotationTrack& t) -> Made { return make_c2(t); }},
-      {"expmap-c2", "natural cubic spline of the unwrapped rotation vectors, mapped back with exp", 2, false,
+       true, true, false, [](const RotationTrack& t) -> Made { return make_c2(t); }},
+      {"expmap-c2", "natural cubic spline of the unwrapped rotation vectors, mapped back with exp", 2, false, false, false,
        [](const RotationTrack& t) -> Made {
          ExpmapOptions o;
          o.spline = ExpmapOptions::Spline::natural;
          return make_expmap(t, o);
        }},
+      {"clamped", "shape-preserving C1 cubic (Steffen's limiter on SO(3)): holds stay still, no overshoot at stops", 1,
+       true, true, true, [](const RotationTrack& t) -> Made { return make_clamped(t); }},
   };
   return all;
 }

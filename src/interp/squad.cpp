@@ -8,10 +8,20 @@
 namespace rotinterp {
 
 Quat squad(const Quat& q0, const Quat& q1, const Quat& a, const Quat& b, double h) {
-  return slerp(slerp(q0, q1, h), slerp(a, b, h), 2.0 * h * (1.0 - h));
+  return great_arc_slerp(great_arc_slerp(q0, q1, h), great_arc_slerp(a, b, h), 2.0 * h * (1.0 - h));
 }
 
 namespace {
+
+// log of q along its great arc from the identity, as stored: for w < 0 the angle
+// is in (π, 2π] — what great_arc_slerp(1, q, ·) turns through. (The core log
+// flips to the short side.)
+Vec3 log_great_arc(const Quat& q) {
+  if (q.w() >= 0.0) return log(q).vec();
+  const Vec3 r = log(detail::negated(q)).vec();  // the same orientation, short side
+  const double n = r.norm();
+  return n > 0.0 ? Vec3(r * (1.0 - kTwoPi / n)) : Vec3::Zero();
+}
 
 class SquadInterpolator final : public detail::SegmentInterpolator<SquadInterpolator> {
  public:
@@ -36,10 +46,9 @@ class SquadInterpolator final : public detail::SegmentInterpolator<SquadInterpol
       const double D = dt(s);
       a_[s] = apply_moving(k_.q[s], RotVec(0.25 * (Lat(i - 1) * (D / Dat(i - 1)) - L[s])));
       b_[s] = apply_moving(k_.q[s + 1], RotVec(0.25 * (L[s] - Lat(i + 1) * (D / Dat(i + 1)))));
-      // Keep the controls in their key's hemisphere (the curve does not depend on it).
-      a_[s] = detail::align_pair(k_.q[s], a_[s]);
-      b_[s] = detail::align_pair(k_.q[s + 1], b_[s]);
-      M_.push_back(log(a_[s].conjugate() * b_[s]).vec());
+      // The signs are fixed here, once per segment: each control is within 45° (in
+      // S³) of its key, and the blends between them follow great arcs as stored.
+      M_.push_back(log_great_arc(a_[s].conjugate() * b_[s]));
       K_.push_back(L[s]);
     }
   }
@@ -50,15 +59,16 @@ class SquadInterpolator final : public detail::SegmentInterpolator<SquadInterpol
     return squad(k_.q[i], k_.q[i + 1], a_[i], b_[i], u);
   }
 
-  // q(u) = P·exp(g·X): P = qᵢexp(uL), Q = aᵢexp(uM), g = 2u(1−u), X = log(P⁻¹Q).
+  // q(u) = P·exp(g·X): P = qᵢexp(uL), Q = aᵢexp(uM), g = 2u(1−u), X = log(P⁻¹Q)
+  // along the great arc (|X| up to 2π, as the blend turns).
   // World rates per unit u: ω_P = P·L, ω_Q = Q·M; Y = P⁻¹Q moves with
   // y = P⁻¹(ω_Q − ω_P); Ẋ = J_l⁻¹(X)·y; ω_E = J_l(gX)(ġX + gẊ); ω = ω_P + P·ω_E.
   Vec3 segment_velocity(std::size_t i, double u) const {
-    const Quat P = slerp(k_.q[i], k_.q[i + 1], u);
-    const Quat Q = slerp(a_[i], b_[i], u);
+    const Quat P = great_arc_slerp(k_.q[i], k_.q[i + 1], u);
+    const Quat Q = great_arc_slerp(a_[i], b_[i], u);
     const Vec3 wP = P * K_[i];
     const Vec3 wQ = Q * M_[i];
-    const Vec3 X = log(P.conjugate() * Q).vec();
+    const Vec3 X = log_great_arc(P.conjugate() * Q);
     const Vec3 y = P.conjugate() * (wQ - wP);
     const Vec3 Xdot = rotvec_derivative(X, y);
     const double g = 2.0 * u * (1.0 - u), gdot = 2.0 - 4.0 * u;
@@ -68,7 +78,7 @@ class SquadInterpolator final : public detail::SegmentInterpolator<SquadInterpol
 
  private:
   std::vector<Quat> a_, b_;  // per segment: outgoing control at its start, incoming at its end
-  std::vector<Vec3> K_, M_;  // per segment: log(qᵢ⁻¹qᵢ₊₁), log(aᵢ⁻¹bᵢ₊₁)
+  std::vector<Vec3> K_, M_;  // per segment: log(qᵢ⁻¹qᵢ₊₁), log(aᵢ⁻¹bᵢ₊₁) along its great arc
 };
 
 }  // namespace

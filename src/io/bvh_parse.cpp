@@ -7,12 +7,15 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <exception>
 #include <optional>
 #include <string>
 #include <system_error>
 #include <thread>
+#include <unordered_set>
+#include <vector>
 
 namespace rotinterp {
 
@@ -113,6 +116,28 @@ bool parse_channel(std::string_view token, Channel& out) {
 bool is_rotation(Channel c) { return c == Channel::Xrotation || c == Channel::Yrotation || c == Channel::Zrotation; }
 int axis_of(Channel c) { return static_cast<int>(c) % 3; }
 
+// A token or name as messages quote it: at most kExcerptBytes bytes (cut at a
+// UTF-8 character boundary), control bytes as \xNN, and the full size when cut, so
+// a 100 MB token gives a short line.
+constexpr std::size_t kExcerptBytes = 40;
+std::string excerpt(std::string_view t) {
+  std::size_t n = std::min(t.size(), kExcerptBytes);
+  if (n < t.size())
+    while (n > 0 && (static_cast<unsigned char>(t[n]) & 0xC0) == 0x80) --n;  // not inside a character
+  std::string out;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto c = static_cast<unsigned char>(t[i]);
+    if (c < 0x20 || c == 0x7F) {
+      static constexpr char kHex[] = "0123456789abcdef";
+      out += {'\\', 'x', kHex[c >> 4], kHex[c & 15]};
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  if (n < t.size()) out += "… (" + std::to_string(t.size()) + " bytes)";
+  return out;
+}
+
 class HeaderParser {
  public:
   HeaderParser(std::string_view text, const std::string& label) : tok_(text), label_(label) {}
@@ -124,7 +149,7 @@ class HeaderParser {
       const std::string_view t = tok_.peek();
       if (t == "ROOT") {
         tok_.next();
-        if (Status s = parse_joint(file, -1); !s) return s;
+        if (Status s = parse_tree(file); !s) return s;
         any_root = true;
       } else if (t == "MOTION") {
         break;
@@ -153,7 +178,7 @@ class HeaderParser {
       return fail("line " + std::to_string(tok_.line()) + ": 'Frames:' must be a whole number, found " +
                   quoted(count_text));
     if (frames < 1) return fail("'Frames: 0': the file has no motion");
-    if (frames > 1e12) return fail("'Frames: " + std::string(count_text) + "' is not a plausible frame count");
+    if (frames > 1e12) return fail("'Frames: " + excerpt(count_text) + "' is not a plausible frame count");
     file.frames = static_cast<std::size_t>(frames);
     // "Frame Time:" T (also "Frame Time:T")
     if (!expect("Frame")) return error_;
@@ -170,7 +195,10 @@ class HeaderParser {
     if (!parse_double(time_text, ft))
       return fail("line " + std::to_string(tok_.line()) + ": 'Frame Time:' is not a number: " + quoted(time_text));
     if (!std::isfinite(ft) || ft <= 0.0)
-      return fail("'Frame Time: " + std::string(time_text) + "' must be a positive number of seconds");
+      return fail("'Frame Time: " + excerpt(time_text) + "' must be a positive number of seconds");
+    if (ft < kMinBvhFrameTime || ft > kMaxBvhFrameTime)
+      return fail("'Frame Time: " + excerpt(time_text) + "' is outside the accepted range " + number(kMinBvhFrameTime) +
+                  " to " + number(kMaxBvhFrameTime) + " seconds");
     file.frame_time = ft;
     file.frame_time_text = std::string(time_text);
     return Ok{};
@@ -180,7 +208,12 @@ class HeaderParser {
   int line() const { return tok_.line(); }
 
  private:
-  static std::string quoted(std::string_view t) { return t.empty() ? "the end of the file" : "'" + std::string(t) + "'"; }
+  static std::string quoted(std::string_view t) { return t.empty() ? "the end of the file" : "'" + excerpt(t) + "'"; }
+  static std::string number(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+  }
 
   Status fail(const std::string& what) {
     error_ = make_error(label_ + ": " + what);
@@ -202,73 +235,85 @@ class HeaderParser {
       if (!parse_double(t, v[i]))
         return fail("line " + std::to_string(line) + ": " + what + ": expected a number, found " + quoted(t));
       if (!std::isfinite(v[i]))
-        return fail("line " + std::to_string(line) + ": " + what + " is not finite (" + std::string(t) + ")");
+        return fail("line " + std::to_string(line) + ": " + what + " is not finite (" + excerpt(t) + ")");
     }
     return Ok{};
   }
 
-  Status parse_joint(BvhFile& file, int parent) {
-    const int line = tok_.next_line();
-    const std::string_view name = tok_.next();
-    if (name.empty() || name == "{") return fail("line " + std::to_string(line) + ": a joint has no name");
-    for (const BvhJoint& j : file.joints)
-      if (j.name == name) return fail("line " + std::to_string(line) + ": joint name '" + std::string(name) + "' is used twice");
-    const int index = static_cast<int>(file.joints.size());
-    file.joints.push_back(BvhJoint{std::string(name), parent, Vec3::Zero(), {}, 0});
-    const std::string jname(name);
-    if (!expect("{")) return error_;
-    if (!expect("OFFSET")) return error_;
-    Vec3 offset;
-    if (Status s = parse_vec3(offset, "OFFSET of joint '" + jname + "'"); !s) return s;
-    file.joints[index].offset = offset;
-    // CHANNELS is optional for a joint in some writers (no channels).
-    if (tok_.peek() == "CHANNELS") {
-      tok_.next();
-      const int cl = tok_.next_line();
-      const std::string_view n_text = tok_.next();
-      double n = 0;
-      if (!parse_double(n_text, n) || n < 0 || n > 64 || n != std::floor(n))
-        return fail("line " + std::to_string(cl) + ": joint '" + jname + "': CHANNELS count " + quoted(n_text) +
-                    " is not a small whole number");
-      std::vector<Channel> channels;
-      for (int i = 0; i < static_cast<int>(n); ++i) {
-        const int l = tok_.next_line();
-        const std::string_view c = tok_.next();
-        Channel ch;
-        if (!parse_channel(c, ch))
-          return fail("line " + std::to_string(l) + ": joint '" + jname + "': unknown channel " + quoted(c));
-        channels.push_back(ch);
-      }
-      file.joints[index].first_column = file.columns;
-      file.columns += channels.size();
-      file.joints[index].channels = std::move(channels);
-    } else {
-      file.joints[index].first_column = file.columns;
-    }
-    while (true) {
+  // One ROOT and every joint below it, without recursion (a file may nest joints
+  // as deep as it likes): `open` holds the joints whose '}' is still to come.
+  Status parse_tree(BvhFile& file) {
+    std::vector<int> open;
+    if (Status s = open_joint(file, -1, open); !s) return s;
+    while (!open.empty()) {
+      const int index = open.back();
       const int l = tok_.next_line();
       const std::string_view t = tok_.next();
-      if (t == "}") return Ok{};
-      if (t == "JOINT") {
-        if (Status s = parse_joint(file, index); !s) return s;
+      if (t == "}") {
+        open.pop_back();
+      } else if (t == "JOINT") {
+        if (open.size() >= kMaxJointDepth)
+          return fail("line " + std::to_string(l) + ": joints nested more than " + std::to_string(kMaxJointDepth) +
+                      " levels deep (the most rotinterp reads)");
+        if (Status s = open_joint(file, index, open); !s) return s;
       } else if (t == "End") {
-        if (!expect("Site")) return error_;
-        if (!expect("{")) return error_;
-        if (!expect("OFFSET")) return error_;
+        const std::string what = "End Site OFFSET of joint '" + excerpt(file.joints[index].name) + "'";
+        if (!expect("Site") || !expect("{") || !expect("OFFSET")) return error_;
         Vec3 e;
-        if (Status s = parse_vec3(e, "End Site OFFSET of joint '" + jname + "'"); !s) return s;
+        if (Status s = parse_vec3(e, what); !s) return s;
         if (!expect("}")) return error_;
         file.end_sites.push_back(BvhEndSite{index, e});
       } else {
-        return fail("line " + std::to_string(l) + ": joint '" + jname + "': expected JOINT, End Site or '}', found " +
-                    quoted(t));
+        return fail("line " + std::to_string(l) + ": joint '" + excerpt(file.joints[index].name) +
+                    "': expected JOINT, End Site or '}', found " + quoted(t));
       }
     }
+    return Ok{};
+  }
+
+  // A joint's name, '{', OFFSET and CHANNELS; the joint goes on `open`.
+  Status open_joint(BvhFile& file, int parent, std::vector<int>& open) {
+    const int line = tok_.next_line();
+    const std::string_view name = tok_.next();
+    if (name.empty() || name == "{") return fail("line " + std::to_string(line) + ": a joint has no name");
+    if (name.size() > kMaxNameBytes)
+      return fail("line " + std::to_string(line) + ": joint name '" + excerpt(name) + "' is longer than " +
+                  std::to_string(kMaxNameBytes) + " bytes");
+    if (!names_.insert(name).second)
+      return fail("line " + std::to_string(line) + ": joint name '" + excerpt(name) + "' is used twice");
+    const int index = static_cast<int>(file.joints.size());
+    file.joints.push_back(BvhJoint{std::string(name), parent, Vec3::Zero(), {}, file.columns});
+    open.push_back(index);
+    const std::string jname = excerpt(name);
+    if (!expect("{")) return error_;
+    if (!expect("OFFSET")) return error_;
+    if (Status s = parse_vec3(file.joints[index].offset, "OFFSET of joint '" + jname + "'"); !s) return s;
+    // CHANNELS is optional for a joint in some writers (no channels).
+    if (tok_.peek() != "CHANNELS") return Ok{};
+    tok_.next();
+    const int cl = tok_.next_line();
+    const std::string_view n_text = tok_.next();
+    double n = 0;
+    if (!parse_double(n_text, n) || n < 0 || n > 64 || n != std::floor(n))
+      return fail("line " + std::to_string(cl) + ": joint '" + jname + "': CHANNELS count " + quoted(n_text) +
+                  " is not a small whole number");
+    std::vector<Channel>& channels = file.joints[index].channels;
+    for (int i = 0; i < static_cast<int>(n); ++i) {
+      const int l = tok_.next_line();
+      const std::string_view c = tok_.next();
+      Channel ch;
+      if (!parse_channel(c, ch))
+        return fail("line " + std::to_string(l) + ": joint '" + jname + "': unknown channel " + quoted(c));
+      channels.push_back(ch);
+    }
+    file.columns += channels.size();
+    return Ok{};
   }
 
   Tokenizer tok_;
   const std::string& label_;
   Status error_ = Ok{};
+  std::unordered_set<std::string_view> names_;  // views into the text: one lookup per joint
 };
 
 }  // namespace
@@ -297,6 +342,12 @@ bool BvhFile::has_position_channels(std::size_t joint) const {
 }
 
 Result<BvhFile> parse_bvh(std::string_view text, const std::string& label) {
+  // Text encodings: a UTF-8 byte order mark is skipped; UTF-16 (a BOM, or the NUL
+  // bytes of ASCII text in it) is named rather than quoted.
+  if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
+  if (text.substr(0, 2) == "\xFF\xFE" || text.substr(0, 2) == "\xFE\xFF" ||
+      (text.size() >= 2 && (text[0] == '\0' || text[1] == '\0')))
+    return make_error(label + ": the file is UTF-16 text; BVH is read as UTF-8 or ASCII");
   BvhFile file;
   HeaderParser header(text, label);
   if (Status s = header.parse_hierarchy(file); !s) return make_error(s.error());
@@ -332,7 +383,7 @@ Result<BvhFile> parse_bvh(std::string_view text, const std::string& label) {
   };
   auto what = [&](std::size_t column) {
     const auto [joint, channel] = owner[column];
-    return "joint '" + file.joints[joint].name + "' " + channel_name(file.joints[joint].channels[channel]);
+    return "joint '" + excerpt(file.joints[joint].name) + "' " + channel_name(file.joints[joint].channels[channel]);
   };
   const char* const end = text.data() + text.size();
   const char* p = text.data() + pos;
@@ -359,9 +410,9 @@ Result<BvhFile> parse_bvh(std::string_view text, const std::string& label) {
                           " values the HIERARCHY declares");
       double v = 0.0;
       if (!parse_double(token, v))
-        return make_error(where(frame, line) + ", " + what(n) + ": not a number: '" + std::string(token) + "'");
+        return make_error(where(frame, line) + ", " + what(n) + ": not a number: '" + excerpt(token) + "'");
       if (!std::isfinite(v))
-        return make_error(where(frame, line) + ", " + what(n) + ": value is " + std::string(token) + " (not finite)");
+        return make_error(where(frame, line) + ", " + what(n) + ": value is " + excerpt(token) + " (not finite)");
       file.values.push_back(v);
       ++n;
       p = q;

@@ -11,7 +11,7 @@ namespace rotinterp::wire {
 namespace {
 
 // Also the format's version: bytes from another build fail here, not in a field.
-constexpr std::string_view kMagic = "rotinterp-clip-wire-1";
+constexpr std::string_view kMagic = "rotinterp-clip-wire-2";
 
 class Writer {
  public:
@@ -222,7 +222,10 @@ std::string encode(const ReadOutcome& outcome) {
   Writer w;
   w.raw(kMagic.data(), kMagic.size());
   w.u8(outcome.error.has_value());
-  if (outcome.error) w.str(*outcome.error);
+  if (outcome.error) {
+    w.str(*outcome.error);
+    w.u8(static_cast<std::uint8_t>(outcome.kind));
+  }
   const ClipFileInfo& info = outcome.info;
   w.str(info.format);
   w.u64(info.animations.size());
@@ -245,7 +248,12 @@ Result<ReadOutcome> decode(std::string_view bytes) {
   if (bytes.substr(0, kMagic.size()) != kMagic) return make_error("not a rotinterp clip record");
   Reader r(bytes.substr(kMagic.size()));
   ReadOutcome out;
-  if (r.flag()) out.error = r.str();
+  if (r.flag()) {
+    out.error = r.str();
+    const std::uint8_t kind = r.u8();
+    if (kind > static_cast<std::uint8_t>(ErrorKind::timed_out)) r.fail();
+    out.kind = static_cast<ErrorKind>(kind);
+  }
   ClipFileInfo& info = out.info;
   info.format = r.str();
   info.animations.resize(r.count(kString + 2 * kDouble + 1 + 8));

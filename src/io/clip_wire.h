@@ -1,6 +1,6 @@
 // The reader's private wire format: what one read of a file gave (a ClipFileInfo,
-// or an error and the warnings before it) as bytes, so that a forked child can hand
-// its reading to the parent (ReadOptions::isolate_assimp). Both ends are the same
+// or an error, its kind and the warnings before it) as bytes, so that the importer
+// process can hand its reading to the parent (import.h). Both ends are the same
 // build on the same machine: integers and doubles travel in native byte order,
 // doubles bit for bit.
 #pragma once
@@ -19,6 +19,7 @@ namespace rotinterp::wire {
 struct ReadOutcome {
   ClipFileInfo info;
   std::optional<std::string> error;
+  ErrorKind kind = ErrorKind::other;  // of `error`
 };
 
 std::string encode(const ReadOutcome& outcome);

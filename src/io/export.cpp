@@ -1,5 +1,6 @@
 #include "export.h"
 
+#include "assimp_iosystem.h"
 #include "assimp_text.h"
 #include "track_sample.h"
 #include "rotinterp/io/atomic_file.h"
@@ -122,10 +123,13 @@ Status export_with_assimp(const Clip& clip, const std::filesystem::path& path, c
   if (Status s = clip.validate(); !s) return make_error(label + ": cannot write an invalid clip: " + s.error());
   const std::unique_ptr<aiScene> scene = build_scene(clip);
   AtomicOutput out(path);
+  if (Status s = out.status(); !s) return s;
   // A .gltf comes with a .bin buffer that assimp names after the temporary file;
   // it is removed on every path out of here (and on SIGINT/SIGTERM) unless renamed.
   const ScopedTempFile temp_bin(std::filesystem::path(out.temp_path()).replace_extension(".bin"));
   Assimp::Exporter exporter;
+  auto* io = new CheckedIOSystem(label);  // owned by the exporter: every write checked
+  exporter.SetIOHandler(io);
   aiReturn ret = aiReturn_FAILURE;
   try {
     ret = exporter.Export(scene.get(), format, out.temp_path().string(), 0);
@@ -140,6 +144,7 @@ Status export_with_assimp(const Clip& clip, const std::filesystem::path& path, c
     std::filesystem::rename(temp_bin.path(), bin_out.temp_path(), ec);
     if (ec) return make_error(label + ": cannot write its buffer file: " + ec.message());
   }
+  if (const std::string e = io->error(); !e.empty()) return make_error(e);  // what made the export fail, if it did
   if (ret != aiReturn_SUCCESS) return make_error(label + ": assimp could not export: " + one_line(exporter.GetErrorString()));
   if (has_bin) {
     std::string text;
@@ -161,6 +166,7 @@ Status export_with_assimp(const Clip& clip, const std::filesystem::path& path, c
     rewrite << text;
     rewrite.close();
     if (!rewrite) return make_error(label + ": cannot write: " + std::strerror(errno));
+    if (Status s = out.finish(); !s) return s;  // the .gltf complete before its buffer replaces the old one
     if (Status s = bin_out.commit(); !s) return s;
   }
   return out.commit();

@@ -1,8 +1,10 @@
-// The clip reader: assimp for every format, our own BVH pass on top.
+// The clip reader: our own BVH pass, and assimp for every other format (in the
+// importer process: import.h).
 #include "rotinterp/io/read.h"
 
 #include "assimp_text.h"
 #include "clip_wire.h"
+#include "import.h"
 #include "rotinterp/clip/sampling.h"
 #include "rotinterp/io/bvh.h"
 #include "rotinterp/io/info.h"
@@ -12,8 +14,8 @@
 #include <assimp/scene.h>
 
 #include <fcntl.h>
+#include <sys/prctl.h>
 #include <sys/stat.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -21,7 +23,6 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
-#include <csignal>
 #include <cstring>
 #include <fstream>
 #include <map>
@@ -32,23 +33,6 @@
 #include <stdexcept>
 #include <sstream>
 #include <string_view>
-
-// assimp 5.2.5 as Debian ships it is built with its internal assertions on
-// (ASSIMP_BUILD_DEBUG), and a failed one aborts the whole process: its FBX
-// converter asserts on an animation curve without keys (fuzz_read_any
-// crash-3197eb88, tests/io/test_assimp_guard.cpp). One bad file must not end a batch of
-// thousands, so this definition takes the place of assimp's own: assimp calls it
-// through its PLT, and the link exports it from every executable that uses this
-// library (CMakeLists.txt: --export-dynamic-symbol). It throws instead of
-// aborting; the importer's own catch, or ours around ReadFile, turns that into
-// an ordinary "cannot read" error naming the file.
-namespace Assimp {
-[[noreturn]] void aiAssertViolation(const char* expression, const char* file, int line);
-void aiAssertViolation(const char* expression, const char* file, int line) {
-  throw std::runtime_error(std::string("assimp's internal check '") + expression + "' failed (" + file + ":" +
-                           std::to_string(line) + ")");
-}
-}  // namespace Assimp
 
 namespace rotinterp {
 
@@ -194,7 +178,14 @@ struct Loaded {
 Status check_file(const fs::path& path, const std::string& label) {
   std::error_code ec;
   const fs::file_status st = fs::status(path, ec);
-  if (ec || !fs::exists(st)) return make_error(label + ": no such file");
+  if (ec == std::errc::too_many_symbolic_link_levels)
+    return make_error(label + ": a loop of symbolic links (too many levels of symbolic links)");
+  if (ec || !fs::exists(st)) {
+    std::error_code lec;
+    if (fs::is_symlink(fs::symlink_status(path, lec))) return make_error(label + ": a symbolic link to a missing file");
+    if (ec && ec != std::errc::no_such_file_or_directory) return make_error(label + ": cannot read: " + ec.message());
+    return make_error(label + ": no such file");
+  }
   if (fs::is_directory(st)) return make_error(label + ": is a directory, not a clip file");
   if (!fs::is_regular_file(st)) return make_error(label + ": not a regular file");
   const auto size = fs::file_size(path, ec);
@@ -508,31 +499,14 @@ Status fill_scene(const aiScene* scene, const aiAnimation* anim, double tps, Cli
   return Ok{};
 }
 
-// Files assimp 5.2.5 crashes on (a segfault, which no handler can catch), refused
-// before it sees them. An FBX animation curve without keys ("KeyTime: *0" in the
-// ASCII form) makes its FBX converter read past an empty key list. Only the ASCII
-// form is recognized here; a binary file with such a curve is not.
-Status check_fbx_before_assimp(std::string_view text, const std::string& label) {
-  if (text.substr(0, 18) == "Kaydara FBX Binary") return Ok{};
-  for (std::size_t at = text.find("KeyTime:"); at != std::string_view::npos; at = text.find("KeyTime:", at + 8)) {
-    std::size_t i = at + 8;
-    while (i < text.size() && (text[i] == ' ' || text[i] == '\t')) ++i;
-    if (text.substr(i, 2) == "*0" && (i + 2 == text.size() || !std::isdigit(static_cast<unsigned char>(text[i + 2]))))
-      return make_error(label + ": an animation curve has no keys (line " +
-                        std::to_string(1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(at), '\n')) +
-                        "); refused because assimp 5.2 crashes on such files");
-  }
-  return Ok{};
-}
-
-// The importer as load() configures it.
+// The importer as the reads configure it.
 void configure(Assimp::Importer& importer, const ReadOptions& options) {
   importer.SetPropertyBool(AI_CONFIG_IMPORT_NO_SKELETON_MESHES, true);
   importer.SetPropertyBool(AI_CONFIG_IMPORT_FBX_PRESERVE_PIVOTS, options.fold_fbx_helpers);
 }
 
-// importer.ReadFile, with its failures (an error string, out of memory, our throwing
-// assertion handler) as one line in `error`; nullptr then.
+// importer.ReadFile, with its failures (an error string, out of memory, an
+// exception) as one line in `error`; nullptr then.
 const aiScene* import_scene(Assimp::Importer& importer, const fs::path& path, std::string& error) {
   try {
     const aiScene* scene = importer.ReadFile(path.string(), 0);
@@ -546,8 +520,8 @@ const aiScene* import_scene(Assimp::Importer& importer, const fs::path& path, st
   return nullptr;
 }
 
-// The part of load() that assimp does: the import, the animations and the clip
-// built from the scene. `info` comes with its format set.
+// The part of a read that assimp does: the import, the animations and the clip
+// built from the scene. `info` comes with its format set. Runs in the importer.
 Status read_with_assimp(const fs::path& path, const ReadOptions& options, const std::string& ext, ClipFileInfo& info,
                         const Warnings& warn) {
   const std::string label = path.string();
@@ -557,10 +531,11 @@ Status read_with_assimp(const fs::path& path, const ReadOptions& options, const 
   const aiScene* scene = import_scene(importer, path, assimp_error);
   if (!scene) {
     if (assimp_error.find("No suitable reader") != std::string::npos || assimp_error.empty())
-      return make_error(label + ": unknown or unsupported file format" + (ext.empty() ? "" : " ('." + ext + "')"));
-    return make_error(label + ": cannot read: " + assimp_error);
+      return make_error(label + ": unknown or unsupported file format" + (ext.empty() ? "" : " ('." + ext + "')"),
+                        ErrorKind::unreadable);
+    return make_error(label + ": cannot read: " + assimp_error, ErrorKind::unreadable);
   }
-  if (scene->mNumAnimations == 0) return make_error(label + ": the file has no animation");
+  if (scene->mNumAnimations == 0) return make_error(label + ": the file has no animation", ErrorKind::no_animation);
   for (unsigned a = 0; a < scene->mNumAnimations; ++a) {
     const aiAnimation* an = scene->mAnimations[a];
     AnimationSummary s;
@@ -577,218 +552,164 @@ Status read_with_assimp(const fs::path& path, const ReadOptions& options, const 
   const aiAnimation* anim = scene->mAnimations[info.selected];
   const AnimationSummary& summary = info.animations[info.selected];
   if (!std::isfinite(anim->mTicksPerSecond) || anim->mTicksPerSecond < 0.0)
-    return make_error(label + ": animation '" + summary.name + "' has an invalid tick rate");
+    return make_error(label + ": animation '" + summary.name + "' has an invalid tick rate", ErrorKind::unreadable);
   if (summary.default_rate)
     warn(label + ": animation '" + summary.name + "' gives 0 ticks per second; assuming " +
          std::to_string(static_cast<int>(kDefaultTicksPerSecond)));
   info.clip.name = summary.name.empty() ? path.stem().string() : summary.name;
-  return fill_scene(scene, anim, summary.ticks_per_second, info.clip, info.folded_helpers, warn, label);
+  Status filled = fill_scene(scene, anim, summary.ticks_per_second, info.clip, info.folded_helpers, warn, label);
+  if (!filled) return make_error(filled.error(), ErrorKind::unreadable);
+  return Ok{};
 }
 
-bool write_all(int fd, std::string_view bytes) {
-  while (!bytes.empty()) {
-    const ssize_t put = ::write(fd, bytes.data(), bytes.size());
-    if (put < 0 && errno == EINTR) continue;
-    if (put <= 0) return false;
-    bytes.remove_prefix(static_cast<std::size_t>(put));
-  }
-  return true;
+// BVH content: by extension, or a HIERARCHY first under another one.
+bool is_bvh(const fs::path& path, const std::string& ext) {
+  if (ext == "bvh") return true;
+  std::ifstream f(path, std::ios::binary);
+  std::string head(64, '\0');
+  f.read(head.data(), 64);
+  head.resize(static_cast<std::size_t>(f.gcount()));
+  return looks_like_bvh(head);
 }
 
-// A child's message: an 8-byte length, then that many bytes of clip_wire.h.
-// Read up to the announced length, not to end of file: a child forked meanwhile by
-// another thread holds a copy of the pipe's write end until it exits. Returns
-// false where the child stopped short (it crashed while writing).
-bool read_message(int fd, std::string& payload) {
-  std::string got;
-  std::uint64_t want = 0;
-  char chunk[1 << 16];
-  while (got.size() < sizeof want || got.size() - sizeof want < want) {
-    const ssize_t n = ::read(fd, chunk, sizeof chunk);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    got.append(chunk, static_cast<std::size_t>(n));
-    if (got.size() >= sizeof want) std::memcpy(&want, got.data(), sizeof want);
-  }
-  got.erase(0, sizeof want);
-  got.resize(static_cast<std::size_t>(want));
-  payload = std::move(got);
-  return true;
-}
-
-// ReadOptions::isolate_assimp: read_with_assimp runs in a forked child, which
-// sends what it read (clip_wire.h) through a pipe; this process never calls
-// assimp. assimp's double free is in the scene's destruction, which the child
-// finishes before it writes. The child takes the default action for the signals
-// the CLI handles (so it never cleans up the parent's temporary files), writes
-// nothing to stderr, keeps warnings for the parent to pass on, and leaves with
-// _exit (no atexit handlers, no flushing of inherited stdio buffers). A child that
-// dies, exits non-zero (a sanitizer's report) or sends a garbled message makes the
-// file refused. nullopt: no pipe or no fork; the caller reads in-process.
-std::optional<Result<wire::ReadOutcome>> read_in_child(const fs::path& path, const ReadOptions& options,
-                                                       const std::string& ext, const ClipFileInfo& info) {
-  int fds[2];
-  if (::pipe2(fds, O_CLOEXEC) != 0) return std::nullopt;
-  const pid_t pid = ::fork();
-  if (pid < 0) {
-    ::close(fds[0]);
-    ::close(fds[1]);
-    return std::nullopt;
-  }
+// BVH by our own pass; with `cross_check` (ReadOptions::cross_check_with_assimp,
+// only ever true in the importer) also assimp's reading, compared.
+Status read_bvh(const fs::path& path, const ReadOptions& options, bool cross_check, ClipFileInfo& info,
+                const Warnings& warn) {
   const std::string label = path.string();
-  if (pid == 0) {
-    ::close(fds[0]);
-    for (int sig : {SIGINT, SIGTERM, SIGHUP}) std::signal(sig, SIG_DFL);
-    // Quiet: what the crash prints (glibc's "double free detected", a sanitizer's
-    // report) is not the user's error message; the parent's one line is.
-    if (const int null = ::open("/dev/null", O_WRONLY); null >= 0) ::dup2(null, STDERR_FILENO);
-    wire::ReadOutcome out;
-    out.info = info;
-    const Warnings keep{nullptr, &out.info.warnings};
-    // The texts inspect_clip gives these in-process.
-    try {
-      if (Status st = read_with_assimp(path, options, ext, out.info, keep); !st) out.error = st.error();
-    } catch (const std::bad_alloc&) {
-      out.error = label + ": out of memory while reading";
-    } catch (const std::exception& e) {
-      out.error = label + ": " + one_line(e.what());
-    }
-    if (out.error) {
-      ClipFileInfo warnings_only;
-      warnings_only.warnings = std::move(out.info.warnings);
-      out.info = std::move(warnings_only);
-    }
-    const std::string payload = wire::encode(out);
-    const std::uint64_t size = payload.size();
-    const bool sent = write_all(fds[1], std::string_view(reinterpret_cast<const char*>(&size), sizeof size)) &&
-                      write_all(fds[1], payload);
-    ::_exit(sent ? 0 : 1);
+  FileText text;
+  if (Status st = text.open(path, label); !st) return make_error(st.error(), ErrorKind::unreadable);
+  Result<BvhFile> bvh = parse_bvh(text.text(), label);
+  if (!bvh) return make_error(bvh.error(), ErrorKind::unreadable);
+  info.format = "bvh";
+  if (bvh->extra_rows > 0)
+    warn(label + ": " + std::to_string(bvh->extra_rows) + " data row(s) after the " + std::to_string(bvh->frames) +
+         " declared frames ignored");
+  Assimp::Importer importer;
+  configure(importer, options);
+  std::string assimp_error;
+  const aiScene* scene = cross_check ? import_scene(importer, path, assimp_error) : nullptr;
+  AnimationSummary s{"", static_cast<double>(bvh->frames - 1) * bvh->frame_time, 1.0 / bvh->frame_time, false,
+                     bvh->joints.size()};
+  const aiAnimation* anim = nullptr;
+  if (!cross_check) {
+    // No assimp: nothing to compare.
+  } else if (scene && scene->mNumAnimations > 0) {
+    anim = scene->mAnimations[0];
+    s.name = anim->mName.C_Str();
+  } else {
+    warn(label + ": assimp could not read the motion (" + (assimp_error.empty() ? "no animation" : assimp_error) +
+         "); read with rotinterp's own BVH pass");
   }
-  ::close(fds[1]);
-  std::string payload;
-  bool whole = false;
-  bool out_of_memory = false;  // rethrown once the child is reaped
-  try {
-    whole = read_message(fds[0], payload);  // before waitpid: a big clip fills the pipe
-  } catch (const std::bad_alloc&) {
-    out_of_memory = true;
-  }
-  ::close(fds[0]);
-  int status = 0;
-  bool waited = true;
-  while (::waitpid(pid, &status, 0) < 0) {
-    if (errno != EINTR) {
-      waited = false;
-      break;
-    }
-  }
-  if (out_of_memory) throw std::bad_alloc();
-  std::string how;
-  if (waited && WIFSIGNALED(status))
-    how = std::string("signal ") + std::to_string(WTERMSIG(status)) + ", " + ::strsignal(WTERMSIG(status));
-  else if (waited && WIFEXITED(status) && WEXITSTATUS(status) != 0)
-    how = "exit status " + std::to_string(WEXITSTATUS(status));
-  if (how.empty() && whole)
-    if (Result<wire::ReadOutcome> got = wire::decode(payload)) return got;
-  if (how.empty()) how = "its report was cut short or garbled";
-  return Result<wire::ReadOutcome>(make_error(label + ": assimp crashed importing this file (" + how + "); refused"));
+  info.animations.push_back(s);
+  if (!options.animation.empty() && options.animation != "0" && options.animation != s.name)
+    return make_error(label + ": a BVH file has one animation (0); there is no animation '" + options.animation + "'");
+  info.clip.name = path.stem().string();
+  if (Status st = fill_bvh(*bvh, anim, info.clip, warn, label); !st) return make_error(st.error(), ErrorKind::unreadable);
+  info.clip.name = path.stem().string();
+  return Ok{};
 }
 
-// GCC 12's AddressSanitizer allocator does not take its locks around fork: a child
-// forked while another thread is inside it hangs at its first allocation (seen in
-// CI: eval -j 2 on FBX files). glibc's malloc does, so release builds always
-// isolate; sanitizer builds import in-process while other threads run.
-bool fork_is_safe() {
-#if defined(__SANITIZE_ADDRESS__)
-  std::error_code ec;
-  std::size_t threads = 0;
-  for (fs::directory_iterator it("/proc/self/task", ec); !ec && it != fs::directory_iterator(); it.increment(ec))
-    ++threads;
-  return threads <= 1;
-#else
-  return true;
-#endif
-}
-
-Result<ClipFileInfo> load(const fs::path& path, const ReadOptions& options) {
-  const std::string label = path.string();
-  if (Status s = check_file(path, label); !s) return make_error(s.error());
-  ClipFileInfo info;
-  Warnings warn{&options.on_warning, &info.warnings};
+std::string extension_of(const fs::path& path) {
   std::string ext = lower(path.extension().string());
   if (!ext.empty() && ext[0] == '.') ext.erase(0, 1);
-  info.format = ext;
+  return ext;
+}
 
-  // BVH: our pass first (validation, layout, exact Frame Time).
-  std::optional<BvhFile> bvh;
-  bool bvh_content = ext == "bvh";
-  if (!bvh_content) {  // BVH content under another extension
-    std::ifstream f(path, std::ios::binary);
-    std::string head(64, '\0');
-    f.read(head.data(), 64);
-    head.resize(static_cast<std::size_t>(f.gcount()));
-    bvh_content = looks_like_bvh(head);
-  }
-  if (bvh_content) {
-    FileText text;
-    if (Status st = text.open(path, label); !st) return make_error(st.error());
-    Result<BvhFile> parsed = parse_bvh(text.text(), label);
-    if (!parsed) return make_error(parsed.error());
-    bvh = std::move(*parsed);
-    info.format = "bvh";
-    if (bvh->extra_rows > 0)
-      warn(label + ": " + std::to_string(bvh->extra_rows) + " data row(s) after the " + std::to_string(bvh->frames) +
-           " declared frames ignored");
-  }
-
-  if (bvh) {
-    // assimp for BVH only as the optional cross-check.
-    Assimp::Importer importer;
-    configure(importer, options);
-    std::string assimp_error;
-    const aiScene* scene = options.cross_check_with_assimp ? import_scene(importer, path, assimp_error) : nullptr;
-    AnimationSummary s{"", static_cast<double>(bvh->frames - 1) * bvh->frame_time, 1.0 / bvh->frame_time, false,
-                       bvh->joints.size()};
-    const aiAnimation* anim = nullptr;
-    if (!options.cross_check_with_assimp) {
-      // No assimp: nothing to compare.
-    } else if (scene && scene->mNumAnimations > 0) {
-      anim = scene->mAnimations[0];
-      s.name = anim->mName.C_Str();
-    } else {
-      warn(label + ": assimp could not read the motion (" + (assimp_error.empty() ? "no animation" : assimp_error) +
-           "); read with rotinterp's own BVH pass");
-    }
-    info.animations.push_back(s);
-    if (!options.animation.empty() && options.animation != "0" && options.animation != s.name)
-      return make_error(label + ": a BVH file has one animation (0); there is no animation '" + options.animation + "'");
-    info.clip.name = path.stem().string();
-    if (Status st = fill_bvh(*bvh, anim, info.clip, warn, label); !st) return make_error(st.error());
-    info.clip.name = path.stem().string();
-  } else {
-    if (ext == "fbx") {  // only FBX has a pre-check: read it for that alone
-      FileText text;
-      if (Status s = text.open(path, label); !s) return make_error(s.error());
-      if (Status s = check_fbx_before_assimp(text.text(), label); !s) return make_error(s.error());
-    }
-    std::optional<Result<wire::ReadOutcome>> child;
-    if (options.isolate_assimp && fork_is_safe()) child = read_in_child(path, options, ext, info);
-    if (!child) {
-      if (Status st = read_with_assimp(path, options, ext, info, warn); !st) return make_error(st.error());
-    } else {
-      if (!*child) return make_error(child->error());
-      info = std::move((*child)->info);
-      for (const std::string& w : info.warnings)
-        if (options.on_warning) options.on_warning(w);
-      if ((*child)->error) return make_error(*(*child)->error);
-    }
-  }
+// What both processes check last: a valid clip whose joints nest no deeper than
+// BVH allows (fill_scene takes any depth assimp gives; callers may walk the tree).
+Status check_clip(ClipFileInfo& info, const std::string& label) {
   info.clip.source_format = info.format;
-  if (Status s = info.clip.validate(); !s) return make_error(label + ": " + s.error());
-  return info;
+  if (Status s = info.clip.validate(); !s) return make_error(label + ": " + s.error(), ErrorKind::unreadable);
+  const std::vector<Joint>& joints = info.clip.skeleton.joints;
+  std::vector<std::size_t> depth(joints.size(), 1);
+  for (std::size_t j = 0; j < joints.size(); ++j) {
+    if (joints[j].parent >= 0) depth[j] = depth[static_cast<std::size_t>(joints[j].parent)] + 1;
+    if (depth[j] > kMaxJointDepth)
+      return make_error(label + ": joints nested more than " + std::to_string(kMaxJointDepth) +
+                            " levels deep (the most rotinterp reads)",
+                        ErrorKind::unreadable);
+  }
+  return Ok{};
+}
+
+// The whole read in this process, assimp included (the importer's part).
+Status read_here(const fs::path& path, const ReadOptions& options, ClipFileInfo& info, const Warnings& warn) {
+  const std::string label = path.string();
+  if (Status s = check_file(path, label); !s) return make_error(s.error(), ErrorKind::unreadable);
+  const std::string ext = extension_of(path);
+  info.format = ext;
+  Status st = is_bvh(path, ext) ? read_bvh(path, options, options.cross_check_with_assimp, info, warn)
+                                : read_with_assimp(path, options, ext, info, warn);
+  if (!st) return st;
+  return check_clip(info, label);
+}
+
+// A read as callers see it: BVH by our pass here; anything for assimp through the
+// importer process, whose warnings reach on_warning once it is done, in order.
+Result<ClipFileInfo> load(const fs::path& path, const ReadOptions& options) {
+  const std::string label = path.string();
+  if (Status s = check_file(path, label); !s) return make_error(s.error(), ErrorKind::unreadable);
+  const std::string ext = extension_of(path);
+  ClipFileInfo info;
+  info.format = ext;
+  if (is_bvh(path, ext) && !options.cross_check_with_assimp) {
+    Warnings warn{&options.on_warning, &info.warnings};
+    if (Status st = read_bvh(path, options, false, info, warn); !st) return st.failure();
+    if (Status st = check_clip(info, label); !st) return st.failure();
+    return info;
+  }
+  Result<wire::ReadOutcome> got = detail::read_in_importer(path, options);
+  if (!got) return got.failure();
+  for (const std::string& w : got->info.warnings)
+    if (options.on_warning) options.on_warning(w);
+  if (got->error) return make_error(*got->error, got->kind);
+  return std::move(got->info);
 }
 
 }  // namespace
+
+namespace detail {
+
+wire::ReadOutcome read_in_this_process(const fs::path& path, const ReadOptions& options) {
+  wire::ReadOutcome out;
+  const Warnings keep{nullptr, &out.info.warnings};
+  try {
+    if (Status st = read_here(path, options, out.info, keep); !st) {
+      out.error = st.error();
+      out.kind = st.error_kind();
+    }
+  } catch (const std::bad_alloc&) {
+    out.error = path.string() + ": out of memory while reading";
+  } catch (const std::exception& e) {
+    out.error = path.string() + ": " + one_line(e.what());
+  }
+  if (out.error) {
+    ClipFileInfo warnings_only;
+    warnings_only.warnings = std::move(out.info.warnings);
+    out.info = std::move(warnings_only);
+  }
+  return out;
+}
+
+}  // namespace detail
+
+bool importable_extension(std::string extension) {
+  extension = lower(std::move(extension));
+  if (!extension.empty() && extension[0] == '.') extension.erase(0, 1);
+  if (extension.empty()) return false;
+  // assimp's list ("*.3ds;*.bvh;…"), asked once: only the table, no import.
+  static const std::set<std::string> known = [] {
+    std::string list;
+    Assimp::Importer().GetExtensionList(list);
+    std::set<std::string> out{"bvh"};
+    std::stringstream items(list);
+    for (std::string item; std::getline(items, item, ';');)
+      if (item.size() > 2 && item.compare(0, 2, "*.") == 0) out.insert(lower(item.substr(2)));
+    return out;
+  }();
+  return known.count(extension) > 0;
+}
 
 Result<ClipFileInfo> inspect_clip(const fs::path& path, const ReadOptions& options) {
   try {
@@ -802,7 +723,7 @@ Result<ClipFileInfo> inspect_clip(const fs::path& path, const ReadOptions& optio
 
 Result<Clip> read_clip(const fs::path& path, const ReadOptions& options) {
   Result<ClipFileInfo> info = inspect_clip(path, options);
-  if (!info) return make_error(info.error());
+  if (!info) return info.failure();
   return std::move(info->clip);
 }
 

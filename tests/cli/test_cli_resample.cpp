@@ -95,11 +95,11 @@ TEST_F(ResampleCli, KeepEveryRangeAndOverridesWork) {
 TEST_F(ResampleCli, UsageErrorsExitTwoWithOneLineAndNoOutput) {
   const std::string in = walk(), out = path("never.bvh"), io = in + " -o " + out + " ";
   expect_errors({{io + "--fps 0", "greater than 0"},
-                 {io + "--fps -30", "frame rate"},
+                 {io + "--fps -30", "--fps '-30' must be greater than 0"},
                  {io + "--fps abc", "not a number"},
                  {io + "--fps 30 --keep-every 2", "not both"},
-                 {io + "--keep-every 0", "≥ 1"},
-                 {io + "--keep-every two", "≥ 1"},
+                 {io + "--keep-every 0", "--keep-every '0' is too small"},
+                 {io + "--keep-every two", "--keep-every 'two' is not a number"},
                  {io + "--method cubic-ish", "valid: "},
                  {io + "--method-for Head", "JOINT=METHOD"},
                  {io + "--method-for Head=nope", "unknown method 'nope'"},

@@ -153,8 +153,9 @@ TEST_F(ExitCodes, SynthFailuresLeaveNoOutput) {
       {"synth @/s.bvh --joints 0", 2, {"--joints '0'"}, "@/s.bvh"},
       {"synth @/s.bvh --seconds 100000 --fps 1000", 2, {"too large"}, "@/s.bvh"},
       {"synth @/s.txt", 2, {"@/s.txt", "unknown format"}, "@/s.txt"},
-      {"synth @/afile/s.bvh", 1, {"@/afile/s.bvh: cannot write"}},
-      {"synth @/nodir/s.bvh", 1, {"@/nodir/s.bvh: cannot write"}, "@/nodir"},
+      // The spec is written first (so that only renames follow the clip's commit).
+      {"synth @/afile/s.bvh", 1, {"@/afile/s.bvh.synth: cannot write"}},
+      {"synth @/nodir/s.bvh", 1, {"@/nodir/s.bvh.synth: cannot write"}, "@/nodir"},
       {"synth", 2, {"OUT is required"}},
   });
 }

@@ -3,6 +3,7 @@
 // (README "Exit codes"). Each test starts a long run on a generated clip, waits
 // until its temporary output file exists (so the signal lands during the write),
 // signals it and inspects the output directory.
+#include "support/processes.h"
 #include "support/run_cli.h"
 
 #include <gtest/gtest.h>
@@ -28,52 +29,21 @@ namespace {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
-// Starts the CLI with `args` (no shell), stdout and stderr to /dev/null; with
-// `ignored` (a signal) ignored as under nohup.
-pid_t spawn(const std::vector<std::string>& args, int ignored = 0) {
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    if (ignored != 0) std::signal(ignored, SIG_IGN);
-    std::vector<char*> argv;
-    static std::string cli = ROTINTERP_CLI;
-    argv.push_back(cli.data());
-    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    const int null = ::open("/dev/null", O_WRONLY);
-    ::dup2(null, STDOUT_FILENO);
-    ::dup2(null, STDERR_FILENO);
-    ::execv(cli.c_str(), argv.data());
-    ::_exit(127);
-  }
-  return pid;
-}
+using test::exit_status;
+using test::names_in;
+using test::spawn;
 
-// Polls `done` every 0.5 ms until it holds or the child exits or `seconds` pass.
+// Polls `done` until it holds; a run that ends first is a failure.
 bool wait_until(pid_t child, const std::function<bool()>& done, double seconds) {
-  const auto end = Clock::now() + std::chrono::duration<double>(seconds);
-  while (Clock::now() < end) {
-    if (done()) return true;
-    int status = 0;
-    if (::waitpid(child, &status, WNOHANG) == child) {
-      ADD_FAILURE() << "the run ended (status " << status << ") before it started writing";
-      return false;
-    }
-    std::this_thread::sleep_for(std::chrono::microseconds(500));
-  }
-  return false;
+  bool ended = false;
+  const bool ok = test::wait_until(child, done, seconds, &ended);
+  if (ended) ADD_FAILURE() << "the run ended before it started writing";
+  return ok;
 }
 
-// A temporary output of io/atomic_file.h: ".<stem>.tmp<pid>.<n>.<r><ext>" (or a
+// A named temporary output of io/atomic_file.h: ".rotinterp.PID.N.tmp.EXT" (or a
 // side file assimp made from it).
 bool is_temp_name(const std::string& name) { return name.size() > 1 && name[0] == '.' && name.find(".tmp") != std::string::npos; }
-
-std::vector<std::string> names_in(const fs::path& dir) {
-  std::vector<std::string> out;
-  std::error_code ec;
-  for (const auto& e : fs::directory_iterator(dir, ec)) out.push_back(e.path().filename().string());
-  std::sort(out.begin(), out.end());
-  return out;
-}
 
 // Whether `dir` holds a temporary file whose name ends with `suffix`.
 bool has_temp(const fs::path& dir, const std::string& suffix = "") {
@@ -81,12 +51,6 @@ bool has_temp(const fs::path& dir, const std::string& suffix = "") {
     if (is_temp_name(n) && n.size() >= suffix.size() && n.compare(n.size() - suffix.size(), suffix.size(), suffix) == 0)
       return true;
   return false;
-}
-
-int exit_status(pid_t pid) {
-  int status = 0;
-  if (::waitpid(pid, &status, 0) != pid) return -1;
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 1000 + WTERMSIG(status);
 }
 
 // A complete PNG ends with the IEND chunk.
@@ -118,14 +82,17 @@ class Interrupt : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(out_); }
 
-  // Runs `args`, signals it once a temporary file shows up in `watched`, and
-  // returns its exit status; `delay` later when given.
+  // Runs `args`, signals it once it writes into `watched` (a named temporary file
+  // ending with `suffix` shows up there, or, without a suffix, it has a file there
+  // open: unnamed temporaries have no name), and returns its exit status; `delay`
+  // later when given.
   int interrupt_while_writing(const std::vector<std::string>& args, const fs::path& watched, int sig,
                               std::chrono::milliseconds delay = std::chrono::milliseconds(0),
                               const std::string& suffix = "", int ignored = 0) {
     const pid_t pid = spawn(args, ignored);
     EXPECT_GT(pid, 0);
-    const bool writing = wait_until(pid, [&] { return has_temp(watched, suffix); }, 60.0);
+    const bool writing = wait_until(
+        pid, [&] { return has_temp(watched, suffix) || (suffix.empty() && test::has_open_file_in(pid, watched)); }, 60.0);
     EXPECT_TRUE(writing) << "no temporary file appeared in " << watched;
     std::this_thread::sleep_for(delay);
     ::kill(pid, sig);

@@ -1,10 +1,12 @@
 // `rotinterp eval` end to end: outputs, shards + merge, a bad file in a directory.
+#include "support/hostile_files.h"
 #include "support/run_cli.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -16,6 +18,9 @@ namespace {
 namespace fs = std::filesystem;
 using test::run_cli;
 using test::slurp;
+using test::double_free_fbx;
+using test::fbx_one_curve;
+using test::nested_bvh;
 
 // A fresh directory under the test temp dir.
 fs::path fresh_dir(const std::string& name) {
@@ -118,6 +123,53 @@ TEST(EvalCli, ADirectoryWithOneBadFileEvaluatesTheOthersAndExitsThree) {
   ASSERT_EQ(j["failed"].size(), 1u);
   EXPECT_NE(j["failed"][0]["file"].get<std::string>().find("broken.bvh"), std::string::npos);
   EXPECT_EQ(j["clips_evaluated"], 4);
+}
+
+TEST(EvalCli, FilesThatCrashTheImporterAreFailuresOfABatchThatGoesOn) {
+  // Found in a directory, each made the whole batch die (exit 134/139, nothing
+  // written): after read_clip refused it, the batch asked assimp in-process
+  // whether it held an animation.
+  const fs::path in = fresh_dir("crashers"), out = fresh_dir("crashers_out");
+  fs::create_symlink(fs::path(ROTINTERP_SHARED_DATA) / "bvh/NC_bandai1_walk_normal_001.bvh", in / "walk.bvh");
+  const std::string double_free = double_free_fbx(fs::path(ROTINTERP_SHARED_DATA) / "fbx/assimp_huesitos.fbx");
+  ASSERT_FALSE(double_free.empty());
+  std::ofstream(in / "double_free.fbx", std::ios::binary) << double_free;
+  std::ofstream(in / "no_keys.fbx") << fbx_one_curve("", "", 0);
+  std::ofstream(in / "deep.bvh") << nested_bvh(20000);
+  std::ofstream(in / "triangle.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";  // no animation: skipped
+  const auto r = run_cli("eval " + in.string() + " --methods slerp --keep-every 4 -q -o " + out.string());
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_NE(slurp(out / "errors.csv").find("walk.bvh"), std::string::npos);
+  const auto j = nlohmann::json::parse(slurp(out / "summary.json"));
+  std::vector<std::string> failed;
+  for (const auto& f : j["failed"]) failed.push_back(fs::path(f["file"].get<std::string>()).filename().string());
+  EXPECT_EQ(failed, (std::vector<std::string>{"deep.bvh", "double_free.fbx", "no_keys.fbx"}));
+  EXPECT_EQ(j["clips_evaluated"], 1);
+}
+
+// Peak resident memory (KiB) of `rotinterp ARGS`, by GNU time.
+long peak_kib(const std::string& args, const fs::path& scratch) {
+  const fs::path out = scratch / "maxrss";
+  const std::string cmd = "/usr/bin/time -f %M -o " + out.string() + " " + ROTINTERP_CLI + " " + args + " >/dev/null 2>&1";
+  if (std::system(cmd.c_str()) != 0) return -1;
+  return std::stol(slurp(out));
+}
+
+TEST(EvalCli, SubframesCostMemoryByTheClipNotByTheirCount) {
+  // Every subframe sample was stored (≈ 12.6 MB per unit of --subframe on CMU
+  // 01_01, then bad_alloc): now they stream, so K = 1000 costs what K = 0 does,
+  // up to one block (≈ 20 MB).
+  const fs::path dir = fresh_dir("subframe_memory");
+  ASSERT_EQ(run_cli("synth " + (dir / "walk.bvh").string() + " --kind walk --seconds 2 --fps 30 --quiet").exit_code, 0);
+  const std::string args = "eval " + (dir / "walk.bvh").string() + " --methods slerp --keep-every 4 --no-plots -q -j 1 -o ";
+  const long k0 = peak_kib(args + (dir / "k0").string(), dir);
+  const long k1000 = peak_kib(args + (dir / "k1000").string() + " --subframe 1000", dir);
+  ASSERT_GT(k0, 0);
+  ASSERT_GT(k1000, 0);
+  EXPECT_LT(k1000, k0 + 48 * 1024) << "K=0: " << k0 << " KiB, K=1000: " << k1000 << " KiB";
+  const auto csv = lines_of(slurp(dir / "k1000" / "errors.csv"));
+  ASSERT_GT(csv.size(), 1u);
+  EXPECT_NE(csv[1].find(",60061,"), std::string::npos) << csv[1];  // samples: 60 intervals × 1001, and the last
 }
 
 TEST(EvalCli, SubframesOfSlerpAtEveryFrameMatchTheOriginalsOwnSlerp) {

@@ -177,3 +177,58 @@ TEST(EvaluateClip, ErrorGrowsWithKeySpacingOnRealClipsForEveryMethod) {
 
 }  // namespace
 }  // namespace rotinterp
+
+namespace rotinterp {
+namespace {
+
+TEST(EvaluateClipSubframes, StreamedBlocksGiveTheStatisticsOfAllSamplesAtOnce) {
+  // 97 frames × 1001 samples per interval: 96 097 samples, more than one block,
+  // so the sums are combined and the 95th percentile is selected across blocks.
+  // Here every sample is also kept at once, the way eval measured before it
+  // streamed, and the two must agree (p95 and max exactly).
+  const Clip clip = constant_velocity_clip(97, 30.0);
+  ClipEvalOptions o;
+  o.methods = {"squad"};
+  o.keep_every = {4};
+  o.subframe = 1000;
+  auto ref = prepare_reference(clip, "cav", o);
+  ASSERT_TRUE(ref.ok()) << ref.error();
+  ASSERT_EQ(ref->samples, 96097u);
+  auto rows = evaluate_method(*ref, "squad", o);
+  ASSERT_TRUE(rows.ok()) << rows.error();
+  std::vector<double> times(ref->samples);
+  for (std::size_t m = 0; m < times.size(); ++m) times[m] = sample_time(*ref, m);
+  std::vector<double> scratch;
+  for (std::size_t j = 0; j < clip.skeleton.joints.size(); ++j) {
+    SCOPED_TRACE(j);
+    std::vector<Quat> reference(times.size()), test(times.size());
+    for (std::size_t m = 0; m < times.size(); ++m) {
+      const std::size_t k = m / ref->per_frame, i = m % ref->per_frame;
+      const Quat& q0 = ref->original[j][k];
+      reference[m] = i == 0 ? q0
+                            : apply_moving(q0, displacement_moving(q0, ref->original[j][k + 1]) *
+                                                   (static_cast<double>(i) / static_cast<double>(ref->per_frame)));
+    }
+    auto curve = make_interpolator("squad", decimated_track(*ref, j, 4));
+    ASSERT_TRUE(curve.ok());
+    (*curve)->evaluate(times.data(), times.size(), test.data());
+    const RotationError all = rotation_error(reference.data(), test.data(), times.size(), ref->bone_axis[j], scratch);
+    const ErrorRow& row = (*rows)[j];
+    constexpr double kDeg = 180.0 / kPi;
+    EXPECT_GT(all.angle.p95, 0.0);
+    EXPECT_EQ(row.p95_deg, all.angle.p95 * kDeg);
+    EXPECT_EQ(row.max_deg, all.angle.max * kDeg);
+    EXPECT_NEAR(row.mean_deg, all.angle.mean * kDeg, 1e-12 * row.mean_deg);
+    EXPECT_NEAR(row.rms_deg, all.angle.rms * kDeg, 1e-12 * row.rms_deg);
+    EXPECT_NEAR(row.swing_rms_deg, all.swing.rms() * kDeg, 1e-12 * row.rms_deg);
+    EXPECT_NEAR(row.twist_rms_deg, all.twist.rms() * kDeg, 1e-12 * row.rms_deg);
+    const Smoothness smooth = sampled_smoothness(test.data(), test.size(), ref->sample_dt);
+    EXPECT_NEAR(row.acc_rms, smooth.acceleration_rms * kDeg, 1e-9 * row.acc_rms);
+    const Smoothness smooth_ref = sampled_smoothness(reference.data(), reference.size(), ref->sample_dt);
+    EXPECT_NEAR(row.acc_rms_ref, smooth_ref.acceleration_rms * kDeg, 1e-9 * row.acc_rms_ref);
+    EXPECT_EQ(row.samples, times.size());
+  }
+}
+
+}  // namespace
+}  // namespace rotinterp

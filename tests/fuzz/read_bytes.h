@@ -1,9 +1,10 @@
 // Shared by the reader fuzz targets: write the bytes to a temporary file with the
-// given extension and read it through rotinterp::read_clip, isolated (the default)
-// and in-process. The reader must give a valid clip or an error, the same both
+// given extension and read it through rotinterp::read_clip (assimp in the
+// importer process) and in this process. The reader must give a valid clip or an error, the same both
 // ways — never crash, leak or hang.
 #pragma once
 
+#include "import.h"  // src/io: the importer's in-process reading
 #include "rotinterp/io/read.h"
 
 #include <unistd.h>
@@ -22,17 +23,15 @@ inline void read_bytes_as(const std::uint8_t* data, std::size_t size, const char
   }
   auto clip = rotinterp::read_clip(path);
   if (clip.ok() && !clip->validate().ok()) __builtin_trap();  // the reader promises a valid clip
-  // With isolate_assimp (the default) a non-BVH file is read in a child process,
-  // out of the fuzzer's sight. Unless assimp crashed there, read it again in this
-  // process, so that our own clip building runs under the sanitizers too; both
-  // readings must agree.
-  if (clip.ok() || clip.error().find("assimp crashed importing this file") == std::string::npos) {
-    rotinterp::ReadOptions in_process;
-    in_process.isolate_assimp = false;
-    auto again = rotinterp::read_clip(path, in_process);
-    if (again.ok() != clip.ok()) __builtin_trap();
-    if (!again.ok() && again.error() != clip.error()) __builtin_trap();
-    if (again.ok() && (again->rotations.size() != clip->rotations.size() || !again->validate().ok())) __builtin_trap();
+  // A non-BVH file is read in the importer process, out of the fuzzer's sight.
+  // Unless assimp crashed there, read it again in this process, so that our own
+  // clip building runs under the sanitizers too; both readings must agree.
+  if (clip.ok() || clip.error_kind() != rotinterp::ErrorKind::crashed) {
+    const rotinterp::wire::ReadOutcome again = rotinterp::detail::read_in_this_process(path, {});
+    if (again.error.has_value() == clip.ok()) __builtin_trap();
+    if (again.error && (*again.error != clip.error() || again.kind != clip.error_kind())) __builtin_trap();
+    if (!again.error && (again.info.clip.rotations.size() != clip->rotations.size() || !again.info.clip.validate().ok()))
+      __builtin_trap();
   }
   std::filesystem::remove(path);
 }

@@ -23,21 +23,30 @@ inline Vec3 random_unit(std::mt19937_64& rng) {
 inline Quat rot(const Vec3& axis, double angle) { return exp(RotVec::from_axis_angle(axis, angle)); }
 inline Quat Rz(double angle) { return rot(Vec3::UnitZ(), angle); }
 
-// A "motion capture like" track: random steps of up to `max_step` rad between
-// keys, non-uniform times with intervals in [dt_min, dt_max].
-inline RotationTrack random_track(std::uint64_t seed, int n, double max_step, double dt_min, double dt_max) {
+// Keys from a random walk: each step turns about a random axis by step(rng) rad
+// and lasts interval(rng) s.
+template <class Step, class Interval>
+RotationTrack random_walk_track(std::uint64_t seed, int n, Step step, Interval interval) {
   std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
   RotationTrack t;
   double time = 0.25;
   Quat q = random_quat(rng);
   for (int k = 0; k < n; ++k) {
     t.times.push_back(time);
     t.keys.push_back(q);
-    time += dt_min + (dt_max - dt_min) * u(rng);
-    q = apply_moving(q, RotVec(random_unit(rng) * (max_step * (0.3 + 0.7 * u(rng)))));
+    time += interval(rng);
+    q = apply_moving(q, RotVec(random_unit(rng) * step(rng)));
   }
   return t;
+}
+
+// A "motion capture like" track: random steps of up to `max_step` rad between
+// keys, non-uniform times with intervals in [dt_min, dt_max].
+inline RotationTrack random_track(std::uint64_t seed, int n, double max_step, double dt_min, double dt_max) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  return random_walk_track(
+      seed, n, [&](std::mt19937_64& rng) { return max_step * (0.3 + 0.7 * u(rng)); },
+      [&](std::mt19937_64& rng) { return dt_min + (dt_max - dt_min) * u(rng); });
 }
 
 // Constant angular velocity: q(t) = exp(ω t)·q₀ at the given key times.

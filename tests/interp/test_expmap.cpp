@@ -2,9 +2,13 @@
 #include "support.h"
 
 #include "rotinterp/interp/expmap.h"
+#include "rotinterp/interp/interpolator.h"
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace rotinterp {
@@ -78,6 +82,35 @@ TEST(Expmap, RelativeToTheMeanPassesTheKeysAndCutsTheCoordinateDependence) {
   EXPECT_GT(deviation[0], 1e-6);
   std::printf("[ info ] expmap left-invariance deviation: plain %.3g rad, relative to mean %.3g rad\n", deviation[0],
               deviation[1]);
+}
+
+TEST(Expmap, IsNotCoordinateInvariantASpinFromAPose70DegreesOffTheIdentityIsMissedByUpTo32Degrees) {
+  // The example the README gives: a spin about a fixed (world) axis at 55° per key,
+  // starting from a pose 70° about x from the identity. The invariant methods that
+  // are exact on constant angular velocity follow it exactly; expmap interpolates
+  // rotation vectors measured from the identity and leaves the spin — by 12.1°
+  // when the spin axis is perpendicular to x, by 31.6° when it is 45° from x.
+  const Quat q0 = exp(RotVec(Vec3(1, 0, 0) * (70.0 * kPi / 180)));
+  std::vector<double> times;
+  for (int k = 0; k <= 8; ++k) times.push_back(k);
+  for (const auto& [axis, expected] : {std::pair{Vec3(0, 0, 1), 12.1}, std::pair{Vec3(1, 1, 0).normalized(), 31.6}}) {
+    const Vec3 omega = axis * (55.0 * kPi / 180);  // rad per key (1 s apart)
+    const RotationTrack track = test::constant_velocity_track(omega, q0, times);
+    auto worst_of = [&](const std::string& method) {
+      auto p = make_interpolator(method, track).value();
+      double worst = 0.0;
+      for (int s = 0; s <= 800; ++s) {
+        const double x = s / 100.0;
+        worst = std::max(worst, angular_distance(p->evaluate(x), integrate_angular_velocity(q0, omega, x)));
+      }
+      return worst * 180 / kPi;
+    };
+    const double expmap = worst_of("expmap");
+    std::printf("[ info ] spin 55°/key about (%.2f, %.2f, %.2f) from 70° about x: expmap misses it by %.1f°\n",
+                axis.x(), axis.y(), axis.z(), expmap);
+    EXPECT_NEAR(expmap, expected, 0.1);
+    for (const char* exact : {"slerp", "squad", "c2", "bf", "clamped"}) EXPECT_LT(worst_of(exact), 1e-7) << exact;
+  }
 }
 
 }  // namespace

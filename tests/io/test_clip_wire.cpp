@@ -60,11 +60,13 @@ TEST(ClipWire, EveryFieldSurvivesTheRoundTripBitForBit) {
 TEST(ClipWire, AnErrorTravelsWithTheWarningsBeforeIt) {
   wire::ReadOutcome out;
   out.error = "x.fbx: the animation moves no node of the scene";
+  out.kind = ErrorKind::no_animation;
   out.info.warnings = {"x.fbx: animation 'A' gives 0 ticks per second; assuming 25"};
   Result<wire::ReadOutcome> back = wire::decode(wire::encode(out));
   ASSERT_TRUE(back) << back.error();
   ASSERT_TRUE(back->error);
   EXPECT_EQ(*back->error, *out.error);
+  EXPECT_EQ(back->kind, ErrorKind::no_animation);
   expect_identical(back->info, out.info, "error");
   wire::ReadOutcome empty_message;
   empty_message.error = "";
@@ -102,8 +104,13 @@ TEST(ClipWire, CorruptedCountsAndValuesNeitherCrashNorAllocateWhatTheyClaim) {
   wrong_magic[0] ^= 1;
   EXPECT_FALSE(wire::decode(wrong_magic));
   std::string bad_flag = bytes;
-  bad_flag[std::string_view("rotinterp-clip-wire-1").size()] = 2;  // has-error: neither 0 nor 1
+  bad_flag[std::string_view("rotinterp-clip-wire-2").size()] = 2;  // has-error: neither 0 nor 1
   EXPECT_FALSE(wire::decode(bad_flag));
+  wire::ReadOutcome failed;
+  failed.error = "x";
+  std::string bad_kind = wire::encode(failed);
+  bad_kind[std::string_view("rotinterp-clip-wire-2").size() + 1 + 8 + 1] = 100;  // after the flag and the message
+  EXPECT_FALSE(wire::decode(bad_kind));
 }
 
 TEST(ClipWire, GarbageIsRejected) {

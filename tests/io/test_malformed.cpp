@@ -3,6 +3,7 @@
 // Also: every BVH and FBX of ../shared/data loads, or fails with its tested message.
 #include "io_test_util.h"
 #include "rotinterp/io/read.h"
+#include "support/hostile_files.h"
 #include "support/run_cli.h"
 
 #include <gtest/gtest.h>
@@ -26,29 +27,6 @@ const char* kHeader =
 
 std::string bvh(const std::string& frames, const std::string& frame_time, const std::string& rows) {
   return std::string(kHeader) + "MOTION\nFrames: " + frames + "\nFrame Time: " + frame_time + "\n" + rows;
-}
-
-// A one-bone ASCII FBX whose X translation has one curve with `keys` key times
-// (KeyTime and KeyValueFloat blocks) in a take from 0 to 1 s.
-std::string fbx_one_curve(const std::string& key_times, const std::string& key_values, int count) {
-  const std::string n = std::to_string(count);
-  return "; FBX 7.4.0 project file\n"
-         "FBXHeaderExtension:  {\n\tFBXHeaderVersion: 1003\n\tFBXVersion: 7400\n}\n"
-         "GlobalSettings:  {\n\tVersion: 1000\n\tProperties70:  {\n"
-         "\t\tP: \"UnitScaleFactor\", \"double\", \"Number\", \"\",1\n\t}\n}\n"
-         "Objects:  {\n"
-         "\tModel: 1000, \"Model::Bone\", \"LimbNode\" {\n\t\tVersion: 232\n\t}\n"
-         "\tAnimationStack: 2000, \"AnimStack::Take\", \"\" {\n\t\tProperties70:  {\n"
-         "\t\t\tP: \"LocalStart\", \"KTime\", \"Time\", \"\",0\n"
-         "\t\t\tP: \"LocalStop\", \"KTime\", \"Time\", \"\",46186158000\n\t\t}\n\t}\n"
-         "\tAnimationLayer: 3000, \"AnimLayer::Base\", \"\" {\n\t}\n"
-         "\tAnimationCurveNode: 4000, \"AnimCurveNode::T\", \"\" {\n\t\tProperties70:  {\n"
-         "\t\t\tP: \"d|X\", \"Number\", \"\", \"A\",0\n\t\t}\n\t}\n"
-         "\tAnimationCurve: 5000, \"AnimCurve::\", \"\" {\n\t\tDefault: 0\n\t\tKeyVer: 4009\n"
-         "\t\tKeyTime: *" + n + " {\n\t\t\ta: " + key_times + "\n\t\t}\n"
-         "\t\tKeyValueFloat: *" + n + " {\n\t\t\ta: " + key_values + "\n\t\t}\n\t}\n}\n"
-         "Connections:  {\n\tC: \"OO\",1000,0\n\tC: \"OO\",3000,2000\n\tC: \"OO\",4000,3000\n"
-         "\tC: \"OP\",4000,1000, \"Lcl Translation\"\n\tC: \"OP\",5000,4000, \"d|X\"\n}\n";
 }
 
 const std::string kRow = "0 1 2 3 4 5 6 7 8\n";
@@ -83,13 +61,13 @@ std::vector<Case> cases() {
       {"EmptyFile", "empty.bvh", "", {"the file is empty"}},
       {"UnknownFormat", "clip.xyz", "this is not a motion clip\n", {"unknown or unsupported file format"}},
       {"GarbageFbx", "garbage.fbx", std::string(200, 'x'), {"cannot read"}},
-      // assimp 5.2.5 segfaults on a curve without keys: refused before it sees the file.
-      {"FbxCurveWithoutKeys", "no_keys.fbx", fbx_one_curve("", "", 0), {"line 32", "an animation curve has no keys"}},
-      // A key at 1000 s in a 1 s take trips an assertion inside assimp (fuzz_read_any
-      // crash-3197eb88), which aborts the process unless src/io/read.cpp's handler
-      // turns it into an error.
-      {"FbxKeysOutsideTheTake", "late_key.fbx", fbx_one_curve("46186158000000", "1.5", 1),
-       {"cannot read", "assimp's internal check '!keys.empty()' failed"}},
+      // assimp 5.2.5 segfaults on a curve without keys, and a key at 1000 s in a
+      // 1 s take trips an assertion inside it (fuzz_read_any crash-3197eb88), which
+      // aborts: each ends the importer process, not this one.
+      {"FbxCurveWithoutKeys", "no_keys.fbx", test::fbx_one_curve("", "", 0),
+       {"assimp crashed importing this file (", "); refused"}},
+      {"FbxKeysOutsideTheTake", "late_key.fbx", test::fbx_one_curve("46186158000000", "1.5", 1),
+       {"assimp crashed importing this file (", "); refused"}},
   };
 }
 
@@ -115,47 +93,35 @@ TEST_P(Malformed, FailsWithExitCode1AndOneLineNamingFileAndProblem) {
 
 INSTANTIATE_TEST_SUITE_P(Bvh, Malformed, ::testing::ValuesIn(cases()), [](const auto& info) { return info.param.name; });
 
-TEST(MalformedPaths, AssimpAssertionIsAnErrorInsideTheLibraryToo) {
-  // In-process: the handler that replaces assimp's aborting one is exported by
-  // every executable linking rotinterp::io, this test's included.
+TEST(MalformedPaths, FilesAssimpCrashesOnAreRefusedAndTheCallerGoesOn) {
+  // In-process through the library: the crash is the importer's.
   test::TempDir dir;
-  const auto path = dir / "late_key.fbx";
-  test::write_text(path, fbx_one_curve("46186158000000", "1.5", 1));
-  auto clip = read_clip(path);
+  const auto late = dir / "late_key.fbx";
+  test::write_text(late, test::fbx_one_curve("46186158000000", "1.5", 1));
+  auto clip = read_clip(late);
   ASSERT_FALSE(clip);
-  EXPECT_NE(clip.error().find("assimp's internal check"), std::string::npos) << clip.error();
+  EXPECT_EQ(clip.error_kind(), ErrorKind::crashed);
+  EXPECT_NE(clip.error().find("assimp crashed importing this file"), std::string::npos) << clip.error();
   // The same file with its key inside the take reads (the test file is well formed).
-  test::write_text(path, fbx_one_curve("0", "1.5", 1));
-  auto fine = read_clip(path);
+  test::write_text(late, test::fbx_one_curve("0", "1.5", 1));
+  auto fine = read_clip(late);
   EXPECT_TRUE(fine) << fine.error();
-}
 
-TEST(MalformedPaths, AFileAssimpCrashesOnIsRefusedAndTheProcessGoesOn) {
-  // fuzz_read_any crash-79f25736: ../shared/data's assimp_huesitos.fbx with 6 bytes
-  // changed makes assimp 5.2.5 free memory twice in ~aiScene (glibc aborts). Built
-  // here from the shared file, which is not copied into the project.
   const auto source = std::filesystem::path(kData) / "fbx" / "assimp_huesitos.fbx";
-  ASSERT_TRUE(std::filesystem::exists(source)) << source;
-  std::ifstream in(source, std::ios::binary);
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  ASSERT_EQ(bytes.size(), 111564u);
-  const std::pair<std::size_t, unsigned char> patch[] = {{34883, 0x32}, {36139, 0x30}, {72784, 0x38},
-                                                         {99599, 0x20}, {99651, 0xe3}, {108177, 0x34}};
-  for (const auto& [at, value] : patch) bytes[at] = static_cast<char>(value);
-  test::TempDir dir;
+  const std::string bytes = test::double_free_fbx(source);
+  ASSERT_FALSE(bytes.empty()) << source;
   const auto path = dir / "double_free.fbx";
   test::write_text(path, bytes);
-
   const test::CliResult r = test::run_cli("info '" + path.string() + "'");
   EXPECT_EQ(r.exit_code, 1) << r.err;
-  // glibc aborts the child (signal 6); under AddressSanitizer its report ends the child with exit status 1.
+  // glibc aborts the importer (signal 6); under AddressSanitizer its report ends it with exit status 1.
   const std::string start = "rotinterp: " + path.string() + ": assimp crashed importing this file (";
   EXPECT_EQ(r.err.rfind(start, 0), 0u) << r.err;
   EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line: " << r.err;
   EXPECT_NE(r.err.find("); refused\n"), std::string::npos) << r.err;
-  auto clip = read_clip(path);  // in-process: this test goes on
+  clip = read_clip(path);
   ASSERT_FALSE(clip);
-  EXPECT_NE(clip.error().find("assimp crashed importing this file"), std::string::npos) << clip.error();
+  EXPECT_EQ(clip.error_kind(), ErrorKind::crashed);
   // The unchanged file reads.
   EXPECT_TRUE(read_clip(source));
 }

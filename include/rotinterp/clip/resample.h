@@ -27,7 +27,7 @@ namespace rotinterp {
 
 // The default rotation method of `rotinterp resample`, chosen by measurement on
 // real clips (README "rotinterp resample").
-inline constexpr const char* kDefaultResampleMethod = "squad";
+inline constexpr const char* kDefaultResampleMethod = "clamped";
 
 // A time range in seconds measured from the clip's first frame (0 = first frame).
 // end = +∞ means "to the clip's end".

@@ -9,8 +9,20 @@
 
 namespace rotinterp {
 
+// What kind of failure an error is, for callers that act on it (a batch skips a
+// file without an animation and goes on after a crash). Most errors are `other`.
+enum class ErrorKind {
+  other,
+  unreadable,    // a file that is missing, not a clip, malformed, or refused by its importer
+  no_animation,  // a readable file that holds no animation (a mesh)
+  crashed,       // the importer process died on the file (an assimp bug)
+  too_large,     // the importer's result passed ReadOptions::max_import_bytes
+  timed_out,     // the importer ran past ReadOptions::import_timeout_seconds
+};
+
 struct Error {
   std::string message;  // one line, no trailing newline; names the file/joint/frame where known
+  ErrorKind kind = ErrorKind::other;
 };
 
 template <class T>
@@ -31,6 +43,9 @@ class [[nodiscard]] Result {
   T* operator->() { return &value(); }
 
   const std::string& error() const { assert(!ok()); return std::get<Error>(v_).message; }
+  ErrorKind error_kind() const { assert(!ok()); return std::get<Error>(v_).kind; }
+  // The error itself (message and kind), to pass on as another Result's.
+  const Error& failure() const { assert(!ok()); return std::get<Error>(v_); }
 
  private:
   std::variant<T, Error> v_;
@@ -40,7 +55,7 @@ class [[nodiscard]] Result {
 struct Ok {};
 using Status = Result<Ok>;
 
-inline Error make_error(std::string message) { return Error{std::move(message)}; }
+inline Error make_error(std::string message, ErrorKind kind = ErrorKind::other) { return Error{std::move(message), kind}; }
 
 }  // namespace rotinterp
 

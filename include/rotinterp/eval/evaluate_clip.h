@@ -16,6 +16,7 @@
 #include "rotinterp/eval/metrics.h"
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,24 +35,34 @@ struct ClipEvalOptions {
 };
 
 // The reference side of one clip, computed once and shared (read-only) by the
-// methods: frame and sample times, the original at its frames, the reference at
-// every sample (joint-major) and its world poses, and the per-clip constants.
+// methods: frame times, the original at its frames, the reference at every frame
+// (joint-major) and its world poses, and the per-clip constants. Subframe samples
+// (subframe K > 0) are not stored: evaluate_method computes them block by block
+// from what is kept here, so memory is bounded by the clip, not by K.
 struct ClipReference {
   std::string clip_id;
   Skeleton skeleton;
   std::vector<double> frames;                 // frame times, seconds
-  std::vector<double> times;                  // sample times: frames and subframes
   std::size_t per_frame = 1;                  // samples per frame interval (subframe + 1)
+  std::size_t samples = 0;                    // (frames − 1)·per_frame + 1; sample k·per_frame is frame k
   double sample_dt = 0;                       // uniform sample spacing (s), 0 if the clip has no frame time
   std::vector<std::vector<Quat>> original;    // [joint][frame]: where keys are taken
-  std::vector<std::vector<Quat>> reference;   // [joint][sample]
-  std::vector<std::vector<Vec3>> translation; // [joint][sample]: used for both sides
-  std::vector<WorldPose> world;               // [sample]: forward kinematics of the reference
+  std::vector<std::vector<Quat>> reference;   // [joint][frame]
+  std::vector<std::vector<Vec3>> translation; // [joint][frame]: used for both sides
+  std::vector<WorldPose> world;               // [frame]: forward kinematics of the reference
   std::vector<Vec3> bone_axis;                // [joint], see bone_axes()
   std::vector<double> reference_acc_rms;      // [joint], rad/s²
   double height = 1;                          // clip units
   double shell_distance = 0;                  // clip units
+  // Where subframe samples come from (per_frame > 1): the analytic truth when
+  // given, else the slerp of `original` and the clip's translation tracks.
+  TruthFn truth;
+  std::vector<std::optional<TranslationTrack>> translation_tracks;  // [joint]
 };
+
+// Time of sample m < reference.samples: frame k = m / per_frame, then the fraction
+// (m mod per_frame) / per_frame of the interval to frame k + 1.
+double sample_time(const ClipReference& reference, std::size_t m);
 
 // Builds the reference of `clip` (validated first). Errors name the clip id.
 Result<ClipReference> prepare_reference(const Clip& clip, const std::string& clip_id,

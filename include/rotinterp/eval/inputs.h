@@ -12,17 +12,15 @@ namespace rotinterp {
 
 // Every file named in `paths`, and every regular file under a named directory
 // (recursively, following no symlinked directories, skipping hidden entries) whose
-// extension assimp can import. Paths as strings in the form they were found
+// extension read_clip knows (importable_extension). Paths as strings in the form they were found
 // ("data/bvh/a.bvh" under "data"), duplicates removed, sorted bytewise — the order
 // of errors.csv. Error for a path that does not exist.
 Result<std::vector<std::string>> discover_inputs(const std::vector<std::filesystem::path>& paths);
 
 // True when `path` was found inside a directory rather than named itself: such a
-// file is skipped quietly when it holds no animation (a mesh next to the clips).
+// file is skipped quietly when read_clip says it holds no animation
+// (ErrorKind::no_animation: a mesh next to the clips).
 bool found_in_directory(const std::string& path, const std::vector<std::filesystem::path>& named);
-
-// The number of animations assimp finds in `path`, or −1 when it cannot read it.
-int animation_count(const std::string& path);
 
 // Shard `index` of `count` (1 ≤ index ≤ count): files[i] for i ≡ index − 1 (mod count).
 // Deterministic and balanced; the shards of one list partition it.

@@ -3,8 +3,11 @@
 
 #include "rotinterp/core/result.h"
 #include "rotinterp/eval/summary.h"
+#include "rotinterp/io/atomic_file.h"
 
 #include <filesystem>
+#include <memory>
+#include <vector>
 
 namespace rotinterp {
 
@@ -17,5 +20,9 @@ constexpr const char* kWorstClipPlotName = "worst_clip_joints.png";
 // the worst clip at its largest keep_every, one colour per method. Not thread-safe
 // (PLplot has global state): call from one thread.
 Status write_plots(const Summary& summary, const std::filesystem::path& dir);
+// The same, drawn into finished but uncommitted outputs appended to `outputs`, for
+// a caller that commits them together with other files (commit_together).
+Status draw_plots(const Summary& summary, const std::filesystem::path& dir,
+                  std::vector<std::unique_ptr<AtomicOutput>>& outputs);
 
 }  // namespace rotinterp

@@ -79,13 +79,16 @@ struct BfSplineOptions {
   // span must lie in one open hemisphere of S³, and interpolating control points
   // overshoot the keys, so neighbours far apart (≳ 80°, and every 180° pair) have
   // no BF spline through them. Segments whose keys are further apart than this get
-  // evenly spaced in-between knots on their geodesic (slerp) first; if the
-  // control points still do not converge the step is halved (up to 3 times).
-  // Likewise an interval more than 3 times as long as a neighbouring one is graded
-  // with in-between knots (1e-6 s next to 1e4 s has no BF spline either: the
-  // control points would leave the hemisphere). The curve passes through every
-  // original key and stays C², bi-invariant and exact on constant angular
-  // velocity (the in-between knots lie on it). Default 60°.
+  // evenly spaced in-between knots on the c2 curve through the keys (C², h⁴, so
+  // wide steps keep the spline's accuracy; on the geodesic they were no better
+  // than slerp). An interval more than 3 times as long as a neighbouring one is
+  // graded with in-between knots too (1e-6 s next to 1e4 s has no BF spline
+  // either: the control points would leave the hemisphere); there, and wherever
+  // the c2 knots do not converge, the knots lie on the geodesics (slerp) and the
+  // step is halved (up to 3 times) until the control points converge. The curve
+  // passes through every original key and stays C², bi-invariant and exact on
+  // constant angular velocity (c2 and slerp are, and the knots lie on them).
+  // Default 60°.
   double max_key_step = kPi / 3.0;
   BfAverageOptions average;   // for every curve point
 };

@@ -4,7 +4,7 @@
 // increasing times, unit keys — see clip/clip.h) and evaluated at any time; times
 // outside [t₀, tₙ] (and NaN) are clamped. Every method passes through every key
 // (< 1e-9 rad), returns unit quaternions and never NaN. One method per header:
-// slerp.h, squad.h, expmap.h, nlerp.h, bf.h, c2.h.
+// slerp.h, squad.h, expmap.h, nlerp.h, bf.h, c2.h, clamped.h.
 #pragma once
 
 #include "rotinterp/clip/clip.h"
@@ -40,10 +40,12 @@ struct MethodInfo {
   std::string description;  // one line
   int continuity;           // 0, 1 or 2: C⁰, C¹, C² (in orientation, at keys)
   bool coordinate_invariant;  // left/right multiplying all keys by a fixed rotation maps the curve alike
+  bool exact_on_constant_velocity;  // keys of exp(ωt)·q₀ give exactly that curve, at any spacing
+  bool preserves_holds;             // a segment between two equal keys is exactly still
   std::function<Result<std::unique_ptr<Interpolator>>(const RotationTrack&)> make;
 };
 
-// All methods, in a stable order: slerp, squad, expmap, nlerp, bf, c2, expmap-c2.
+// All methods, in a stable order: slerp, squad, expmap, nlerp, bf, c2, expmap-c2, clamped.
 const std::vector<MethodInfo>& methods();
 // The method called `name`, or nullptr.
 const MethodInfo* find_method(std::string_view name);

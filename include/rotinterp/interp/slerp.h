@@ -55,6 +55,25 @@ inline Quat slerp(const Quat& a, const Quat& b, double t) {
   return r;
 }
 
+// The point at parameter t on the great arc of S³ from a to b AS STORED: no
+// hemisphere flip, so for a·b < 0 it takes the long way (a rotation past 180°).
+// Shoemake's squad blends its control points and its two inner curves with this
+// slerp: a shortest-arc blend flips hemisphere wherever the dot product of the
+// blended points changes sign, a jump of up to 180° within one sample. Same
+// accuracy as slerp (asin where |a·b| is large, acos elsewhere); for a = −b
+// (no arc defined) it returns a.
+inline Quat great_arc_slerp(const Quat& a, const Quat& b, double t) {
+  const double w = a.dot(b);  // cos φ, φ ∈ [0, π] the 4-D angle from a to b
+  const Eigen::Vector4d u = b.coeffs() - w * a.coeffs();
+  const double s = u.norm();  // sin φ
+  if (!(s > 0.0) || !std::isfinite(t)) return a;
+  const double phi = s <= std::abs(w) ? (w > 0.0 ? std::asin(s) : kPi - std::asin(s)) : std::acos(w);
+  const double tp = t * phi;
+  Quat r;
+  r.coeffs() = std::cos(tp) * a.coeffs() + (std::sin(tp) / s) * u;
+  return r;
+}
+
 // Builds the slerp interpolator (track validated; keys may be in either hemisphere).
 Result<std::unique_ptr<Interpolator>> make_slerp(const RotationTrack& track);
 

@@ -19,6 +19,12 @@
 // velocity, uniform or not, including the end segments (duplicating the end key
 // instead would bend them).
 //
+// Signs: the keys are aligned (qᵢ·qᵢ₊₁ ≥ 0) and each control point is computed
+// from its key, once, when the track is built; the three blends then never flip
+// hemisphere. (Shortest-arc blends flip where a·b, or the dot of the two inner
+// points, changes sign mid-segment — keys about 100° or more apart — and the
+// curve jumped by up to 180° within one sample.)
+//
 // Continuity C¹; coordinate-invariant. Extreme interval ratios (Δᵢ/Δᵢ₋₁ ≫ 1)
 // scale the incoming log and give large loops — finite, but large.
 #pragma once
@@ -32,7 +38,9 @@
 
 namespace rotinterp {
 
-// One squad segment: slerp(slerp(q0, q1, h), slerp(a, b, h), 2h(1−h)).
+// One squad segment: slerp(slerp(q0, q1, h), slerp(a, b, h), 2h(1−h)) with every
+// slerp along the great arc as stored (great_arc_slerp, Shoemake's and glm's
+// `mix`), never flipped to the short side.
 Quat squad(const Quat& q0, const Quat& q1, const Quat& a, const Quat& b, double h);
 
 Result<std::unique_ptr<Interpolator>> make_squad(const RotationTrack& track);

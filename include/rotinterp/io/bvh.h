@@ -61,9 +61,19 @@ struct BvhFile {
   bool has_position_channels(std::size_t joint) const;
 };
 
+// Limits of what parse_bvh() accepts, each far beyond real files (a mocap skeleton
+// nests fewer than 50 joints deep and names them in a few dozen bytes; mocap runs
+// at 24–1000 Hz). Outside them a file is refused with one line.
+constexpr std::size_t kMaxJointDepth = 1000;      // ROOT is level 1
+constexpr std::size_t kMaxNameBytes = 1024;       // a joint name (assimp's own limit too)
+constexpr double kMinBvhFrameTime = 1e-6;         // seconds: 1 MHz
+constexpr double kMaxBvhFrameTime = 3600.0;       // seconds: one frame an hour
+
 // Parses BVH text. `label` (the file name) starts every error message, which also
-// names the line, frame, joint and channel where it can. Fails fast, without
-// allocating for the declared frame count, when the data rows run out.
+// names the line, frame, joint and channel where it can, quoting at most a short
+// excerpt of the text. Fails fast, without allocating for the declared frame count,
+// when the data rows run out. Joints are parsed without recursion, so depth costs
+// no stack. A UTF-8 byte order mark is skipped; UTF-16 text is refused as such.
 Result<BvhFile> parse_bvh(std::string_view text, const std::string& label);
 
 // The skeleton of a parsed file: joints (names, parents, OFFSETs, channel layout,

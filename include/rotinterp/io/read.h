@@ -22,6 +22,7 @@
 #include "rotinterp/clip/clip.h"
 #include "rotinterp/core/result.h"
 
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -52,19 +53,36 @@ struct ReadOptions {
   // always comes from our own pass, which validates the whole file by itself, and
   // assimp's import costs more than the rest of a BVH read (README "Formats").
   bool cross_check_with_assimp = false;
-  // Read every file meant for assimp (import and clip building) in a forked child
-  // process that sends the result back through a pipe, and refuse the file if that
-  // child dies. assimp 5.2.5 has memory bugs that end the process on some malformed
-  // files (a double free in ~aiScene on a 6-byte corruption of a real FBX): with
-  // this on, such a file is one error in a batch instead of the end of it. The file
-  // is still imported once; the isolation costs a fork and a copy of the clip per
-  // non-BVH file (README "Cost"). Warnings reach on_warning when the child is done,
-  // in the same order.
-  bool isolate_assimp = true;
+  // Every assimp import (any file but a BVH read without the cross-check) runs in a
+  // separate importer process (rotinterp-import, see find_importer()), which sends
+  // its reading back; this process never calls assimp's importers. assimp 5.2.5
+  // aborts or corrupts memory on some malformed files (a failed internal assertion,
+  // a segfault on a curve without keys, a double free in ~aiScene): such a file is
+  // one error (ErrorKind::crashed) instead of the end of a batch. The importer dies
+  // with this process, and is killed when it runs longer than this (the file is
+  // refused, ErrorKind::timed_out)…
+  double import_timeout_seconds = 600.0;
+  // … or when its reply (the clip, 40 bytes a key) passes this many bytes
+  // (ErrorKind::too_large).
+  std::uint64_t max_import_bytes = std::uint64_t{4} << 30;
 };
 
 // Reads one animation of `path` into a validated Clip (tracks sign-continuous).
-// Errors are one line and name the file.
+// Errors are one line and name the file; their kind (core/result.h) says whether
+// the file was unreadable, held no animation, or made the importer crash, run too
+// long or answer too much. Skeletons nested deeper than kMaxJointDepth (io/bvh.h)
+// are refused in every format.
 Result<Clip> read_clip(const std::filesystem::path& path, const ReadOptions& options = {});
+
+// Whether read_clip() knows files with this extension ("fbx" or ".FBX"): BVH and
+// every format assimp imports.
+bool importable_extension(std::string extension);
+
+// The importer executable read_clip() starts for assimp imports, found in this
+// order: the environment variable ROTINTERP_IMPORTER (a path); next to the running
+// executable or to the library holding read_clip (same directory, or the
+// installed libexec directory relative to bin/ or lib/); the path it was built at.
+// An error when none is an executable file.
+Result<std::filesystem::path> find_importer();
 
 }  // namespace rotinterp

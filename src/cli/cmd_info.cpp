@@ -61,6 +61,7 @@ int run_info(const InfoArgs& args) {
     out["frame_time_s"] = clip.frame_time;
     out["frame_rate_hz"] = rate ? rate->hz() : 0.0;
     out["frame_rate"] = rate ? nlohmann::json(rate->to_string()) : nlohmann::json(nullptr);
+    out["file_frame_rate_hz"] = clip.file_rate_hz > 0 ? nlohmann::json(clip.file_rate_hz) : nlohmann::json(nullptr);
     out["start_s"] = clip.start_time();
     out["end_s"] = clip.end_time();
     out["duration_s"] = duration;
@@ -103,7 +104,8 @@ int run_info(const InfoArgs& args) {
                rate->den == 1 ? std::string() : fmt::format(" = {:.9g} Hz", rate->hz()),
                clip.frame_time_text.empty() ? fmt::format("{:.9g}", clip.frame_time) : clip.frame_time_text);
   else
-    fmt::print("frame rate:  none (keys not on a uniform grid)\n");
+    fmt::print("frame rate:  none (keys not on a uniform grid){}\n",
+               clip.file_rate_hz > 0 ? fmt::format("; the file's own: {:.9g} Hz (resample's default)", clip.file_rate_hz) : "");
   fmt::print("duration:    {:.6g} s (keys from {:.6g} s to {:.6g} s)\n", duration, clip.start_time(), clip.end_time());
   fmt::print("unit:        {}\n", has_unit ? fmt::format("{:.6g} m per unit", clip.unit_scale) : std::string("none (BVH has no unit)"));
   if (info->folded_helpers > 0) fmt::print("helpers:     {} $AssimpFbx$ helper nodes folded into their bones\n", info->folded_helpers);

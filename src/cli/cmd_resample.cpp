@@ -131,7 +131,7 @@ int run_resample(const ResampleArgs& a) {
     if (opt.keep_every)
       how = fmt::format("keys every {} frame{}", *opt.keep_every, *opt.keep_every == 1 ? "" : "s");
     else
-      how = fmt::format("{} → {} Hz", from, opt.fps ? opt.fps->to_string() : (in_rate ? in_rate->to_string() : "?"));
+      how = fmt::format("{} → {} Hz", from, opt.fps ? opt.fps->to_string() : (in_rate ? in_rate->to_string() : clip_rate(*out) ? clip_rate(*out)->to_string() : "?"));
     std::string methods = opt.method;
     if (!opt.method_for.empty()) methods += fmt::format(" (+{} per-joint override{})", opt.method_for.size(),
                                                         opt.method_for.size() == 1 ? "" : "s");

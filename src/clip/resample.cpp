@@ -149,7 +149,8 @@ std::optional<Rate> clip_rate(const Clip& clip) {
   return r.value();
 }
 
-Result<Clip> resample_clip(const Clip& in, const ResampleOptions& opt) {
+Result<Clip> resample_clip(const Clip& in, const ResampleOptions& options) {
+  ResampleOptions opt = options;
   if (Status s = in.validate(); !s) return make_error(s.error());
   if (opt.fps && opt.keep_every) return make_error("give either a frame rate or keep-every, not both");
   if (opt.keep_every && *opt.keep_every < 1) return make_error("keep-every must be at least 1");
@@ -175,6 +176,10 @@ Result<Clip> resample_clip(const Clip& in, const ResampleOptions& opt) {
   if (const std::optional<Rate> rate = clip_rate(in)) {
     grid = SourceGrid{start, in.frame_time, *rate, in.frame_count()};
     duration = grid->time(grid->frames - 1) - start;
+  }
+  // Keys on no grid: the file's own frame rate (FBX GlobalSettings) is the default.
+  if (!opt.fps && !grid && !opt.keep_every && in.file_rate_hz > 0.0) {
+    if (const Result<Rate> file_rate = rate_from_frame_time(1.0 / in.file_rate_hz)) opt.fps = file_rate.value();
   }
   if (!opt.fps && !grid)
     return make_error(opt.keep_every ? "the clip has no frame rate, so it has no frames to keep (give --fps instead)"
@@ -203,6 +208,7 @@ Result<Clip> resample_clip(const Clip& in, const ResampleOptions& opt) {
   out.unit_scale = in.unit_scale;
   out.source_format = in.source_format;
   out.source_meshes = in.source_meshes;
+  out.file_rate_hz = in.file_rate_hz;
   if (opt.keep_every) {
     const Rate& r = grid->rate;
     const double fa = a * static_cast<double>(r.num) / static_cast<double>(r.den);

@@ -30,6 +30,11 @@ constexpr double kGridTolerance = 1e-6;
 // = 5.7e-5°, below the 1e-4° round-trip promise).
 constexpr double kReducedLayoutTolerance = 1e-6;
 
+// HIERARCHY indentation stops growing past this depth (it is whitespace to every
+// reader): a chain thousands of joints deep would otherwise make the file
+// quadratic in its depth (20 000 joints: 400 MB of tabs).
+constexpr std::size_t kMaxIndent = 64;
+
 bool is_rotation(Channel c) { return c == Channel::Xrotation || c == Channel::Yrotation || c == Channel::Zrotation; }
 int axis_of(Channel c) { return static_cast<int>(c) % 3; }
 Channel rotation_channel(int axis) { return static_cast<Channel>(3 + axis); }
@@ -233,7 +238,7 @@ Status write_bvh(const Clip& clip, std::ostream& out, const WriteOptions& option
     const Step step = stack.back();
     stack.pop_back();
     const std::size_t j = step.joint;
-    const std::string in(step.depth, '\t');
+    const std::string in(std::min(step.depth, kMaxIndent), '\t');
     if (step.close) {
       for (std::size_t e : sites[j]) {
         text += in + "\tEnd Site\n" + in + "\t{\n";

@@ -170,6 +170,7 @@ void put(Writer& w, const Clip& clip) {
   w.f64(clip.unit_scale);
   w.str(clip.source_format);
   w.u64(clip.source_meshes);
+  w.f64(clip.file_rate_hz);
 }
 
 void get(Reader& r, Clip& clip) {
@@ -212,6 +213,7 @@ void get(Reader& r, Clip& clip) {
   clip.unit_scale = r.f64();
   clip.source_format = r.str();
   clip.source_meshes = r.size();
+  clip.file_rate_hz = r.f64();
 }
 
 }  // namespace

@@ -6,9 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include <cerrno>
 #include <cstdint>
-#include <fstream>
 #include <cstdio>
 #include <cstring>
 #include <optional>
@@ -64,15 +62,6 @@ std::vector<double> rest_world_inverse(const Skeleton& sk) {
       for (int r = 0; r < 4; ++r) out.push_back(inv(r, c));  // column-major
   }
   return out;
-}
-
-Status write_bytes(const std::filesystem::path& temp, const std::string& bytes) {
-  std::ofstream f(temp, std::ios::binary | std::ios::trunc);
-  if (!f) return make_error(std::string("cannot write: ") + std::strerror(errno));
-  f.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  f.flush();
-  if (!f) return make_error(std::string("write failed: ") + std::strerror(errno));
-  return Ok{};
 }
 
 std::uint64_t fnv1a(const std::string& bytes) {
@@ -193,24 +182,20 @@ Status write_gltf(const Clip& clip, const std::filesystem::path& path, bool bina
     });
   }
   // The buffer is named by its bytes: a .gltf never names a buffer another run
-  // wrote. Both are written to temporaries first, then the buffer is renamed into
-  // place before the .gltf, so a .gltf never names a missing or partial buffer.
+  // wrote. Both are written and synced to temporaries first, then committed
+  // together (buffer first), so a failure leaves the previous pair as it was.
   char hash[17];
   std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(fnv1a(doc->buffer)));
   const std::filesystem::path bin_path = std::filesystem::path(path).replace_filename(path.stem().string() + "-" + hash + ".bin");
   doc->json["buffers"][0]["uri"] = bin_path.filename().string();
+  const std::string json = doc->json.dump();
+  // Named temporaries, removed by the interrupt handler (as assimp-era .gltf writes were).
   AtomicOutput bin_out(bin_path), gltf_out(path);
-  if (Status s = write_bytes(bin_out.temp_path(), doc->buffer); !s)
-    return make_error(label + ": cannot write its buffer " + bin_path.filename().string() + ": " + s.error());
-  if (Status s = write_bytes(gltf_out.temp_path(), doc->json.dump()); !s) return make_error(label + ": " + s.error());
-  // A buffer of the same name holds the same bytes (its name is their hash): one
-  // that was there before stays if the .gltf fails; one this run added goes.
-  std::error_code ec;
-  const bool bin_existed = std::filesystem::exists(bin_path, ec);
-  if (Status s = bin_out.commit(); !s) return make_error(label + ": cannot write its buffer: " + s.error());
-  Status s = gltf_out.commit();
-  if (!s && !bin_existed) std::filesystem::remove(bin_path, ec);
-  return s;
+  if (Status s = bin_out.write(doc->buffer.data(), doc->buffer.size()); !s) return make_error(label + ": " + s.error());
+  if (Status s = gltf_out.write(json.data(), json.size()); !s) return make_error(label + ": " + s.error());
+  if (Status s = bin_out.finish(); !s) return make_error(label + ": " + s.error());
+  if (Status s = gltf_out.finish(); !s) return s;
+  return commit_together({&bin_out, &gltf_out});
 }
 
 }  // namespace rotinterp

@@ -482,6 +482,11 @@ Status fill_scene(const aiScene* scene, const aiAnimation* anim, double tps, Cli
   }
 
   clip.source_meshes = scene->mNumMeshes;
+  // FBX states its frame rate in GlobalSettings (assimp: metadata FrameRate, the
+  // TimeMode, and ticks per second = that rate); TimeMode 0 states none.
+  if (std::int32_t mode = 0; scene->mMetaData && scene->mMetaData->Get("FrameRate", mode) && mode != 0 &&
+                             anim->mTicksPerSecond > 0.0)
+    clip.file_rate_hz = tps;
 
   // Unit scale: FBX gives centimetres per unit.
   if (scene->mMetaData) {

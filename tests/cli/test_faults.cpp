@@ -52,18 +52,9 @@ std::string describe(const std::map<std::string, std::string>& files) {
 
 void write_text(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
 
-// A .gltf's buffer, named by the hash of its bytes (NAME-0123456789abcdef.bin): the
-// same name always holds the same bytes, so a run may rewrite it as it is.
-bool content_named(const std::string& n) {
-  return n.size() > 21 && n.compare(n.size() - 4, 4, ".bin") == 0 && n[n.size() - 21] == '-' &&
-         n.find_first_not_of("0123456789abcdef", n.size() - 20) == n.size() - 4;
-}
-
-// Every file in `dir` replaced by a marker naming it: a failed run must leave these
-// (content-named buffers keep their bytes, which are their name).
+// Every file in `dir` replaced by a marker naming it: a failed run must leave these.
 void mark_previous(const fs::path& dir) {
-  for (const std::string& n : names_in(dir))
-    if (!content_named(n)) write_text(dir / n, "previous " + n + "\n");
+  for (const std::string& n : names_in(dir)) write_text(dir / n, "previous " + n + "\n");
 }
 
 bool render_built() { return run_cli("render --help").exit_code == 0; }

@@ -90,3 +90,24 @@ TEST(InfoCli, NtscOutputsReadBackAsTheExactRational) {
 
 }  // namespace
 }  // namespace rotinterp
+
+namespace rotinterp {
+namespace {
+
+// Dude's keys lie on no grid, but the FBX states 30 fps (GlobalSettings): `info`
+// shows it and `resample` without --fps takes it as the output rate.
+TEST(InfoCli, FbxOwnFrameRateIsTheDefaultWhereKeysGiveNone) {
+  const std::string in = (kData / "fbx" / "digitalrune_Dude.fbx").string();
+  const test::CliResult info = test::run_cli("info '" + in + "'");
+  ASSERT_EQ(info.exit_code, 0) << info.err;
+  EXPECT_NE(info.out.find("frame rate:  none (keys not on a uniform grid); the file's own: 30 Hz"), std::string::npos) << info.out;
+  const test::CliResult json = test::run_cli("info --json '" + in + "'");
+  EXPECT_EQ(nlohmann::json::parse(json.out)["file_frame_rate_hz"], 30.0);
+  test::TempDir dir;
+  const test::CliResult r = test::run_cli("resample '" + in + "' -o '" + (dir / "out.bvh").string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("→ 39 frames (unknown rate → 30 Hz)"), std::string::npos) << r.out;
+}
+
+}  // namespace
+}  // namespace rotinterp

@@ -90,6 +90,10 @@ struct Clip {
   double unit_scale = 1.0;    // metres per clip unit where the source says so (FBX cm → 0.01)
   std::string source_format;  // "bvh", "fbx", … (informational)
   std::size_t source_meshes = 0;  // meshes (with their skins) in the source: no writer keeps them
+  // The file's own frame rate where it states one apart from its keys (FBX
+  // GlobalSettings TimeMode / CustomFrameRate), Hz; 0 if none. resample's default
+  // output rate when the keys lie on no grid (frame_time 0).
+  double file_rate_hz = 0.0;
 
   // Invariants: skeleton valid; one rotation and one translation entry per joint;
   // every track valid.

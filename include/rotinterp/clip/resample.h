@@ -62,7 +62,8 @@ struct ResampleOptions {
 // Resamples `clip` (validated first). The result is a valid clip on a uniform grid:
 // every joint has one rotation key per output frame, every joint with a
 // translation track one translation key per frame, sign-continuous quaternions;
-// frame_time = 1/HZ for --fps, else the source's frame time. Errors: both fps and
+// frame_time = 1/HZ for --fps, else the source's frame time, else (keys on no grid)
+// the file's own rate (Clip::file_rate_hz, FBX) as if given as fps. Errors: both fps and
 // keep_every given, keep_every < 1, no source frame rate where one is needed,
 // unknown method (listing the valid names) or joint, a range outside the clip.
 Result<Clip> resample_clip(const Clip& clip, const ResampleOptions& options);

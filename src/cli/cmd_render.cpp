@@ -2,6 +2,7 @@
 // offscreen (render/comparison.h does the work). Built only with the renderer.
 #if ROTINTERP_HAVE_RENDER
 #include "common.h"
+#include "rotinterp/eval/metrics.h"
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/io/atomic_file.h"
 #include "rotinterp/io/read.h"
@@ -15,6 +16,27 @@
 #include <vector>
 
 namespace rotinterp::cli {
+
+namespace {
+
+// Whether every joint lies at one point (within 1e-6 units) at rest and in the
+// first frame: such a skeleton draws as nothing but the grid (a reader that lost
+// the offsets, e.g. to helper nodes).
+bool degenerate(const Clip& clip) {
+  if (skeleton_height(rest_pose(clip.skeleton)) > 1e-6) return false;
+  std::vector<Quat> rotation;
+  std::vector<Vec3> translation;
+  for (std::size_t j = 0; j < clip.skeleton.joints.size(); ++j) {
+    rotation.push_back(clip.rotations[j].keys.front());
+    translation.push_back(clip.translations[j] ? clip.translations[j]->keys.front() : clip.skeleton.joints[j].offset);
+  }
+  WorldPose first;
+  forward_kinematics(clip.skeleton, rotation, translation, first);
+  return skeleton_height(first) <= 1e-6;
+}
+
+}  // namespace
+
 
 namespace {
 
@@ -71,6 +93,9 @@ int run_render(const RenderArgs& a) {
   protect_input(a.input);  // no frame written may replace it
   auto clip = read_clip(a.input);
   if (!clip) return fail(clip.error());
+  if (degenerate(*clip))
+    fmt::print(stderr, "rotinterp: warning: {}: all {} joints lie within 1e-6 units of one point; the frames will show "
+               "only the grid\n", a.input, clip->skeleton.joints.size());
   options.progress = make_progress("render", a.quiet);
   auto result = render::render_comparison(*clip, a.out_dir, options);
   end_progress(a.quiet);

@@ -120,11 +120,18 @@ void remove_stale_temporaries(const fs::path& dir) {
 std::atomic<unsigned> g_counter{0};
 
 // Creates a new named temporary next to `target` (0666 & ~umask, like any new file).
-int create_named(const fs::path& target, fs::path& path, int& err) {
+// The name is registered for the interrupt handler before the file exists, so a
+// signal between the two cannot leave it behind (`slot`: the registration).
+int create_named(const fs::path& target, fs::path& path, int& err, int& slot) {
   for (int attempt = 0; attempt < 100; ++attempt) {
     path = temp_name(target, g_counter++);
+    slot = register_live(path.string());
     const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     if (fd >= 0) return fd;
+    const int e = errno;
+    unregister_live(slot);
+    slot = -1;
+    errno = e;
     if (errno != EEXIST) break;
   }
   err = errno;
@@ -187,8 +194,7 @@ AtomicOutput::AtomicOutput(fs::path target, TempKind kind) : target_(std::move(t
     if (fd_ < 0 && errno != EOPNOTSUPP && errno != EISDIR && errno != EINVAL) err = errno;
   }
   if (fd_ < 0 && err == 0) {
-    fd_ = create_named(target_, temp_, err);
-    if (fd_ >= 0) slot_ = register_live(temp_.string());
+    fd_ = create_named(target_, temp_, err, slot_);
   }
   if (fd_ < 0) error_ = target_.string() + ": cannot write: " + reason(err);
 }

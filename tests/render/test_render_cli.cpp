@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 
 #include <unistd.h>
 
@@ -41,6 +42,24 @@ Args methods(std::string m) { Args a; a.methods = std::move(m); return a; }
 std::string render_args(const fs::path& dir, const Args& a = {}) {
   return "render " + kClip + " -o " + dir.string() + " --methods " + a.methods + " --keep-every 12 --frames " +
          a.frames + " --size " + a.size + " -q " + a.extra;
+}
+
+TEST(RenderCli, ASkeletonWhoseJointsAllLieAtOnePointIsWarnedAbout) {
+  // Offsets lost (a reader that dropped the nodes holding them) look like this.
+  const fs::path dir = fresh_dir("degenerate");
+  fs::create_directories(dir);
+  const fs::path clip = dir / "point.bvh";
+  std::ofstream(clip) << "HIERARCHY\nROOT A\n{\n  OFFSET 0 0 0\n  CHANNELS 3 Zrotation Xrotation Yrotation\n"
+                         "  JOINT B\n  {\n    OFFSET 0 0 0\n    CHANNELS 3 Zrotation Xrotation Yrotation\n"
+                         "    End Site\n    {\n      OFFSET 0 0 0\n    }\n  }\n}\nMOTION\nFrames: 3\n"
+                         "Frame Time: 0.1\n0 0 0 0 0 0\n10 0 0 5 0 0\n20 0 0 10 0 0\n";
+  const auto r = run_cli("render " + clip.string() + " -o " + (dir / "out").string() +
+                         " --methods slerp --keep-every 2 --frames 1 --size 128x96 -q");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("warning: " + clip.string() + ": all 2 joints lie within 1e-6 units of one point"),
+            std::string::npos)
+      << r.err;
+  fs::remove_all(dir);
 }
 
 TEST(RenderCli, RealClipGivesFramesOfTheRightSizeWithPanelsThatDifferOnlyBetweenMethods) {

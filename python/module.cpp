@@ -7,6 +7,7 @@
 // calls release the GIL; errors raise ValueError (bad input) or OSError (files)
 // with the library's one-line message.
 #include "rotinterp/clip/resample.h"
+#include "rotinterp/eval/error_row.h"
 #include "rotinterp/eval/evaluate_clip.h"
 #include "rotinterp/eval/metrics.h"
 #include "rotinterp/interp/interpolator.h"
@@ -479,15 +480,14 @@ py::dict evaluate(const py::object& inputs, const std::optional<std::vector<std:
     std::vector<ErrorRow> part = checked(std::move(r));
     rows.insert(rows.end(), std::make_move_iterator(part.begin()), std::make_move_iterator(part.end()));
   }
-  // Columns, named as in errors.csv.
+  // Columns, named and ordered as in errors.csv (error_row.h). End Site rows have no
+  // rotation or smoothness values: NaN there, as pandas reads the CSV's empty cells.
   const std::size_t n = rows.size();
   py::list clip, method, joint, kind;
   py::array_t<long long> keep(n), frames(n), samples(n);
-  std::map<std::string, py::array_t<double>> num;
-  const char* const numeric[] = {"mean_deg", "rms_deg",   "p95_deg",    "max_deg",     "swing_rms_deg", "twist_rms_deg",
-                                 "pos_rms",  "pos_max",   "pos_rms_pct", "pos_max_pct", "shell_rms",     "shell_max",
-                                 "acc_rms_dps2", "acc_rms_ref_dps2", "vel_jump_max_dps", "acc_jump_max_dps2", "height"};
-  for (const char* c : numeric) num.emplace(c, py::array_t<double>(n));
+  const std::vector<ErrorValueColumn>& measured = error_value_columns();
+  std::vector<py::array_t<double>> values;
+  for (std::size_t c = 0; c < measured.size(); ++c) values.emplace_back(n);
   for (std::size_t i = 0; i < n; ++i) {
     const ErrorRow& r = rows[i];
     clip.append(r.clip);
@@ -497,29 +497,18 @@ py::dict evaluate(const py::object& inputs, const std::optional<std::vector<std:
     keep.mutable_at(i) = r.keep_every;
     frames.mutable_at(i) = static_cast<long long>(r.frames);
     samples.mutable_at(i) = static_cast<long long>(r.samples);
-    // End Site rows have no rotation or smoothness values: NaN, as pandas reads the empty CSV cells.
-    const double na = std::nan("");
-    const double values[] = {r.end_site ? na : r.mean_deg,     r.end_site ? na : r.rms_deg,
-                             r.end_site ? na : r.p95_deg,      r.end_site ? na : r.max_deg,
-                             r.end_site ? na : r.swing_rms_deg, r.end_site ? na : r.twist_rms_deg,
-                             r.pos_rms,                        r.pos_max,
-                             r.pos_rms_pct,                    r.pos_max_pct,
-                             r.end_site ? na : r.shell_rms,    r.end_site ? na : r.shell_max,
-                             r.end_site ? na : r.acc_rms,      r.end_site ? na : r.acc_rms_ref,
-                             r.end_site ? na : r.vel_jump_max, r.end_site ? na : r.acc_jump_max,
-                             r.height};
-    for (std::size_t c = 0; c < std::size(numeric); ++c) num.at(numeric[c]).mutable_at(i) = values[c];
+    for (std::size_t c = 0; c < measured.size(); ++c)
+      values[c].mutable_at(i) = r.end_site && measured[c].joint_only ? std::nan("") : r.*measured[c].field;
   }
   py::module_ np = py::module_::import("numpy");
+  std::map<std::string, py::object> by_name = {
+      {"clip", np.attr("array")(clip, "str")},     {"method", np.attr("array")(method, "str")},
+      {"keep_every", keep},                         {"joint", np.attr("array")(joint, "str")},
+      {"frames", frames},                           {"samples", samples},
+      {"kind", np.attr("array")(kind, "str")}};
+  for (std::size_t c = 0; c < measured.size(); ++c) by_name.emplace(measured[c].name, values[c]);
   py::dict out;
-  out["clip"] = np.attr("array")(clip, "str");
-  out["method"] = np.attr("array")(method, "str");
-  out["keep_every"] = keep;
-  out["joint"] = np.attr("array")(joint, "str");
-  out["frames"] = frames;
-  for (const char* c : numeric) out[c] = num.at(c);
-  out["samples"] = samples;
-  out["kind"] = np.attr("array")(kind, "str");
+  for (const std::string& name : checked(split_csv_line(error_csv_header()))) out[py::str(name)] = by_name.at(name);
   return out;
 }
 

@@ -31,7 +31,7 @@ std::string layout_text(const Joint& j) {
 int run_info(const InfoArgs& args) {
   ReadOptions options;
   options.animation = args.anim;
-  options.on_warning = [](const std::string& w) { std::fprintf(stderr, "rotinterp: warning: %s\n", w.c_str()); };
+  options.on_warning = warn;
   Result<ClipFileInfo> info = inspect_clip(args.path, options);
   if (!info) return fail(info.error());
   const Clip& clip = info->clip;

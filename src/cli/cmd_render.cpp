@@ -35,11 +35,6 @@ bool degenerate(const Clip& clip) {
   return skeleton_height(first) <= 1e-6;
 }
 
-}  // namespace
-
-
-namespace {
-
 struct RenderArgs {
   std::string input;
   std::string out_dir;
@@ -94,8 +89,8 @@ int run_render(const RenderArgs& a) {
   auto clip = read_clip(a.input);
   if (!clip) return fail(clip.error());
   if (degenerate(*clip))
-    fmt::print(stderr, "rotinterp: warning: {}: all {} joints lie within 1e-6 units of one point; the frames will show "
-               "only the grid\n", a.input, clip->skeleton.joints.size());
+    warn(fmt::format("{}: all {} joints lie within 1e-6 units of one point; the frames will show only the grid",
+                     a.input, clip->skeleton.joints.size()));
   options.progress = make_progress("render", a.quiet);
   auto result = render::render_comparison(*clip, a.out_dir, options);
   end_progress(a.quiet);

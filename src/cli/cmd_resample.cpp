@@ -117,7 +117,7 @@ int run_resample(const ResampleArgs& a) {
   WriteOptions write_options;
   write_options.bvh_order = a.bvh_order;
   write_options.fbx_ascii = a.fbx_ascii;
-  write_options.on_warning = [](const std::string& w) { std::fprintf(stderr, "rotinterp: warning: %s\n", w.c_str()); };
+  write_options.on_warning = warn;
   stage("writing " + a.output);
   const Status written = write_clip(*out, a.output, write_options);
   end_progress(a.quiet);

@@ -25,6 +25,8 @@ int fail_usage(std::string_view message) {
   return kExitUsage;
 }
 
+void warn(const std::string& message) { std::fprintf(stderr, "rotinterp: warning: %s\n", message.c_str()); }
+
 namespace {
 
 // `text` as a finite double when all of it is one (strtod's forms: 1e9, -30, 0x1p4).

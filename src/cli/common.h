@@ -26,6 +26,9 @@ constexpr long long kMaxKeepEvery = 1000000000;
 int fail(std::string_view message);
 // The same for a bad option value: returns kExitUsage.
 int fail_usage(std::string_view message);
+// Prints "rotinterp: warning: <message>" on stderr (the reader's and writer's
+// on_warning, and the commands' own warnings).
+void warn(const std::string& message);
 
 // A frame-rate option (--fps): parse_rate's forms, plus plain numbers it does not
 // take (exponent notation: 1e3); a number out of range is called that, with the

@@ -27,6 +27,22 @@ bool is_joint_only(int c) {
   return (c >= kMeanDeg && c <= kTwistRmsDeg) || (c >= kShellRms && c <= kAccJumpMax);
 }
 
+// The measured columns and the ErrorRow fields they hold.
+struct Measured {
+  Col col;
+  double ErrorRow::*field;
+};
+constexpr Measured kMeasured[] = {
+    {kMeanDeg, &ErrorRow::mean_deg},         {kRmsDeg, &ErrorRow::rms_deg},
+    {kP95Deg, &ErrorRow::p95_deg},           {kMaxDeg, &ErrorRow::max_deg},
+    {kSwingRmsDeg, &ErrorRow::swing_rms_deg}, {kTwistRmsDeg, &ErrorRow::twist_rms_deg},
+    {kPosRms, &ErrorRow::pos_rms},           {kPosMax, &ErrorRow::pos_max},
+    {kPosRmsPct, &ErrorRow::pos_rms_pct},    {kPosMaxPct, &ErrorRow::pos_max_pct},
+    {kShellRms, &ErrorRow::shell_rms},       {kShellMax, &ErrorRow::shell_max},
+    {kAccRms, &ErrorRow::acc_rms},           {kAccRmsRef, &ErrorRow::acc_rms_ref},
+    {kVelJumpMax, &ErrorRow::vel_jump_max},  {kAccJumpMax, &ErrorRow::acc_jump_max},
+    {kHeight, &ErrorRow::height}};
+
 std::string quote(std::string_view s) {
   if (s.find_first_of(",\"\r\n") == std::string_view::npos) return std::string(s);
   std::string out = "\"";
@@ -52,6 +68,15 @@ Result<double> to_double(const std::string& s, const char* column) {
 
 }  // namespace
 
+const std::vector<ErrorValueColumn>& error_value_columns() {
+  static const std::vector<ErrorValueColumn> columns = [] {
+    std::vector<ErrorValueColumn> v;
+    for (const Measured& m : kMeasured) v.push_back({kColumnNames[m.col], m.field, is_joint_only(m.col)});
+    return v;
+  }();
+  return columns;
+}
+
 std::string error_csv_header() {
   std::string h;
   for (int c = 0; c < kColumnCount; ++c) h += (c ? "," : "") + std::string(kColumnNames[c]);
@@ -59,10 +84,8 @@ std::string error_csv_header() {
 }
 
 std::string format_error_row(const ErrorRow& r) {
-  const double values[kColumnCount] = {0, 0, 0, 0, 0, r.mean_deg, r.rms_deg, r.p95_deg, r.max_deg,
-                                       r.swing_rms_deg, r.twist_rms_deg, r.pos_rms, r.pos_max, r.pos_rms_pct,
-                                       r.pos_max_pct, r.shell_rms, r.shell_max, r.acc_rms, r.acc_rms_ref,
-                                       r.vel_jump_max, r.acc_jump_max, 0, r.height, 0};
+  double values[kColumnCount] = {};
+  for (const Measured& m : kMeasured) values[m.col] = r.*m.field;
   std::string line = quote(r.clip) + "," + quote(r.method) + "," + std::to_string(r.keep_every) + "," +
                      quote(r.joint) + "," + std::to_string(r.frames);
   for (int c = kMeanDeg; c < kSamples; ++c) {
@@ -130,18 +153,11 @@ Result<ErrorRow> ErrorRowParser::parse(std::string_view line) const {
   const std::string& kind = field(kKind);
   if (kind != "joint" && kind != "end_site") return make_error("kind is '" + kind + "', not joint or end_site");
   r.end_site = kind == "end_site";
-  double* targets[kColumnCount] = {};
-  targets[kMeanDeg] = &r.mean_deg, targets[kRmsDeg] = &r.rms_deg, targets[kP95Deg] = &r.p95_deg;
-  targets[kMaxDeg] = &r.max_deg, targets[kSwingRmsDeg] = &r.swing_rms_deg, targets[kTwistRmsDeg] = &r.twist_rms_deg;
-  targets[kPosRms] = &r.pos_rms, targets[kPosMax] = &r.pos_max, targets[kPosRmsPct] = &r.pos_rms_pct;
-  targets[kPosMaxPct] = &r.pos_max_pct, targets[kShellRms] = &r.shell_rms, targets[kShellMax] = &r.shell_max;
-  targets[kAccRms] = &r.acc_rms, targets[kAccRmsRef] = &r.acc_rms_ref, targets[kVelJumpMax] = &r.vel_jump_max;
-  targets[kAccJumpMax] = &r.acc_jump_max, targets[kHeight] = &r.height;
-  for (int c = 0; c < kColumnCount; ++c) {
-    if (!targets[c] || (r.end_site && is_joint_only(c))) continue;
-    auto v = to_double(field(c), kColumnNames[c]);
+  for (const Measured& m : kMeasured) {
+    if (r.end_site && is_joint_only(m.col)) continue;
+    auto v = to_double(field(m.col), kColumnNames[m.col]);
     if (!v) return make_error(v.error());
-    *targets[c] = *v;
+    r.*m.field = *v;
   }
   for (int c : {kKeepEvery, kFrames, kSamples}) {
     auto v = to_double(field(c), kColumnNames[c]);

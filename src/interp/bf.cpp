@@ -440,6 +440,26 @@ class BfInterpolator final : public detail::SegmentInterpolator<BfInterpolator> 
 // exact on constant angular velocity, so the spline stays so too.
 constexpr double kGrading = 2.0;
 
+// The knot that grades interval i of `t` (a piece kGrading times the short
+// neighbour split off next to it), or NaN when the interval is no more than
+// 1.5·kGrading times either neighbour. Split only beyond 1.5·kGrading so the pieces
+// (kGrading·short and a rest ≥ 0.5·kGrading·short) are not split again by
+// round-off. The new knot's time is measured from the end next to the short
+// neighbour: as a fraction of the interval it would round to that end once
+// interval/short passes 2⁵³ (keys at −1, −1e-20 and 0: the fuzzer's crash-860848d6).
+double grading_knot(const std::vector<double>& t, std::size_t i) {
+  const double len = t[i + 1] - t[i];
+  const double left = i > 0 ? t[i] - t[i - 1] : len;
+  const double right = i + 2 < t.size() ? t[i + 2] - t[i + 1] : len;
+  double t_new = NAN;
+  if (len > 1.5 * kGrading * left) {
+    t_new = t[i] + kGrading * left;
+  } else if (len > 1.5 * kGrading * right) {
+    t_new = t[i + 1] - kGrading * right;
+  }
+  return t_new > t[i] && t_new < t[i + 1] ? t_new : NAN;
+}
+
 detail::Keys refine(const detail::Keys& k, double max_step, const Interpolator& along) {
   if (k.size() < 2) return k;
   detail::Keys out;
@@ -464,21 +484,8 @@ detail::Keys refine(const detail::Keys& k, double max_step, const Interpolator& 
     for (std::size_t i = 0; i + 1 < out.size(); ++i) {
       g.t.push_back(out.t[i]);
       g.q.push_back(out.q[i]);
-      const double len = out.t[i + 1] - out.t[i];
-      const double left = i > 0 ? out.t[i] - out.t[i - 1] : len;
-      const double right = i + 2 < out.size() ? out.t[i + 2] - out.t[i + 1] : len;
-      // Split only beyond 1.5·kGrading so the pieces (kGrading·short and a rest
-      // ≥ 0.5·kGrading·short) are not split again by round-off. The new knot's
-      // time is measured from the end next to the short neighbour: as a fraction
-      // of `len` it would round to that end once len/short passes 2⁵³ (keys at
-      // −1, −1e-20 and 0: the fuzzer's crash-860848d6).
-      double t_new = NAN;
-      if (len > 1.5 * kGrading * left) {
-        t_new = out.t[i] + kGrading * left;
-      } else if (len > 1.5 * kGrading * right) {
-        t_new = out.t[i + 1] - kGrading * right;
-      }
-      if (t_new > out.t[i] && t_new < out.t[i + 1]) {
+      const double t_new = grading_knot(out.t, i);
+      if (!std::isnan(t_new)) {
         g.t.push_back(t_new);
         g.q.push_back(detail::align_pair(out.q[i], along.evaluate(t_new)));
         changed = true;
@@ -491,14 +498,10 @@ detail::Keys refine(const detail::Keys& k, double max_step, const Interpolator& 
   return out;
 }
 
-// Whether an interval is more than 1.5·kGrading times a neighbouring one.
+// Whether some interval is graded (grading_knot).
 bool needs_grading(const detail::Keys& k) {
-  for (std::size_t i = 0; i + 1 < k.size(); ++i) {
-    const double len = k.t[i + 1] - k.t[i];
-    if ((i > 0 && len > 1.5 * kGrading * (k.t[i] - k.t[i - 1])) ||
-        (i + 2 < k.size() && len > 1.5 * kGrading * (k.t[i + 2] - k.t[i + 1])))
-      return true;
-  }
+  for (std::size_t i = 0; i + 1 < k.size(); ++i)
+    if (!std::isnan(grading_knot(k.t, i))) return true;
   return false;
 }
 

@@ -71,8 +71,8 @@ bool injected_fault() {
 
 std::string reason(int err) { return std::strerror(err); }
 
-// Our named temporaries: ".rotinterp.PID.N.tmp" + the target's extension (some
-// writers derive names from it: assimp's .gltf buffer). Short, so a target name of
+// Our named temporaries: ".rotinterp.PID.N.tmp" + the target's extension (the
+// writers that open a path pick the format by it: PLplot, assimp). Short, so a target name of
 // 255 bytes still works, and the PID tells whose it is.
 constexpr const char* kTempPrefix = ".rotinterp.";
 constexpr std::size_t kMaxKeptExtension = 8;
@@ -119,24 +119,24 @@ void remove_stale_temporaries(const fs::path& dir) {
 
 std::atomic<unsigned> g_counter{0};
 
-// Creates a new named temporary next to `target` (0666 & ~umask, like any new file).
-// The name is registered for the interrupt handler before the file exists, so a
-// signal between the two cannot leave it behind (`slot`: the registration).
-int create_named(const fs::path& target, fs::path& path, int& err, int& slot) {
+// Gives a file a new temporary name next to `target`: `create(name)` makes it (a
+// new file, or a link to an unnamed one) and returns false with errno on failure;
+// a name taken already (EEXIST) is skipped. The name is registered for the
+// interrupt handler before the file exists, so a signal between the two cannot
+// leave it behind. Returns the name (with its registration in `slot`), or an empty
+// path with the reason in `err`.
+template <class Create>
+fs::path claim_temp_name(const fs::path& target, int& slot, int& err, Create create) {
   for (int attempt = 0; attempt < 100; ++attempt) {
-    path = temp_name(target, g_counter++);
-    slot = register_live(path.string());
-    const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-    if (fd >= 0) return fd;
-    const int e = errno;
+    fs::path name = temp_name(target, g_counter++);
+    slot = register_live(name.string());
+    if (create(name)) return name;
+    err = errno;
     unregister_live(slot);
     slot = -1;
-    errno = e;
-    if (errno != EEXIST) break;
+    if (err != EEXIST) break;
   }
-  err = errno;
-  path.clear();
-  return -1;
+  return {};
 }
 
 // Inputs registered with protect_input: (device, inode, path as given).
@@ -193,8 +193,11 @@ AtomicOutput::AtomicOutput(fs::path target, TempKind kind) : target_(std::move(t
     // Filesystems without O_TMPFILE say EOPNOTSUPP (or EISDIR/EINVAL on old kernels).
     if (fd_ < 0 && errno != EOPNOTSUPP && errno != EISDIR && errno != EINVAL) err = errno;
   }
-  if (fd_ < 0 && err == 0) {
-    fd_ = create_named(target_, temp_, err, slot_);
+  if (fd_ < 0 && err == 0) {  // new files get 0666 & ~umask, like any new file
+    temp_ = claim_temp_name(target_, slot_, err, [&](const fs::path& name) {
+      fd_ = ::open(name.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+      return fd_ >= 0;
+    });
   }
   if (fd_ < 0) error_ = target_.string() + ": cannot write: " + reason(err);
 }
@@ -249,21 +252,12 @@ Status AtomicOutput::commit() {
   if (temp_.empty()) {
     // Unnamed: give it a short-lived name (a plain link cannot replace a file), then
     // rename that over the target.
+    char proc[64];
+    std::snprintf(proc, sizeof proc, "/proc/self/fd/%d", fd_);
     int err = 0;
-    for (int attempt = 0; attempt < 100 && temp_.empty(); ++attempt) {
-      fs::path name = temp_name(target_, g_counter++);
-      char proc[64];
-      std::snprintf(proc, sizeof proc, "/proc/self/fd/%d", fd_);
-      slot_ = register_live(name.string());
-      if (::linkat(AT_FDCWD, proc, AT_FDCWD, name.c_str(), AT_SYMLINK_FOLLOW) == 0) {
-        temp_ = std::move(name);
-        break;
-      }
-      err = errno;
-      unregister_live(slot_);
-      slot_ = -1;
-      if (err != EEXIST) break;
-    }
+    temp_ = claim_temp_name(target_, slot_, err, [&](const fs::path& name) {
+      return ::linkat(AT_FDCWD, proc, AT_FDCWD, name.c_str(), AT_SYMLINK_FOLLOW) == 0;
+    });
     if (temp_.empty()) return make_error(label + ": cannot write: " + reason(err));
   }
   if (::rename(temp_.c_str(), target_.c_str()) != 0) return make_error(label + ": cannot write: " + reason(errno));
@@ -295,13 +289,6 @@ Status commit_together(const std::vector<AtomicOutput*>& outputs) {
     }
   pthread_sigmask(SIG_SETMASK, &old, nullptr);
   return result;
-}
-
-ScopedTempFile::ScopedTempFile(fs::path path) : path_(std::move(path)), slot_(register_live(path_.string())) {}
-
-ScopedTempFile::~ScopedTempFile() {
-  ::unlink(path_.c_str());
-  unregister_live(slot_);
 }
 
 namespace {

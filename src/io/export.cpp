@@ -9,12 +9,8 @@
 #include <assimp/scene.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstring>
-#include <fstream>
 #include <memory>
-#include <sstream>
 
 namespace rotinterp {
 
@@ -73,7 +69,7 @@ std::unique_ptr<aiScene> build_scene(const Clip& clip) {
   auto* anim = new aiAnimation();
   anim->mName = aiString(clip.name.empty() ? std::string("clip") : clip.name);
   anim->mTicksPerSecond = tps;
-  // Whole ticks: the FBX exporter truncates the take's end to an integer tick count.
+  // Whole ticks: assimp's exporters truncate the take's end to an integer tick count.
   anim->mDuration = std::ceil(clip.end_time() * tps);
   anim->mNumChannels = static_cast<unsigned>(n);
   anim->mChannels = new aiNodeAnim*[n];
@@ -112,8 +108,6 @@ std::unique_ptr<aiScene> build_scene(const Clip& clip) {
 }  // namespace
 
 std::optional<std::string> assimp_export_format(const std::string& ext) {
-  if (ext == ".gltf") return std::string("gltf2");
-  if (ext == ".glb") return std::string("glb2");
   if (ext == ".dae") return std::string("collada");
   return std::nullopt;
 }
@@ -122,11 +116,8 @@ Status export_with_assimp(const Clip& clip, const std::filesystem::path& path, c
   const std::string label = path.string();
   if (Status s = clip.validate(); !s) return make_error(label + ": cannot write an invalid clip: " + s.error());
   const std::unique_ptr<aiScene> scene = build_scene(clip);
-  AtomicOutput out(path);
+  AtomicOutput out(path);  // named: assimp's exporter opens a path
   if (Status s = out.status(); !s) return s;
-  // A .gltf comes with a .bin buffer that assimp names after the temporary file;
-  // it is removed on every path out of here (and on SIGINT/SIGTERM) unless renamed.
-  const ScopedTempFile temp_bin(std::filesystem::path(out.temp_path()).replace_extension(".bin"));
   Assimp::Exporter exporter;
   auto* io = new CheckedIOSystem(label);  // owned by the exporter: every write checked
   exporter.SetIOHandler(io);
@@ -136,39 +127,8 @@ Status export_with_assimp(const Clip& clip, const std::filesystem::path& path, c
   } catch (const std::exception& e) {
     return make_error(label + ": assimp could not export: " + one_line(e.what()));
   }
-  // Give the buffer the target's name (atomically too), point the .gltf at it, then commit.
-  std::error_code ec;
-  const bool has_bin = std::filesystem::exists(temp_bin.path(), ec);
-  AtomicOutput bin_out(std::filesystem::path(path).replace_extension(".bin"));
-  if (has_bin) {
-    std::filesystem::rename(temp_bin.path(), bin_out.temp_path(), ec);
-    if (ec) return make_error(label + ": cannot write its buffer file: " + ec.message());
-  }
   if (const std::string e = io->error(); !e.empty()) return make_error(e);  // what made the export fail, if it did
   if (ret != aiReturn_SUCCESS) return make_error(label + ": assimp could not export: " + one_line(exporter.GetErrorString()));
-  if (has_bin) {
-    std::string text;
-    {
-      std::ifstream in(out.temp_path(), std::ios::binary);
-      std::ostringstream ss;
-      ss << in.rdbuf();
-      text = ss.str();
-    }
-    const std::string from = "\"" + temp_bin.path().filename().string() + "\"";
-    const std::string to = "\"" + bin_out.target().filename().string() + "\"";
-    std::size_t replaced = 0;
-    for (std::size_t p = text.find(from); p != std::string::npos; p = text.find(from, p + to.size())) {
-      text.replace(p, from.size(), to);
-      ++replaced;
-    }
-    if (replaced == 0) return make_error(label + ": assimp wrote a buffer file the .gltf does not name");
-    std::ofstream rewrite(out.temp_path(), std::ios::binary | std::ios::trunc);
-    rewrite << text;
-    rewrite.close();
-    if (!rewrite) return make_error(label + ": cannot write: " + std::strerror(errno));
-    if (Status s = out.finish(); !s) return s;  // the .gltf complete before its buffer replaces the old one
-    if (Status s = bin_out.commit(); !s) return s;
-  }
   return out.commit();
 }
 

@@ -1,4 +1,5 @@
-// Writing glTF/GLB and Collada through assimp's exporter (private to src/io).
+// Writing Collada through assimp's exporter (private to src/io; BVH, FBX and
+// glTF/GLB have writers of our own).
 #pragma once
 
 #include "rotinterp/clip/clip.h"
@@ -10,7 +11,8 @@
 
 namespace rotinterp {
 
-// assimp exporter id for a lower-case extension with dot (".gltf" → "gltf2", ".glb" → "glb2", ".dae" → "collada"); nullopt otherwise.
+// assimp exporter id for a lower-case extension with dot (".dae" → "collada");
+// nullopt otherwise.
 std::optional<std::string> assimp_export_format(const std::string& extension);
 
 // Builds an aiScene from `clip` (a node per joint with its rest transform

@@ -1,5 +1,7 @@
 #include "fbx_encode.h"
 
+#include "little_endian.h"
+
 #include <zlib.h>
 
 #include <charconv>
@@ -25,24 +27,13 @@ constexpr unsigned char kFooterId[16] = {0xfa, 0xbc, 0xab, 0x09, 0xd0, 0xc8, 0xd
 constexpr unsigned char kFooterMagic[16] = {0xf8, 0x5a, 0x8c, 0x6a, 0xde, 0xf5, 0xd9, 0x7e,
                                             0xec, 0xe9, 0x0c, 0xe3, 0x75, 0x8f, 0x29, 0x0b};
 
-template <class U>
-void put_le(std::string& out, U v) {
-  for (std::size_t i = 0; i < sizeof(U); ++i) out.push_back(static_cast<char>((v >> (8 * i)) & 0xff));
-}
 void put_u32_at(std::string& out, std::size_t at, std::uint32_t v) {
   for (std::size_t i = 0; i < 4; ++i) out[at + i] = static_cast<char>((v >> (8 * i)) & 0xff);
 }
-template <class T>
-auto bits(T v) {
-  if constexpr (sizeof(T) == 8) {
-    std::uint64_t u;
-    std::memcpy(&u, &v, 8);
-    return u;
-  } else {
-    std::uint32_t u;
-    std::memcpy(&u, &v, 4);
-    return u;
-  }
+// A string or raw property's bytes: their length, then them.
+void put_sized(std::string& out, std::string_view bytes) {
+  put_le(out, static_cast<std::uint32_t>(bytes.size()));
+  out.append(bytes);
 }
 
 template <class T>
@@ -169,20 +160,15 @@ FbxEncoder& FbxEncoder::f64(double v) {
 
 FbxEncoder& FbxEncoder::str(std::string_view s) {
   before_prop('S');
-  if (format_ == Format::binary) {
-    put_le(out_, static_cast<std::uint32_t>(s.size()));
-    out_.append(s);
-  } else {
-    out_ += quoted(s);
-  }
+  if (format_ == Format::binary) put_sized(out_, s);
+  else out_ += quoted(s);
   return *this;
 }
 
 FbxEncoder& FbxEncoder::raw(std::string_view bytes) {
   before_prop('R');
   if (format_ == Format::binary) {
-    put_le(out_, static_cast<std::uint32_t>(bytes.size()));
-    out_.append(bytes);
+    put_sized(out_, bytes);
   } else {
     // ASCII FBX spells raw bytes in base64.
     static const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";

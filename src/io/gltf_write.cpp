@@ -1,5 +1,7 @@
 #include "gltf_write.h"
 
+#include "little_endian.h"
+
 #include "rotinterp/clip/resample.h"
 #include "rotinterp/io/atomic_file.h"
 #include "track_sample.h"
@@ -20,16 +22,7 @@ constexpr std::uint32_t kGlbMagic = 0x46546C67;  // "glTF"
 constexpr std::uint32_t kChunkJson = 0x4E4F534A;  // "JSON"
 constexpr std::uint32_t kChunkBin = 0x004E4942;   // "BIN\0"
 
-template <class U>
-void put_le(std::string& out, U v) {
-  for (std::size_t i = 0; i < sizeof(U); ++i) out.push_back(static_cast<char>((v >> (8 * i)) & 0xff));
-}
-void put_float(std::string& out, double v) {
-  const auto f = static_cast<float>(v);
-  std::uint32_t u;
-  std::memcpy(&u, &f, 4);
-  put_le(out, u);
-}
+void put_float(std::string& out, double v) { put_le(out, bits(static_cast<float>(v))); }
 
 // The buffer and the accessors into it: one buffer view per accessor.
 struct Builder {

@@ -23,7 +23,7 @@ std::string lower_extension(const std::filesystem::path& path) {
 
 bool can_write_format(const std::filesystem::path& path) {
   const std::string ext = lower_extension(path);
-  return ext == ".bvh" || ext == ".fbx" || assimp_export_format(ext).has_value();
+  return ext == ".bvh" || ext == ".fbx" || ext == ".glb" || ext == ".gltf" || assimp_export_format(ext).has_value();
 }
 
 Status write_clip(const Clip& clip, const std::filesystem::path& path, const WriteOptions& options) {

@@ -127,8 +127,8 @@ TEST_F(Interrupt, AHangupIgnoredAsUnderNohupDoesNotStopTheRun) {
 }
 
 TEST_F(Interrupt, SigtermDuringAGltfExportLeavesNeitherGltfNorBuffer) {
-  // assimp writes the .bin buffer beside the temporary .gltf: the signal comes
-  // once that buffer exists, and both must go.
+  // The .bin buffer is written beside the temporary .gltf: the signal comes once
+  // that buffer's temporary exists, and both must go.
   const fs::path target = out_ / "fast.gltf";
   const int status = interrupt_while_writing({"resample", clip().string(), "-o", target.string(), "--fps", "480", "-q"},
                                              out_, SIGTERM, std::chrono::milliseconds(0), ".bin");

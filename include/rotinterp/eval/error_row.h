@@ -35,6 +35,16 @@ struct ErrorRow {
   double height = 0;  // skeleton height used for the percentages, clip units
 };
 
+// A measured (floating-point) column of errors.csv: its name, the ErrorRow field
+// it holds, and whether End Site rows leave it empty.
+struct ErrorValueColumn {
+  const char* name;
+  double ErrorRow::*field;
+  bool joint_only;
+};
+// mean_deg … acc_jump_max_dps2 and height, in file order.
+const std::vector<ErrorValueColumn>& error_value_columns();
+
 // The CSV header line (no newline): clip,method,keep_every,joint,frames,mean_deg,…
 std::string error_csv_header();
 // One CSV line (no newline). Text fields are quoted when they hold a comma, quote or

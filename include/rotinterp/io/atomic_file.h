@@ -36,7 +36,7 @@ namespace rotinterp {
 
 enum class TempKind {
   unnamed,  // O_TMPFILE where available (nothing to leave behind), else named
-  named,    // a file with a path, for writers that open one (assimp's exporters)
+  named,    // a file with a path, for writers that open one (assimp's Collada exporter, PLplot)
 };
 
 // A temporary sibling of `target` (same directory, so rename is atomic) that is
@@ -75,23 +75,6 @@ class AtomicOutput {
 // back, so an interrupt sees all of them committed or none (a signal arriving
 // meanwhile is handled afterwards). Stops at the first failure.
 Status commit_together(const std::vector<AtomicOutput*>& outputs);
-
-// A file some writer creates on its own next to a temporary output (assimp's .gltf
-// exporter writes its .bin buffer so): removed when this goes out of scope, and by
-// the interrupt handler while it lives. Construct it before the writer runs.
-class ScopedTempFile {
- public:
-  explicit ScopedTempFile(std::filesystem::path path);
-  ~ScopedTempFile();
-  ScopedTempFile(const ScopedTempFile&) = delete;
-  ScopedTempFile& operator=(const ScopedTempFile&) = delete;
-
-  const std::filesystem::path& path() const { return path_; }
-
- private:
-  std::filesystem::path path_;
-  int slot_ = -1;
-};
 
 // An exclusive lock on an output directory (flock on the directory itself, so no
 // lock file is left; released when this goes out of scope or the process ends,

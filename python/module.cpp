@@ -323,8 +323,7 @@ Clip make_clip(const std::vector<std::string>& names, const py::handle& parents_
   c.translations.resize(nj);
   for (std::size_t j = 0; j < nj; ++j) {
     c.rotations[j] = track_of(times.data(), rotations.data(), f, nj, j, scalar_first);
-    for (Quat& q : c.rotations[j].keys) q = normalized_or_identity(q);
-    c.rotations[j].make_sign_continuous();
+    c.rotations[j].make_sign_continuous();  // normalizes too
   }
   if (!translations.is_none()) {
     for (const auto& item : translations.cast<py::dict>()) {
@@ -357,24 +356,22 @@ Clip make_clip(const std::vector<std::string>& names, const py::handle& parents_
 
 // ---- files ------------------------------------------------------------------------
 
-// OSError subclasses for what the file system says before the reader tries.
-void check_readable(const fs::path& path) {
-  std::error_code ec;
-  const fs::file_status st = fs::status(path, ec);
-  if (ec || !fs::exists(st)) {
-    PyErr_SetObject(PyExc_FileNotFoundError,
-                    py::make_tuple(ENOENT, path.string() + ": no such file", path.string()).ptr());
-    throw py::error_already_set();
+// The reader's error as a Python exception: OSError subclasses for what the file
+// system says (its kind), ValueError for a file that is not a clip.
+[[noreturn]] void raise_read_error(const Error& e, const fs::path& path) {
+  PyObject* type = PyExc_ValueError;
+  int err = 0;
+  switch (e.kind) {
+    case ErrorKind::no_file: type = PyExc_FileNotFoundError, err = ENOENT; break;
+    case ErrorKind::directory: type = PyExc_IsADirectoryError, err = EISDIR; break;
+    case ErrorKind::cannot_open: type = PyExc_OSError, err = EIO; break;
+    default: value_error(e.message);
   }
-  if (fs::is_directory(st)) {
-    PyErr_SetObject(PyExc_IsADirectoryError,
-                    py::make_tuple(EISDIR, path.string() + ": is a directory, not a clip", path.string()).ptr());
-    throw py::error_already_set();
-  }
+  PyErr_SetObject(type, py::make_tuple(err, e.message, path.string()).ptr());
+  throw py::error_already_set();
 }
 
 Clip read_path(const fs::path& path, const py::object& anim) {
-  check_readable(path);
   ReadOptions o;
   if (!anim.is_none()) o.animation = py::str(anim).cast<std::string>();
   Result<Clip> c = make_error("");
@@ -382,7 +379,8 @@ Clip read_path(const fs::path& path, const py::object& anim) {
     py::gil_scoped_release release;
     c = read_clip(path, o);
   }
-  return checked(std::move(c));
+  if (!c) raise_read_error(c.failure(), path);
+  return std::move(*c);
 }
 
 void write_path(const Clip& clip, const fs::path& path, const std::string& bvh_order) {

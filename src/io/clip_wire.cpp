@@ -251,7 +251,7 @@ Result<ReadOutcome> decode(std::string_view bytes) {
   if (r.flag()) {
     out.error = r.str();
     const std::uint8_t kind = r.u8();
-    if (kind > static_cast<std::uint8_t>(ErrorKind::timed_out)) r.fail();
+    if (kind > static_cast<std::uint8_t>(ErrorKind::last)) r.fail();
     out.kind = static_cast<ErrorKind>(kind);
   }
   ClipFileInfo& info = out.info;

@@ -60,7 +60,8 @@ std::vector<std::int64_t> fbx_ticks(const std::vector<double>& times, const std:
 }
 
 // The joint's rotation order: its BVH rotation channels when they are three
-// different axes, else FBX's default XYZ (R = Rz·Ry·Rx: our outermost-first ZYX).
+// different axes (FBX has only those six orders), else FBX's default XYZ
+// (R = Rz·Ry·Rx: our outermost-first ZYX).
 EulerAxes joint_axes(const Joint& joint) {
   EulerAxes axes{};
   int n = 0;
@@ -69,7 +70,7 @@ EulerAxes joint_axes(const Joint& joint) {
     if (n == 3) return {2, 1, 0};
     axes[static_cast<std::size_t>(n++)] = static_cast<int>(c) - static_cast<int>(Channel::Xrotation);
   }
-  if (n != 3 || axes[0] == axes[2]) return {2, 1, 0};
+  if (n != 3 || axes[0] == axes[1] || axes[1] == axes[2] || axes[0] == axes[2]) return {2, 1, 0};
   return axes;
 }
 

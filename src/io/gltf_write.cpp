@@ -3,6 +3,7 @@
 #include "little_endian.h"
 
 #include "rotinterp/clip/resample.h"
+#include "rotinterp/eval/metrics.h"
 #include "rotinterp/io/atomic_file.h"
 #include "track_sample.h"
 
@@ -42,15 +43,13 @@ struct Builder {
 
 // Inverse bind matrices: the inverse of each joint's world rest transform, column-major.
 std::vector<double> rest_world_inverse(const Skeleton& sk) {
+  const WorldPose rest = rest_pose(sk);  // forward kinematics of the rest pose
   std::vector<double> out;
-  std::vector<Eigen::Matrix4d> world(sk.joints.size());
   for (std::size_t j = 0; j < sk.joints.size(); ++j) {
-    Eigen::Matrix4d local = Eigen::Matrix4d::Identity();
-    local.topLeftCorner<3, 3>() = sk.joints[j].rest_rotation.normalized().toRotationMatrix();
-    local.topRightCorner<3, 1>() = sk.joints[j].offset;
-    const int p = sk.joints[j].parent;
-    world[j] = p >= 0 ? Eigen::Matrix4d(world[static_cast<std::size_t>(p)] * local) : local;
-    const Eigen::Matrix4d inv = world[j].inverse();
+    const Mat3 rt = rest.rotation[j].toRotationMatrix().transpose();
+    Eigen::Matrix4d inv = Eigen::Matrix4d::Identity();  // [R p]⁻¹ = [Rᵀ −Rᵀp]
+    inv.topLeftCorner<3, 3>() = rt;
+    inv.topRightCorner<3, 1>() = -rt * rest.position[j];
     for (int c = 0; c < 4; ++c)
       for (int r = 0; r < 4; ++r) out.push_back(inv(r, c));  // column-major
   }

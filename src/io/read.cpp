@@ -178,20 +178,22 @@ Status check_file(const fs::path& path, const std::string& label) {
   std::error_code ec;
   const fs::file_status st = fs::status(path, ec);
   if (ec == std::errc::too_many_symbolic_link_levels)
-    return make_error(label + ": a loop of symbolic links (too many levels of symbolic links)");
+    return make_error(label + ": a loop of symbolic links (too many levels of symbolic links)", ErrorKind::no_file);
   if (ec || !fs::exists(st)) {
     std::error_code lec;
-    if (fs::is_symlink(fs::symlink_status(path, lec))) return make_error(label + ": a symbolic link to a missing file");
-    if (ec && ec != std::errc::no_such_file_or_directory) return make_error(label + ": cannot read: " + ec.message());
-    return make_error(label + ": no such file");
+    if (fs::is_symlink(fs::symlink_status(path, lec)))
+      return make_error(label + ": a symbolic link to a missing file", ErrorKind::no_file);
+    if (ec && ec != std::errc::no_such_file_or_directory)
+      return make_error(label + ": cannot read: " + ec.message(), ErrorKind::cannot_open);
+    return make_error(label + ": no such file", ErrorKind::no_file);
   }
-  if (fs::is_directory(st)) return make_error(label + ": is a directory, not a clip file");
-  if (!fs::is_regular_file(st)) return make_error(label + ": not a regular file");
+  if (fs::is_directory(st)) return make_error(label + ": is a directory, not a clip file", ErrorKind::directory);
+  if (!fs::is_regular_file(st)) return make_error(label + ": not a regular file", ErrorKind::cannot_open);
   const auto size = fs::file_size(path, ec);
-  if (ec) return make_error(label + ": cannot read: " + ec.message());
-  if (size == 0) return make_error(label + ": the file is empty");
+  if (ec) return make_error(label + ": cannot read: " + ec.message(), ErrorKind::cannot_open);
+  if (size == 0) return make_error(label + ": the file is empty", ErrorKind::unreadable);
   std::ifstream f(path, std::ios::binary);
-  if (!f) return make_error(label + ": cannot open for reading");
+  if (!f) return make_error(label + ": cannot open for reading", ErrorKind::cannot_open);
   return Ok{};
 }
 
@@ -635,7 +637,7 @@ Status check_clip(ClipFileInfo& info, const std::string& label) {
 // The whole read in this process, assimp included (the importer's part).
 Status read_here(const fs::path& path, const ReadOptions& options, ClipFileInfo& info, const Warnings& warn) {
   const std::string label = path.string();
-  if (Status s = check_file(path, label); !s) return make_error(s.error(), ErrorKind::unreadable);
+  if (Status s = check_file(path, label); !s) return s.failure();
   const std::string ext = extension_of(path);
   info.format = ext;
   Status st = is_bvh(path, ext) ? read_bvh(path, options, options.cross_check_with_assimp, info, warn)
@@ -648,7 +650,7 @@ Status read_here(const fs::path& path, const ReadOptions& options, ClipFileInfo&
 // importer process, whose warnings reach on_warning once it is done, in order.
 Result<ClipFileInfo> load(const fs::path& path, const ReadOptions& options) {
   const std::string label = path.string();
-  if (Status s = check_file(path, label); !s) return make_error(s.error(), ErrorKind::unreadable);
+  if (Status s = check_file(path, label); !s) return s.failure();
   const std::string ext = extension_of(path);
   ClipFileInfo info;
   info.format = ext;

@@ -238,6 +238,28 @@ TEST(FbxWrite, AssimpReadsBothEncodingsBackWithTheSameJointsFramesRateAndPoses) 
   }
 }
 
+TEST(FbxWrite, AJointWhoseRotationChannelsRepeatAnAxisKeepsItsOrientations) {
+  // BVH allows any channel layout (Xrotation Xrotation Yrotation); FBX has only the
+  // six orders of three different axes, so such a joint is written in XYZ and its
+  // orientations must survive (an order made of a repeated axis cannot express them).
+  test::TempDir dir;
+  test::write_text(dir / "repeat.bvh",
+                   "HIERARCHY\nROOT A\n{\n  OFFSET 0 0 0\n  CHANNELS 3 Xrotation Xrotation Yrotation\n"
+                   "  End Site\n  {\n    OFFSET 0 1 0\n  }\n}\nMOTION\nFrames: 3\nFrame Time: 0.1\n"
+                   "10 20 30\n-40 15 70\n5 -60 -25\n");
+  Result<Clip> clip = read_clip(dir / "repeat.bvh");
+  ASSERT_TRUE(clip) << clip.error();
+  ASSERT_TRUE(write_clip(*clip, dir / "repeat.fbx"));
+  Result<Clip> back = read_clip(dir / "repeat.fbx");
+  ASSERT_TRUE(back) << back.error();
+  ASSERT_EQ(back->frame_count(), 3u);
+  const int a = back->skeleton.find("A");
+  ASSERT_GE(a, 0);
+  for (std::size_t k = 0; k < 3; ++k)
+    EXPECT_LT(angular_distance(clip->rotations[0].keys[k], back->rotations[static_cast<std::size_t>(a)].keys[k]), 1e-4)
+        << "frame " << k;
+}
+
 // A chain 10 000 joints deep (rigs of generated or scanned content get there):
 // every writer walks the skeleton without recursion, so none runs out of stack,
 // and in time linear in the joints (BVH indentation stops at 64 levels).

@@ -127,10 +127,18 @@ TEST(ImportProcess, ErrorsComeBackWithTheirKind) {
   test::write_text(dir / "garbage.fbx", std::string(200, 'x'));
   test::write_text(dir / "still.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
   test::write_text(dir / "no_keys.fbx", test::fbx_one_curve("", "", 0));
+  test::write_text(dir / "empty.fbx", "");
+  std::filesystem::create_symlink(dir / "missing.fbx", dir / "dangling.fbx");
+  std::filesystem::create_directory(dir / "folder.fbx");
+  // What the file system says has kinds of its own (the Python module raises
+  // FileNotFoundError, IsADirectoryError by them).
   const struct {
     std::filesystem::path path;
     ErrorKind kind;
-  } cases[] = {{dir / "missing.fbx", ErrorKind::unreadable},
+  } cases[] = {{dir / "missing.fbx", ErrorKind::no_file},
+               {dir / "dangling.fbx", ErrorKind::no_file},
+               {dir / "folder.fbx", ErrorKind::directory},
+               {dir / "empty.fbx", ErrorKind::unreadable},
                {dir / "garbage.fbx", ErrorKind::unreadable},
                {dir / "still.obj", ErrorKind::no_animation},
                {dir / "no_keys.fbx", ErrorKind::crashed}};

@@ -13,11 +13,15 @@ namespace rotinterp {
 // file without an animation and goes on after a crash). Most errors are `other`.
 enum class ErrorKind {
   other,
-  unreadable,    // a file that is missing, not a clip, malformed, or refused by its importer
+  unreadable,    // a file that is not a clip: empty, malformed, or refused by its importer
   no_animation,  // a readable file that holds no animation (a mesh)
   crashed,       // the importer process died on the file (an assimp bug)
   too_large,     // the importer's result passed ReadOptions::max_import_bytes
   timed_out,     // the importer ran past ReadOptions::import_timeout_seconds
+  no_file,       // nothing at the path: missing, a link to nothing, a loop of links
+  directory,     // the path is a directory
+  cannot_open,   // the system refuses to read it: permissions, not a regular file, I/O
+  last = cannot_open,
 };
 
 struct Error {

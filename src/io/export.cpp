@@ -2,6 +2,7 @@
 
 #include "assimp_iosystem.h"
 #include "assimp_text.h"
+#include "rotinterp/eval/metrics.h"
 #include "track_sample.h"
 #include "rotinterp/io/atomic_file.h"
 
@@ -35,6 +36,9 @@ aiVector3D to_ai(const Vec3& v) {
 }
 
 std::unique_ptr<aiScene> build_scene(const Clip& clip) {
+  // Collada states its unit as the metre (assimp writes <unit meter="1">):
+  // translations are converted with the clip's unit scale, as for glTF.
+  const double metres = 1.0 / metres_in_clip_units(clip, 1.0);
   auto scene = std::make_unique<aiScene>();
   const Skeleton& sk = clip.skeleton;
   const std::size_t n = sk.joints.size();
@@ -44,7 +48,7 @@ std::unique_ptr<aiScene> build_scene(const Clip& clip) {
   std::vector<aiNode*> roots;
   for (std::size_t j = 0; j < n; ++j) {
     nodes[j] = new aiNode(sk.joints[j].name);
-    nodes[j]->mTransformation = node_matrix(sk.joints[j].offset, sk.joints[j].rest_rotation);
+    nodes[j]->mTransformation = node_matrix(sk.joints[j].offset * metres, sk.joints[j].rest_rotation);
   }
   for (std::size_t j = 0; j < n; ++j) {
     const int p = sk.joints[j].parent;
@@ -95,7 +99,7 @@ std::unique_ptr<aiScene> build_scene(const Clip& clip) {
     for (unsigned k = 0; k < count; ++k) {
       const double tick = times[k] * tps;
       ch->mRotationKeys[k] = aiQuatKey(tick, to_ai(sample_rotation(r, times[k])));
-      ch->mPositionKeys[k] = aiVectorKey(tick, to_ai(tr ? sample_translation(*tr, times[k]) : sk.joints[j].offset));
+      ch->mPositionKeys[k] = aiVectorKey(tick, to_ai((tr ? sample_translation(*tr, times[k]) : sk.joints[j].offset) * metres));
       ch->mScalingKeys[k] = aiVectorKey(tick, aiVector3D(1, 1, 1));
     }
   }

@@ -41,15 +41,16 @@ struct Builder {
   }
 };
 
-// Inverse bind matrices: the inverse of each joint's world rest transform, column-major.
-std::vector<double> rest_world_inverse(const Skeleton& sk) {
+// Inverse bind matrices: the inverse of each joint's world rest transform, column-major,
+// its translation in metres (`metres` per clip unit).
+std::vector<double> rest_world_inverse(const Skeleton& sk, double metres) {
   const WorldPose rest = rest_pose(sk);  // forward kinematics of the rest pose
   std::vector<double> out;
   for (std::size_t j = 0; j < sk.joints.size(); ++j) {
     const Mat3 rt = rest.rotation[j].toRotationMatrix().transpose();
     Eigen::Matrix4d inv = Eigen::Matrix4d::Identity();  // [R p]⁻¹ = [Rᵀ −Rᵀp]
     inv.topLeftCorner<3, 3>() = rt;
-    inv.topRightCorner<3, 1>() = -rt * rest.position[j];
+    inv.topRightCorner<3, 1>() = -rt * rest.position[j] * metres;
     for (int c = 0; c < 4; ++c)
       for (int r = 0; r < 4; ++r) out.push_back(inv(r, c));  // column-major
   }
@@ -72,6 +73,9 @@ Result<Document> build(const Clip& clip) {
   const Skeleton& sk = clip.skeleton;
   const std::size_t n = sk.joints.size();
   const std::vector<double> times = all_key_times(clip);
+  // glTF's unit is the metre: translations are converted with the clip's unit scale
+  // (an FBX in centimetres keeps its real size; BVH, which has none, is taken as is).
+  const double metres = 1.0 / metres_in_clip_units(clip, 1.0);
   Builder b;
 
   std::size_t start = b.bin.size();
@@ -95,7 +99,7 @@ Result<Document> build(const Clip& clip) {
     const Joint& joint = sk.joints[j];
     const Quat r = joint.rest_rotation.normalized();
     nlohmann::json node = {{"name", joint.name},
-                           {"translation", {joint.offset.x(), joint.offset.y(), joint.offset.z()}},
+                           {"translation", {joint.offset.x() * metres, joint.offset.y() * metres, joint.offset.z() * metres}},
                            {"rotation", {r.x(), r.y(), r.z(), r.w()}}};
     if (!children[j].empty()) node["children"] = children[j];
     nodes.push_back(node);
@@ -118,13 +122,13 @@ Result<Document> build(const Clip& clip) {
       start = b.bin.size();
       for (double t : times) {
         const Vec3 v = sample_translation(*tr, t);
-        for (int a = 0; a < 3; ++a) put_float(b.bin, v[a]);
+        for (int a = 0; a < 3; ++a) put_float(b.bin, v[a] * metres);
       }
       channel(b.accessor(start, times.size(), "VEC3"), "translation");
     }
   }
   start = b.bin.size();
-  for (double v : rest_world_inverse(sk)) put_float(b.bin, v);
+  for (double v : rest_world_inverse(sk, metres)) put_float(b.bin, v);
   const int ibm = b.accessor(start, n, "MAT4");
 
   nlohmann::json joints = nlohmann::json::array();

@@ -47,6 +47,9 @@ Differences compare(const Clip& a, const Clip& b, const std::string& only_under 
     map[j] = b.skeleton.find(a.skeleton.joints[j].name);
     if (map[j] >= 0) ++d.compared_joints;
   }
+  // b's positions in a's units: the same size in metres (a glTF is written in
+  // metres, whatever the source's unit).
+  const double b_in_a_units = b.unit_scale / a.unit_scale;
   for (double t : key_times(a)) {
     const WorldPose pa = test::pose_at(a, t), pb = test::pose_at(b, t);
     for (std::size_t j = 0; j < map.size(); ++j) {
@@ -54,7 +57,7 @@ Differences compare(const Clip& a, const Clip& b, const std::string& only_under 
       const auto k = static_cast<std::size_t>(map[j]);
       d.local_angle = std::max(d.local_angle, angular_distance(test::sample(a.rotations[j], t), test::sample(b.rotations[k], t)));
       d.world_angle = std::max(d.world_angle, angular_distance(pa.rotation[j], pb.rotation[k]));
-      d.world_position = std::max(d.world_position, (pa.position[j] - pb.position[k]).norm());
+      d.world_position = std::max(d.world_position, (pa.position[j] - pb.position[k] * b_in_a_units).norm());
     }
   }
   return d;

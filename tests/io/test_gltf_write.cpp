@@ -50,7 +50,16 @@ TEST(GltfWrite, SkinCoversEveryJointWithTheRestPosesInverseBindMatrices) {
   ASSERT_EQ(acc["count"], n);
   std::vector<float> m(16 * n);
   std::memcpy(m.data(), bin.data() + view["byteOffset"].get<std::size_t>(), m.size() * 4);
-  // World rest transforms by forward kinematics; IBM · world = identity.
+  // glTF's unit is the metre: this FBX is in centimetres (unit scale 0.01), so node
+  // translations and the matrices' translations are its offsets × 0.01.
+  const double metres = clip.unit_scale;
+  ASSERT_EQ(metres, 0.01);
+  for (std::size_t j = 0; j < n; ++j)
+    for (int a = 0; a < 3; ++a)
+      EXPECT_NEAR(doc["nodes"][j]["translation"][static_cast<std::size_t>(a)].get<double>(),
+                  clip.skeleton.joints[j].offset[a] * metres, 1e-12)
+          << clip.skeleton.joints[j].name;
+  // World rest transforms by forward kinematics (in metres); IBM · world = identity.
   std::vector<Quat> rest(n);
   std::vector<Vec3> offsets(n);
   for (std::size_t j = 0; j < n; ++j) rest[j] = clip.skeleton.joints[j].rest_rotation, offsets[j] = clip.skeleton.joints[j].offset;
@@ -66,10 +75,10 @@ TEST(GltfWrite, SkinCoversEveryJointWithTheRestPosesInverseBindMatrices) {
       for (int r = 0; r < 4; ++r) ibm(r, c) = m[16 * j + static_cast<std::size_t>(4 * c + r)];
     Eigen::Matrix4d world = Eigen::Matrix4d::Identity();
     world.topLeftCorner<3, 3>() = w.rotation[j].toRotationMatrix();
-    world.topRightCorner<3, 1>() = w.position[j];
+    world.topRightCorner<3, 1>() = w.position[j] * metres;
     const Eigen::Matrix4d id = ibm * world;
     worst = std::max(worst, (id.topLeftCorner<3, 3>() - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff());
-    worst = std::max(worst, id.topRightCorner<3, 1>().cwiseAbs().maxCoeff() / size);
+    worst = std::max(worst, id.topRightCorner<3, 1>().cwiseAbs().maxCoeff() / (size * metres));
   }
   EXPECT_LT(worst, 1e-5);
 }

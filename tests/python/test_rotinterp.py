@@ -74,6 +74,7 @@ def test_evaluate_equals_errors_csv_to_the_last_digit(tmp_path):
     with open(tmp_path / "e" / "errors.csv", newline="") as f:
         rows = list(csv.DictReader(f))
     assert len(rows) == len(cols["clip"]) > 0
+    assert list(cols) == list(rows[0])  # the file's columns, in its order
     for i, row in enumerate(rows):
         for name, text in row.items():
             ours = cols[name][i]

@@ -72,7 +72,7 @@ bool injected_fault() {
 std::string reason(int err) { return std::strerror(err); }
 
 // Our named temporaries: ".rotinterp.PID.N.tmp" + the target's extension (the
-// writers that open a path pick the format by it: PLplot, assimp). Short, so a target name of
+// exporter that opens a path, assimp's, picks the format by it). Short, so a target name of
 // 255 bytes still works, and the PID tells whose it is.
 constexpr const char* kTempPrefix = ".rotinterp.";
 constexpr std::size_t kMaxKeptExtension = 8;

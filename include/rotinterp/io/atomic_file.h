@@ -36,7 +36,7 @@ namespace rotinterp {
 
 enum class TempKind {
   unnamed,  // O_TMPFILE where available (nothing to leave behind), else named
-  named,    // a file with a path, for writers that open one (assimp's Collada exporter, PLplot)
+  named,    // a file with a path, for writers that open one (assimp's Collada exporter)
 };
 
 // A temporary sibling of `target` (same directory, so rename is atomic) that is

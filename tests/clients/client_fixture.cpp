@@ -1,5 +1,7 @@
 #include "client_fixture.h"
 
+#include <cmath>
+
 #include "rotinterp/io/read.h"
 
 #include <Eigen/Geometry>
@@ -60,6 +62,7 @@ Residual max_similarity_residual(const Reference& ref, const std::vector<std::st
   r.distance = (mapped - to).colwise().norm().maxCoeff(&worst);
   r.joint = names[static_cast<std::size_t>(worst) % names.size()];
   r.frame = static_cast<std::size_t>(worst) / names.size();
+  r.scale = std::cbrt(t.topLeftCorner<3, 3>().determinant());
   return r;
 }
 

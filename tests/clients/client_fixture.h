@@ -39,6 +39,7 @@ struct Residual {
   double distance = -1.0;
   std::string joint;
   std::size_t frame = 0;
+  double scale = 0.0;  // of the similarity: reference units per unit of `positions`
 };
 Residual max_similarity_residual(const Reference& ref, const std::vector<std::string>& names,
                                  const std::vector<std::vector<Vec3>>& positions);

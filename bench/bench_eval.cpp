@@ -110,14 +110,14 @@ double curves_alone(const std::vector<rotinterp::ClipReference>& refs, const std
   for (const rotinterp::ClipReference& ref : refs)
     for (int keep : {2, 4, 8, 16})
       for (std::size_t j = 0; j < ref.skeleton.joints.size(); ++j) {
-        const rotinterp::RotationTrack track = rotinterp::decimated_track(ref, j, keep);
+        const std::vector<std::size_t> kf = rotinterp::keep_every_indices(ref.frames.size(), static_cast<std::size_t>(keep));
+        const rotinterp::RotationTrack track = rotinterp::decimated_track(ref.frames, ref.original[j], kf);
         auto curve = rotinterp::make_interpolator(method, track);
         if (!curve) continue;
         out.resize(ref.frames.size());  // no subframes here: the samples are the frames
         (*curve)->evaluate(ref.frames.data(), out.size(), out.data());
         // The stencils' centres are among the frames, as in evaluate_method.
         const double s0 = cpu_seconds();
-        const std::vector<std::size_t> kf = rotinterp::key_frames(ref.frames.size(), keep);
         at_keys.resize(kf.size());
         for (std::size_t i = 0; i < kf.size(); ++i) at_keys[i] = out[kf[i]];
         (void)rotinterp::key_jumps(**curve, track.times, at_keys.data());

@@ -1,9 +1,8 @@
 #include "rotinterp/render/comparison.h"
 
-#include "rotinterp/clip/sampling.h"
+#include "rotinterp/clip/frames.h"
 #include "rotinterp/core/rotation.h"
 #include "rotinterp/interp/interpolator.h"
-#include "rotinterp/interp/slerp.h"
 #include "rotinterp/render/layout.h"
 
 #include <fmt/format.h>
@@ -46,68 +45,12 @@ Color method_colour(const std::string& method) {
   return kPalette[i % std::size(kPalette)];
 }
 
-// The times of the source's frames: the key times of its densest track when that
-// track has a key on every frame (BVH: exactly the reader's times), else the grid
-// start + k·frame_time.
-std::vector<double> frame_times(const Clip& clip) {
-  const std::size_t count = clip.frame_count();
-  const RotationTrack* densest = nullptr;
-  for (const RotationTrack& t : clip.rotations)
-    if (!densest || t.times.size() > densest->times.size()) densest = &t;
-  if (densest && (densest->times.size() >= count || !(clip.frame_time > 0.0))) return densest->times;
-  std::vector<double> times;
-  const double start = clip.start_time();
-  for (std::size_t k = 0; k < count; ++k) times.push_back(start + static_cast<double>(k) * clip.frame_time);
-  return times;
-}
-
-// Index of the last key at or before t (0 if t is before the first).
-template <class Track>
-std::size_t segment(const Track& track, double t) {
-  const auto it = std::upper_bound(track.times.begin(), track.times.end(), t);
-  return it == track.times.begin() ? 0 : static_cast<std::size_t>(it - track.times.begin()) - 1;
-}
-
-// A track's value at t: its key there, the geodesic between its keys in between,
-// clamped outside. `tolerance` (s) absorbs round-off in key times.
-Quat sample_rotation(const RotationTrack& track, double t, double tolerance) {
-  const std::size_t i = segment(track, t + tolerance);
-  if (i + 1 >= track.keys.size() || std::abs(track.times[i] - t) <= tolerance) return track.keys[i];
-  const double u = std::clamp((t - track.times[i]) / (track.times[i + 1] - track.times[i]), 0.0, 1.0);
-  return slerp(track.keys[i], track.keys[i + 1], u);
-}
-
-Vec3 sample_translation(const TranslationTrack& track, double t, double tolerance) {
-  const std::size_t i = segment(track, t + tolerance);
-  if (i + 1 >= track.keys.size() || std::abs(track.times[i] - t) <= tolerance) return track.keys[i];
-  const double u = std::clamp((t - track.times[i]) / (track.times[i + 1] - track.times[i]), 0.0, 1.0);
-  return (1.0 - u) * track.keys[i] + u * track.keys[i + 1];
-}
-
-// The direction of a joint's bone in its own frame: towards its farthest child
-// (joint or End Site); +x for a joint without a child of non-zero length.
-Vec3 bone_direction(const Skeleton& skeleton, int joint) {
-  Vec3 best = Vec3::Zero();
-  for (const Joint& j : skeleton.joints)
-    if (j.parent == joint && j.offset.norm() > best.norm()) best = j.offset;
-  for (const EndSite& e : skeleton.end_sites)
-    if (e.parent == joint && e.offset.norm() > best.norm()) best = e.offset;
-  return best.norm() > 0.0 ? Vec3(best.normalized()) : Vec3::UnitX();
-}
-
-// Mean and max angular error of a frame, degrees, over the animated joints (all
-// joints when none is animated).
-struct FrameError {
-  double mean = 0.0;
-  double max = 0.0;
-};
-
-// The clip's reference frame by frame, and every method rebuilt from its keys.
+// The clip's frames (clip/frames.h, as eval measures them), and every method
+// rebuilt from its keys.
 struct Rebuild {
   const Clip* clip = nullptr;
-  std::vector<double> times;                  // per frame
-  double tolerance = 0.0;                     // s: a key this close to a frame is the frame's
-  std::vector<std::vector<Quat>> reference;   // [frame][joint] local rotations
+  DenseClip dense;                            // the reference at every frame
+  std::vector<Vec3> bone_axis;                // [joint]
   std::vector<std::size_t> keys;              // frames kept as keys
   std::vector<bool> animated;                 // [joint]: more than one key in the source
   bool any_animated = false;
@@ -116,25 +59,17 @@ struct Rebuild {
   static Result<Rebuild> build(const Clip& clip, const std::vector<std::string>& methods, std::size_t keep_every) {
     Rebuild r;
     r.clip = &clip;
-    r.times = frame_times(clip);
-    // Key times within a thousandth of a frame are the frame's (float-parsed times).
-    r.tolerance = 1e-3 * (clip.frame_time > 0.0 ? clip.frame_time : 1e-3);
+    r.dense = dense_clip(clip);
+    r.bone_axis = bone_axes(clip.skeleton);
     const std::size_t joints = clip.skeleton.joints.size();
-    r.reference.assign(r.times.size(), std::vector<Quat>(joints));
-    for (std::size_t f = 0; f < r.times.size(); ++f)
-      for (std::size_t j = 0; j < joints; ++j) r.reference[f][j] = sample_rotation(clip.rotations[j], r.times[f], r.tolerance);
-    r.keys = keep_every_indices(r.times.size(), keep_every);
+    r.keys = keep_every_indices(r.frames(), keep_every);
     r.interpolators.resize(methods.size());
     r.animated.resize(joints);
     for (std::size_t j = 0; j < joints; ++j) {
       r.animated[j] = clip.rotations[j].keys.size() > 1;
       r.any_animated = r.any_animated || r.animated[j];
-      RotationTrack track;
-      for (std::size_t k : r.animated[j] ? r.keys : std::vector<std::size_t>{0}) {
-        track.times.push_back(r.times[k]);
-        track.keys.push_back(r.reference[k][j]);
-      }
-      track.make_sign_continuous();
+      const RotationTrack track =
+          decimated_track(r.dense.grid.times, r.dense.rotation[j], r.animated[j] ? r.keys : std::vector<std::size_t>{0});
       for (std::size_t m = 0; m < methods.size(); ++m) {
         auto made = make_interpolator(methods[m], track);
         if (!made) return make_error(methods[m] + ", joint " + clip.skeleton.joints[j].name + ": " + made.error());
@@ -144,27 +79,30 @@ struct Rebuild {
     return r;
   }
 
+  std::size_t frames() const { return dense.grid.size(); }
+  double time(std::size_t f) const { return dense.grid.times[f]; }
+
   // Translations are the reference's for every method (only rotations are rebuilt).
   std::vector<Vec3> translations(std::size_t f) const {
-    std::vector<Vec3> t(clip->skeleton.joints.size());
-    for (std::size_t j = 0; j < t.size(); ++j)
-      t[j] = clip->translations[j] ? sample_translation(*clip->translations[j], times[f], tolerance)
-                                   : clip->skeleton.joints[j].offset;
+    std::vector<Vec3> t(dense.translation.size());
+    for (std::size_t j = 0; j < t.size(); ++j) t[j] = dense.translation[j][f];
     return t;
   }
 
   void reference_pose(std::size_t f, WorldPose& out) const {
-    forward_kinematics(clip->skeleton, reference[f], translations(f), out);
+    std::vector<Quat> local(dense.rotation.size());
+    for (std::size_t j = 0; j < local.size(); ++j) local[j] = dense.rotation[j][f];
+    forward_kinematics(clip->skeleton, local, translations(f), out);
   }
 
   FrameError method_pose(std::size_t m, std::size_t f, WorldPose& out) const {
-    std::vector<Quat> local(reference[f].size());
+    std::vector<Quat> local(dense.rotation.size());
     FrameError error;
     std::size_t counted = 0;
     for (std::size_t j = 0; j < local.size(); ++j) {
-      local[j] = interpolators[m][j]->evaluate(times[f]);
+      local[j] = interpolators[m][j]->evaluate(time(f));
       if (animated[j] || !any_animated) {
-        const double e = angular_distance(reference[f][j], local[j]) * 180.0 / kPi;
+        const double e = angular_distance(dense.rotation[j][f], local[j]) * 180.0 / kPi;
         error.mean += e;
         error.max = std::max(error.max, e);
         ++counted;
@@ -179,12 +117,12 @@ struct Rebuild {
   std::shared_ptr<const Trail> trail(std::size_t m, int joint, std::size_t first, std::size_t last,
                                      std::string label) const {
     const auto j = static_cast<std::size_t>(joint);
-    const Vec3 axis = bone_direction(clip->skeleton, joint);
+    const Vec3& axis = bone_axis[j];
     auto t = std::make_shared<Trail>();
     t->label = std::move(label);
     for (std::size_t f = first; f <= last; ++f) {
-      t->reference.push_back(reference[f][j] * axis);
-      t->method.push_back(interpolators[m][j]->evaluate(times[f]) * axis);
+      t->reference.push_back(dense.rotation[j][f] * axis);
+      t->method.push_back(interpolators[m][j]->evaluate(time(f)) * axis);
     }
     if (animated[j])
       for (std::size_t k : keys)
@@ -310,8 +248,19 @@ Result<std::pair<int, int>> parse_size(std::string_view text) {
   return std::pair<int, int>(static_cast<int>(*w), static_cast<int>(*h));
 }
 
+Result<std::vector<FrameError>> comparison_errors(const Clip& clip, const std::string& method, std::size_t keep_every) {
+  if (Status s = clip.validate(); !s) return make_error(s.error());
+  if (!find_method(method)) return make_error("unknown method '" + method + "' (valid: " + method_names() + ")");
+  auto rebuild = Rebuild::build(clip, {method}, std::max<std::size_t>(keep_every, 1));
+  if (!rebuild) return make_error(rebuild.error());
+  std::vector<FrameError> errors(rebuild->frames());
+  WorldPose pose;
+  for (std::size_t f = 0; f < errors.size(); ++f) errors[f] = rebuild->method_pose(0, f, pose);
+  return errors;
+}
+
 Result<std::vector<std::size_t>> comparison_frames(const Clip& clip, const ComparisonOptions& options) {
-  const std::size_t count = frame_times(clip).size();
+  const std::size_t count = frame_grid(clip).size();
   if (count == 0) return make_error("the clip has no frames");
   std::vector<std::size_t> frames;
   if (options.frames) {
@@ -380,7 +329,7 @@ Result<ComparisonResult> render_comparison(const Clip& clip, const fs::path& out
   auto built = Rebuild::build(clip, options.methods, options.keep_every);
   if (!built) return make_error(built.error());
   const Rebuild& rebuild = *built;
-  const std::size_t frame_count = rebuild.times.size();
+  const std::size_t frame_count = rebuild.frames();
 
   // Trails and camera bounds cover the frames drawn; the whole clip for one frame.
   const bool one_frame = frames.front() == frames.back();

@@ -22,7 +22,20 @@ if [ "${1:-}" = --compare ]; then
     echo "identical: $files files (build-outputs/old vs build-outputs/new)"
   else
     echo "DIFFERENT: see build-outputs/diff.txt" >&2
-    head -n 20 build-outputs/diff.txt >&2
+    diff -rq build-outputs/old build-outputs/new >&2 || true
+    # How far apart the numbers of errors.csv are, when they are.
+    python3 - build-outputs/old/eval/errors.csv build-outputs/new/eval/errors.csv >&2 <<'PY' || true
+import csv, sys
+a, b = (list(csv.reader(open(p))) for p in sys.argv[1:3])
+if a == b or len(a) != len(b): sys.exit()
+for i, col in enumerate(a[0]):
+    rel = 0.0
+    for x, y in zip(a[1:], b[1:]):
+        try: fx, fy = float(x[i]), float(y[i])
+        except ValueError: continue
+        if max(abs(fx), abs(fy)) > 1e-3: rel = max(rel, abs(fx - fy) / max(abs(fx), abs(fy)))
+    if rel: print(f"errors.csv {col}: largest relative difference {rel:.3g} (values above 1e-3)")
+PY
     exit 1
   fi
   exit 0

@@ -1,5 +1,6 @@
 #include "rotinterp/clip/resample.h"
 
+#include "rotinterp/clip/frames.h"
 #include "rotinterp/interp/interpolator.h"
 
 #include <algorithm>
@@ -16,8 +17,6 @@ namespace rotinterp {
 
 namespace {
 
-// A key within this fraction of a frame of start + i·frame_time belongs to frame i.
-constexpr double kSnapFraction = 0.05;
 // Output size limit: frames × joints (≈ 40 bytes each, 4 GB).
 constexpr std::size_t kMaxOutputKeys = 100000000;
 
@@ -28,30 +27,21 @@ std::string seconds_text(double s) {
   return os.str();
 }
 
-// The source's frame grid, when it has one.
-struct SourceGrid {
-  double start = 0.0;
-  double frame_time = 0.0;  // as read (for snapping)
-  Rate rate;                // exact
-  std::size_t frames = 0;
-  double time(std::size_t i) const { return start + rate.time_of(static_cast<std::int64_t>(i)); }
-  // The time of output frame i in a clip that keeps the source's frame time: what a
-  // reader of the written file gives (start + i·frame_time), so the output's key
-  // times sit on its own frame grid.
-  double label(std::size_t i) const { return start + static_cast<double>(i) * frame_time; }
-};
+// The time of output frame i in a clip that keeps the source's frame time: what a
+// reader of the written file gives (start + i·frame_time), so the output's key
+// times sit on its own frame grid.
+double label(const FrameGrid& grid, std::size_t i) { return grid.start + static_cast<double>(i) * grid.frame_time; }
 
-// Snaps key times onto the exact grid when every key is on it (within
-// kSnapFraction of a frame and no two keys on one frame); otherwise leaves them.
+// Moves key times onto the exact grid when every key is on it (the frame of each
+// key, clip/frames.h, and no two keys on one frame); otherwise leaves them.
 template <class Track>
-void snap_times(Track& track, const SourceGrid& grid) {
+void snap_times(Track& track, const FrameGrid& grid) {
   std::vector<double> snapped(track.times.size());
-  long long previous = -1;
+  std::optional<std::size_t> previous;
   for (std::size_t k = 0; k < track.times.size(); ++k) {
-    const double frames = (track.times[k] - grid.start) / grid.frame_time;
-    const long long i = std::llround(frames);
-    if (i < 0 || i <= previous || std::abs(frames - static_cast<double>(i)) > kSnapFraction) return;
-    snapped[k] = grid.time(static_cast<std::size_t>(i));
+    const std::optional<std::size_t> i = grid.frame_at(track.times[k]);
+    if (!i || (previous && *i <= *previous)) return;
+    snapped[k] = grid.exact_time(*i);
     previous = i;
   }
   track.times = std::move(snapped);
@@ -75,7 +65,7 @@ struct Plan {
 };
 
 Status resample_joint(const Clip& in, std::size_t j, const std::string& method, const ResampleOptions& opt,
-                      const std::optional<SourceGrid>& grid, const Plan& plan, Clip& out) {
+                      const std::optional<FrameGrid>& grid, const Plan& plan, Clip& out) {
   RotationTrack source = in.rotations[j];
   if (grid) snap_times(source, *grid);
 
@@ -170,12 +160,12 @@ Result<Clip> resample_clip(const Clip& in, const ResampleOptions& options) {
   }
 
   // The source grid.
-  std::optional<SourceGrid> grid;
+  std::optional<FrameGrid> grid;
   const double start = in.start_time();
   double duration = in.end_time() - start;
-  if (const std::optional<Rate> rate = clip_rate(in)) {
-    grid = SourceGrid{start, in.frame_time, *rate, in.frame_count()};
-    duration = grid->time(grid->frames - 1) - start;
+  if (FrameGrid g = frame_grid(in); g.rate) {
+    grid = std::move(g);
+    duration = grid->exact_time(grid->size() - 1) - start;
   }
   // Keys on no grid: the file's own frame rate (FBX GlobalSettings) is the default.
   if (!opt.fps && !grid && !opt.keep_every && in.file_rate_hz > 0.0) {
@@ -210,29 +200,29 @@ Result<Clip> resample_clip(const Clip& in, const ResampleOptions& options) {
   out.source_meshes = in.source_meshes;
   out.file_rate_hz = in.file_rate_hz;
   if (opt.keep_every) {
-    const Rate& r = grid->rate;
+    const Rate& r = *grid->rate;
     const double fa = a * static_cast<double>(r.num) / static_cast<double>(r.den);
     const double fb = b * static_cast<double>(r.num) / static_cast<double>(r.den);
     const auto i0 = static_cast<std::size_t>(std::max(0.0, std::ceil(fa - 1e-6)));
-    const auto i1 = std::min(grid->frames - 1, static_cast<std::size_t>(std::floor(fb + 1e-6)));
+    const auto i1 = std::min(grid->size() - 1, static_cast<std::size_t>(std::floor(fb + 1e-6)));
     if (i1 < i0) return make_error("range " + seconds_text(a) + ":" + seconds_text(b) + " s holds no frame");
     if (i1 - i0 + 1 > kMaxOutputKeys / n) return too_many(i1 - i0 + 1);
     plan.keep_every = true;
     for (std::size_t i = i0; i <= i1; ++i) {
-      plan.eval_times.push_back(grid->time(i));
-      plan.out_times.push_back(grid->label(i - i0));
+      plan.eval_times.push_back(grid->exact_time(i));
+      plan.out_times.push_back(label(*grid, i - i0));
     }
-    for (std::size_t k : keep_every_indices(i1 - i0 + 1, *opt.keep_every)) plan.key_times.push_back(grid->time(i0 + k));
+    for (std::size_t k : keep_every_indices(i1 - i0 + 1, *opt.keep_every)) plan.key_times.push_back(grid->exact_time(i0 + k));
     out.frame_time = in.frame_time;
     out.frame_time_text = in.frame_time_text;
   } else {
-    const Rate rate = opt.fps ? *opt.fps : grid->rate;
+    const Rate rate = opt.fps ? *opt.fps : *grid->rate;
     TimeGrid g;
     g.start = start;
     g.offset = a;
     g.end = start + b;
     g.rate = rate;
-    g.count = (!opt.range && grid) ? sample_count(grid->frames, grid->rate, rate) : sample_count(b - a, rate);
+    g.count = (!opt.range && grid) ? sample_count(grid->size(), *grid->rate, rate) : sample_count(b - a, rate);
     if (g.count > kMaxOutputKeys / n) return too_many(g.count);
     plan.eval_times = g.times();
     if (opt.fps) {
@@ -242,7 +232,7 @@ Result<Clip> resample_clip(const Clip& in, const ResampleOptions& options) {
       plan.out_times = o.times();
       out.frame_time = rate.period();
     } else {
-      for (std::size_t k = 0; k < g.count; ++k) plan.out_times.push_back(grid->label(k));
+      for (std::size_t k = 0; k < g.count; ++k) plan.out_times.push_back(label(*grid, k));
       out.frame_time = in.frame_time;
       out.frame_time_text = in.frame_time_text;
     }

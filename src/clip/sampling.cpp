@@ -209,13 +209,4 @@ std::vector<double> TimeGrid::times() const {
   return out;
 }
 
-std::vector<std::size_t> keep_every_indices(std::size_t frames, std::size_t n) {
-  std::vector<std::size_t> out;
-  if (frames == 0) return out;
-  if (n == 0) n = 1;
-  for (std::size_t i = 0; i < frames; i += n) out.push_back(i);
-  if (out.back() != frames - 1) out.push_back(frames - 1);
-  return out;
-}
-
 }  // namespace rotinterp

@@ -1,6 +1,7 @@
 #include "rotinterp/eval/evaluate_clip.h"
 
 #include "rotinterp/interp/interpolator.h"
+#include "rotinterp/interp/slerp.h"
 
 #include <algorithm>
 #include <cmath>
@@ -16,72 +17,10 @@ namespace {
 
 constexpr double kRadToDeg = 180.0 / kPi;
 
-// A frame time within this fraction of a key interval from a key takes the key
-// itself: frame grids computed as start + k·frame_time differ from a reader's key
-// times by round-off (~1e-16 relative), which must not turn keys into slerps.
-constexpr double kSnap = 1e-9;
-
-// Frame times of the original clip (see the header).
-std::vector<double> frame_times(const Clip& clip) {
-  std::vector<double> t;
-  if (clip.frame_time > 0.0) {
-    const std::size_t n = clip.frame_count();
-    const double start = clip.start_time(), end = clip.end_time();
-    t.resize(n);
-    for (std::size_t k = 0; k < n; ++k) t[k] = std::min(start + static_cast<double>(k) * clip.frame_time, end);
-    if (n > 1) t[n - 1] = end;
-    return t;
-  }
-  const RotationTrack* longest = &clip.rotations.front();
-  for (const RotationTrack& r : clip.rotations)
-    if (r.times.size() > longest->times.size()) longest = &r;
-  return longest->times;
-}
-
-// q0 → q1 along the shortest arc, at fraction u: q0·exp(u·log(q0⁻¹q1)). Exactly q0 at u = 0.
-Quat slerp(const Quat& q0, const Quat& q1, double u) {
-  if (u == 0.0) return q0;
-  return apply_moving(q0, displacement_moving(q0, q1) * u);
-}
-
-// A track (rotation or translation) at sorted times: its key at a key time, else
-// `blend` of the two neighbouring keys at the fraction between them; clamped
-// outside the keys.
-template <class Track, class Value, class Blend>
-void sample_track(const Track& track, const std::vector<double>& times, Value* out, Blend blend) {
-  const std::size_t n = track.times.size();
-  std::size_t i = 0;  // segment [i, i+1]
-  for (std::size_t m = 0; m < times.size(); ++m) {
-    const double t = times[m];
-    while (i + 1 < n && track.times[i + 1] <= t) ++i;
-    if (i + 1 >= n || t <= track.times[i]) {
-      out[m] = (i + 1 >= n || t >= track.times[i]) ? track.keys[i] : track.keys[0];
-      continue;
-    }
-    const double u = (t - track.times[i]) / (track.times[i + 1] - track.times[i]);
-    out[m] = u < kSnap ? track.keys[i] : u > 1.0 - kSnap ? track.keys[i + 1] : blend(track.keys[i], track.keys[i + 1], u);
-  }
-}
-
-// The original's rotations: slerp between keys.
-void sample_rotation(const RotationTrack& track, const std::vector<double>& times, Quat* out) {
-  sample_track(track, times, out, slerp);
-}
-
-// The original's translations: linear between keys.
-void sample_translation(const TranslationTrack& track, const std::vector<double>& times, Vec3* out) {
-  sample_track(track, times, out, [](const Vec3& a, const Vec3& b, double u) -> Vec3 { return a + u * (b - a); });
-}
+// Subframe times fall between frames by design: only round-off may take a key there.
+constexpr double kSubframeSnap = 1e-9;
 
 }  // namespace
-
-std::vector<std::size_t> key_frames(std::size_t frames, int keep_every) {
-  const auto n = static_cast<std::size_t>(std::max(keep_every, 1));
-  std::vector<std::size_t> k;
-  for (std::size_t i = 0; i < frames; i += n) k.push_back(i);
-  if (frames > 0 && k.back() != frames - 1) k.push_back(frames - 1);
-  return k;
-}
 
 double sample_time(const ClipReference& R, std::size_t m) {
   const std::size_t per = R.per_frame, k = m / per, i = m % per;
@@ -139,7 +78,7 @@ class Block {
     if (!R.truth)
       for (std::size_t j = 0; j < nj; ++j) {
         if (R.translation_tracks[j])
-          sample_translation(*R.translation_tracks[j], times_, translation_[j].data());
+          sample_translations(*R.translation_tracks[j], times_, kSubframeSnap * R.sample_dt, translation_[j].data());
         else
           std::fill(translation_[j].begin(), translation_[j].end(), R.skeleton.joints[j].offset);
       }
@@ -264,21 +203,19 @@ Result<ClipReference> prepare_reference(const Clip& clip, const std::string& cli
   const Skeleton& skel = R.skeleton;
   const std::size_t nj = skel.joints.size();
 
-  // ---- the sample grid: frames, and subframes between them ----
-  R.frames = frame_times(clip);
+  // ---- the sample grid: the clip's frames (clip/frames.h), and subframes between them ----
+  DenseClip dense = dense_clip(clip);
+  R.frames = std::move(dense.grid.times);
   const std::size_t nf = R.frames.size();
   const std::size_t per = R.per_frame = static_cast<std::size_t>(options.subframe) + 1;
   R.samples = nf == 0 ? 0 : (nf - 1) * per + 1;
   R.sample_dt = clip.frame_time > 0.0 ? clip.frame_time / static_cast<double>(per) : 0.0;
 
-  // ---- the original at its frames (keys come from here) ----
-  R.original.assign(nj, std::vector<Quat>(nf));
-  for (std::size_t j = 0; j < nj; ++j) sample_rotation(clip.rotations[j], R.frames, R.original[j].data());
-
-  // ---- the reference at every frame, joint-major ----
-  R.reference.assign(nj, std::vector<Quat>(nf));
-  R.translation.assign(nj, std::vector<Vec3>(nf));
+  // ---- the original at its frames (keys come from here), the reference at every frame ----
+  R.original = std::move(dense.rotation);
+  R.translation = std::move(dense.translation);
   if (options.truth) {
+    R.reference.assign(nj, std::vector<Quat>(nf));
     std::vector<Quat> r(nj);
     std::vector<Vec3> t(nj);
     for (std::size_t k = 0; k < nf; ++k) {
@@ -291,13 +228,7 @@ Result<ClipReference> prepare_reference(const Clip& clip, const std::string& cli
     }
     R.truth = options.truth;
   } else {
-    for (std::size_t j = 0; j < nj; ++j) {
-      R.reference[j] = R.original[j];
-      if (clip.translations[j])
-        sample_translation(*clip.translations[j], R.frames, R.translation[j].data());
-      else
-        std::fill(R.translation[j].begin(), R.translation[j].end(), skel.joints[j].offset);
-    }
+    R.reference = R.original;
     if (per > 1) R.translation_tracks = clip.translations;
   }
 
@@ -343,19 +274,6 @@ Result<ClipReference> prepare_reference(const Clip& clip, const std::string& cli
   return R;
 }
 
-RotationTrack decimated_track(const ClipReference& R, std::size_t joint, int keep_every) {
-  const std::vector<std::size_t> kf = key_frames(R.frames.size(), keep_every);
-  RotationTrack track;
-  track.times.resize(kf.size());
-  track.keys.resize(kf.size());
-  for (std::size_t i = 0; i < kf.size(); ++i) {
-    track.times[i] = R.frames[kf[i]];
-    track.keys[i] = R.original[joint][kf[i]];
-  }
-  track.make_sign_continuous();
-  return track;
-}
-
 Result<std::vector<ErrorRow>> evaluate_method(const ClipReference& R, const std::string& method,
                                               const ClipEvalOptions& options) {
   const Skeleton& skel = R.skeleton;
@@ -377,11 +295,11 @@ Result<std::vector<ErrorRow>> evaluate_method(const ClipReference& R, const std:
   WorldPose test_world;
   Block block;
   for (int keep : options.keep_every) {
-    const std::vector<std::size_t> kf = key_frames(nf, keep);
+    const std::vector<std::size_t> kf = keep_every_indices(nf, static_cast<std::size_t>(keep));
     std::vector<RotationTrack> tracks(nj);
     std::vector<std::unique_ptr<Interpolator>> curves(nj);
     for (std::size_t j = 0; j < nj; ++j) {
-      tracks[j] = decimated_track(R, j, keep);
+      tracks[j] = decimated_track(R.frames, R.original[j], kf);
       auto curve = make_interpolator(method, tracks[j]);
       if (!curve)
         return make_error(R.clip_id + ": joint '" + skel.joints[j].name + "', method " + method + ": " + curve.error());

@@ -46,30 +46,6 @@ double RunningError::rms() const { return count ? std::sqrt(sum_sq / static_cast
 
 // ---- skeleton geometry -------------------------------------------------------------
 
-std::vector<Vec3> bone_axes(const Skeleton& skeleton) {
-  const std::size_t n = skeleton.joints.size();
-  std::vector<Vec3> axis(n, Vec3::Zero());
-  std::vector<double> longest(n, 0.0);
-  auto consider = [&](int parent, const Vec3& offset) {
-    if (parent < 0 || static_cast<std::size_t>(parent) >= n || !offset.allFinite()) return;
-    const double len = offset.norm();
-    if (len > longest[parent]) {
-      longest[parent] = len;
-      axis[parent] = offset / len;
-    }
-  };
-  for (const Joint& j : skeleton.joints) consider(j.parent, j.offset);
-  for (const EndSite& e : skeleton.end_sites) consider(e.parent, e.offset);
-  for (std::size_t i = 0; i < n; ++i) {
-    if (longest[i] > 0.0) continue;
-    const Joint& j = skeleton.joints[i];
-    const Vec3 own = normalized_or_identity(j.rest_rotation).conjugate() * j.offset;
-    const double len = own.norm();
-    axis[i] = (len > 0.0 && std::isfinite(len)) ? Vec3(own / len) : Vec3::UnitX();
-  }
-  return axis;
-}
-
 WorldPose rest_pose(const Skeleton& skeleton) {
   std::vector<Quat> r(skeleton.joints.size());
   std::vector<Vec3> t(skeleton.joints.size());

@@ -137,12 +137,3 @@ TEST(Sampling, GridIsClampedToTheClipEnd) {
   g.end = 10;
   EXPECT_DOUBLE_EQ(g.time(1), 0.5 + 1.0 / 3.0);
 }
-
-TEST(Sampling, KeepEveryAlwaysKeepsTheLastFrame) {
-  EXPECT_EQ(keep_every_indices(10, 4), (std::vector<std::size_t>{0, 4, 8, 9}));
-  EXPECT_EQ(keep_every_indices(9, 4), (std::vector<std::size_t>{0, 4, 8}));
-  EXPECT_EQ(keep_every_indices(3, 1), (std::vector<std::size_t>{0, 1, 2}));
-  EXPECT_EQ(keep_every_indices(1, 8), (std::vector<std::size_t>{0}));
-  EXPECT_EQ(keep_every_indices(5, 100), (std::vector<std::size_t>{0, 4}));
-  EXPECT_TRUE(keep_every_indices(0, 3).empty());
-}

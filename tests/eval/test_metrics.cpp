@@ -1,5 +1,6 @@
 // Known answers for the error metrics of `rotinterp eval` (eval/metrics.h).
 #include "rotinterp/eval/metrics.h"
+#include "rotinterp/clip/frames.h"
 #include "rotinterp/interp/interpolator.h"
 
 #include <gtest/gtest.h>

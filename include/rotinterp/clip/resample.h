@@ -4,8 +4,8 @@
 //
 // Times. A source with a frame time (BVH "Frame Time", an FBX frame rate) has its
 // frame rate recognized exactly (clip/sampling.h: 0.008333 → 120 Hz), and its key
-// times are snapped to that exact grid first (a key within 5 % of a frame of
-// start + i·frame_time is the key of frame i), so 120 → 30 Hz lands exactly on
+// times are moved onto that exact grid first (each key to its frame, as
+// clip/frames.h assigns keys to frames), so 120 → 30 Hz lands exactly on
 // every 4th source frame. Output frame k is at start + k/HZ (k/HZ from integers),
 // k = 0 … floor(duration·HZ + 1e-9); it never lies past the clip's end.
 #pragma once

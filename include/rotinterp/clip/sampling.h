@@ -93,8 +93,4 @@ struct TimeGrid {
   std::vector<double> times() const;
 };
 
-// Frame indices kept as keys when keeping every nth of `frames` frames:
-// 0, n, 2n, … and always the last frame (frames − 1). n ≥ 1; empty for 0 frames.
-std::vector<std::size_t> keep_every_indices(std::size_t frames, std::size_t n);
-
 }  // namespace rotinterp

@@ -1,16 +1,14 @@
 // Evaluating one clip: decimate, rebuild with each method, measure (eval/metrics.h).
 //
-// The clip's frames are t_k = start + k·frame_time, k < frame_count() (for a clip
-// without a frame time: the key times of its longest rotation track). The
-// original's value at a frame is its key there, or the slerp of its two
-// neighbouring keys for sparse tracks; translations are linear between keys. For
-// keep_every N the keys are frames 0, N, 2N, … and always the last; each method is
-// built per joint on those keys and evaluated at every frame and, with subframe K,
+// The clip's frames, the original's value at each and the key frames for
+// keep_every N are those of clip/frames.h, shared with render and resample. Each
+// method is built per joint on those keys and evaluated at every frame and, with subframe K,
 // at K evenly spaced times between consecutive frames, where the reference is the
 // slerp of the two original frames (or `truth`, when given, everywhere).
 #pragma once
 
 #include "rotinterp/clip/clip.h"
+#include "rotinterp/clip/frames.h"
 #include "rotinterp/core/result.h"
 #include "rotinterp/eval/error_row.h"
 #include "rotinterp/eval/metrics.h"
@@ -67,12 +65,6 @@ double sample_time(const ClipReference& reference, std::size_t m);
 // Builds the reference of `clip` (validated first). Errors name the clip id.
 Result<ClipReference> prepare_reference(const Clip& clip, const std::string& clip_id,
                                         const ClipEvalOptions& options);
-
-// The key frames for keep_every n ≥ 1 (smaller reads as 1): 0, n, 2n, … and the last.
-std::vector<std::size_t> key_frames(std::size_t frames, int keep_every);
-
-// The keys one joint's curve is rebuilt from: the original at key_frames().
-RotationTrack decimated_track(const ClipReference& reference, std::size_t joint, int keep_every);
 
 // Rows of one method for every keep_every × joint, then End Site. Errors name the
 // clip, the joint and the method.

@@ -68,12 +68,6 @@ struct RunningError {
 
 // ---- skeleton geometry ------------------------------------------------------------
 
-// The bone axis of every joint, a unit vector in the joint's own frame: the
-// direction to its farthest child (joint or End Site rest offset). A joint without
-// a child of non-zero length continues its parent bone: its own offset carried into
-// its frame by the inverse rest rotation. Falls back to +x when that is zero too.
-std::vector<Vec3> bone_axes(const Skeleton& skeleton);
-
 // The rest pose: every joint at its rest rotation and offset.
 WorldPose rest_pose(const Skeleton& skeleton);
 

@@ -56,6 +56,17 @@ struct ComparisonResult {
   std::string gl;                            // renderer and GL version
 };
 
+// The angular error of a rebuilt pose at one frame, degrees: mean and max over the
+// animated joints (every joint when none is animated) — what a panel's title shows.
+struct FrameError {
+  double mean = 0.0;
+  double max = 0.0;
+};
+
+// `method`'s error at every frame of the clip (clip/frames.h, the frames eval
+// measures) when rebuilt from every keep_every-th frame.
+Result<std::vector<FrameError>> comparison_errors(const Clip& clip, const std::string& method, std::size_t keep_every);
+
 // The frames the options select in `clip` (checked against its frame count).
 Result<std::vector<std::size_t>> comparison_frames(const Clip& clip, const ComparisonOptions& options);
 

@@ -6,7 +6,7 @@
 // with the flags read_clip uses, one file after another; (2) the whole evaluation
 // (read_clip + all methods × keep-every 2,4,8,16, CSV + summary, no plots) with
 // --jobs 1 and (3) with --jobs 2. Each is the best of R runs (default 3). Prints
-// the ratio eval/import (goal ≤ 2; also for the five seed methods alone), clip-frames per second, and the --jobs 2
+// the ratio eval/import (goal ≤ 2; also for the five seed methods alone), clip-frames per second, and the --jobs 2
 // speedup (goal ≥ 1.7 on a machine with two free cores); then where the time goes:
 // read_clip alone and each method alone beyond it (CPU seconds), and each method's
 // own ratio: read_clip plus that method, all four spacings, against the import;
@@ -70,7 +70,7 @@ double import_all(const std::vector<std::string>& files, double& cpu) {
   return seconds_since(t0);
 }
 
-// The five methods the goal names (the seed set); c2 and expmap-c2 came later.
+// The seed methods, which the speed goal names; c2 and expmap-c2 came later.
 const std::vector<std::string> kSeedMethods = {"slerp", "squad", "expmap", "nlerp", "bf"};
 
 // `only`: these methods; empty: all of them.

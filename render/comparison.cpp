@@ -1,6 +1,7 @@
 #include "rotinterp/render/comparison.h"
 
 #include "rotinterp/clip/frames.h"
+#include "rotinterp/core/work_queue.h"
 #include "rotinterp/core/rotation.h"
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/render/layout.h"
@@ -11,11 +12,9 @@
 #include <atomic>
 #include <charconv>
 #include <cmath>
-#include <condition_variable>
 #include <deque>
+#include <future>
 #include <memory>
-#include <mutex>
-#include <thread>
 
 namespace rotinterp::render {
 
@@ -131,80 +130,50 @@ struct Rebuild {
   }
 };
 
-// Writes PNGs on worker threads while the GL thread draws the next frame.
+// Writes PNGs on the work queue while the GL thread draws the next frame, at most
+// kInFlight images at a time (bounded memory); the first failure stops it.
 class PngWriters {
  public:
-  PngWriters(unsigned threads, ProgressFn progress, std::size_t total)
-      : progress_(std::move(progress)), total_(total) {
-    for (unsigned i = 0; i < threads; ++i) workers_.emplace_back([this] { run(); });
-  }
-  ~PngWriters() { (void)finish(); }
+  PngWriters(ProgressFn progress, std::size_t total) : progress_(std::move(progress)), total_(total), queue_(2) {}
 
-  // Blocks while the queue is full (bounded memory).
-  void push(fs::path path, Image image) {
-    std::unique_lock<std::mutex> lock(mutex_);
-    space_.wait(lock, [&] { return queue_.size() < kQueue || !error_.empty(); });
-    queue_.push_back({std::move(path), std::move(image)});
-    ready_.notify_one();
+  // Blocks while kInFlight images wait. False once a write has failed.
+  bool push(fs::path path, Image image) {
+    while (writes_.size() >= kInFlight) collect_one();
+    if (!error_.empty()) return false;
+    writes_.push_back(queue_.submit([this, path = std::move(path), image = std::move(image)]() -> Status {
+      if (failed_) return Ok{};
+      Status s = write_png(image, path);
+      if (!s) {
+        failed_ = true;
+        return s;
+      }
+      if (progress_) progress_(++done_, total_);
+      return Ok{};
+    }));
+    return true;
   }
-  // Waits for every image to be written; the first error, if any.
+  // Waits for every image; the first error, if any.
   Status finish() {
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      closing_ = true;
-    }
-    ready_.notify_all();
-    for (auto& w : workers_)
-      if (w.joinable()) w.join();
-    workers_.clear();
+    while (!writes_.empty()) collect_one();
     if (!error_.empty()) return make_error(error_);
     return Ok{};
   }
-  bool failed() {
-    std::lock_guard<std::mutex> lock(mutex_);
-    return !error_.empty();
-  }
 
  private:
-  static constexpr std::size_t kQueue = 4;
-  struct Job {
-    fs::path path;
-    Image image;
-  };
-  void run() {
-    for (;;) {
-      Job job;
-      {
-        std::unique_lock<std::mutex> lock(mutex_);
-        ready_.wait(lock, [&] { return !queue_.empty() || closing_; });
-        if (queue_.empty()) return;
-        job = std::move(queue_.front());
-        queue_.pop_front();
-      }
-      space_.notify_one();
-      Status s = error_seen_ ? Status(Ok{}) : write_png(job.image, job.path);
-      if (!s) {
-        std::lock_guard<std::mutex> lock(mutex_);
-        if (error_.empty()) error_ = s.error();
-        error_seen_ = true;
-        space_.notify_all();
-        continue;
-      }
-      const std::size_t done = ++done_;
-      if (progress_) progress_(done, total_);
-    }
+  static constexpr std::size_t kInFlight = 4;
+  void collect_one() {
+    Status s = writes_.front().get();
+    writes_.pop_front();
+    if (!s && error_.empty()) error_ = s.error();
   }
 
   ProgressFn progress_;
   std::size_t total_;
   std::atomic<std::size_t> done_{0};
-  std::atomic<bool> error_seen_{false};
-  std::mutex mutex_;
-  std::condition_variable ready_, space_;
-  std::deque<Job> queue_;
-  bool closing_ = false;
+  std::atomic<bool> failed_{false};
+  std::deque<std::future<Status>> writes_;
   std::string error_;
-  std::vector<std::thread> workers_;
+  WorkQueue queue_;  // last: destroyed first, so its jobs finish while the members they use live
 };
 
 }  // namespace
@@ -361,7 +330,8 @@ Result<ComparisonResult> render_comparison(const Clip& clip, const fs::path& out
   ComparisonResult result;
   result.gl = (*renderer)->gl_description();
   const std::size_t total = frames.size() + (options.sheet ? 1 : 0);
-  PngWriters writers(2, options.progress, total);
+  PngWriters writers(options.progress, total);
+  bool writing = true;  // no write has failed yet
   std::vector<Panel> sheet(options.sheet ? frames.size() * options.methods.size() : 0);
   for (std::size_t i = 0; i < frames.size(); ++i) {
     const std::size_t f = frames[i];
@@ -391,14 +361,16 @@ Result<ComparisonResult> render_comparison(const Clip& clip, const fs::path& out
     if (!image) return make_error(image.error());
     fs::path path = out_dir / fmt::format("frame_{:06d}.png", f);
     result.files.push_back(path);
-    writers.push(std::move(path), std::move(image).value());
-    if (writers.failed()) break;
+    if (!writers.push(std::move(path), std::move(image).value())) {
+      writing = false;
+      break;
+    }
   }
-  if (options.sheet && !writers.failed()) {
+  if (options.sheet && writing) {
     auto image = (*renderer)->render(sheet, cell_w * sheet_columns, cell_h * methods, sheet_columns);
     if (!image) return make_error(image.error());
     result.files.push_back(out_dir / "sheet.png");
-    writers.push(result.files.back(), std::move(image).value());
+    (void)writers.push(result.files.back(), std::move(image).value());
   }
   if (Status s = writers.finish(); !s) return make_error(s.error());
   return result;

@@ -1,16 +1,14 @@
 #include "rotinterp/clip/resample.h"
 
 #include "rotinterp/clip/frames.h"
+#include "rotinterp/core/work_queue.h"
 #include "rotinterp/interp/interpolator.h"
 
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <exception>
 #include <memory>
-#include <mutex>
 #include <sstream>
-#include <system_error>
 #include <thread>
 
 namespace rotinterp {
@@ -240,40 +238,30 @@ Result<Clip> resample_clip(const Clip& in, const ResampleOptions& options) {
 
   out.rotations.resize(n);
   out.translations.resize(n);
-  std::vector<Status> status(n, Status(Ok{}));
-  std::atomic<std::size_t> next{0}, done{0};
-  // An exception on any thread (out of memory) stops the others and is rethrown
-  // once all are joined: a joinable thread destroyed while unwinding would abort.
-  std::exception_ptr failure;
-  std::mutex failure_mutex;
-  auto work = [&] {
-    try {
-      for (std::size_t j = next++; j < n; j = next++) {
-        status[j] = resample_joint(in, j, method[j], opt, grid, plan, out);
-        const std::size_t d = ++done;
-        if (opt.progress) opt.progress(d, n);
-      }
-    } catch (...) {
-      next = n;
-      std::lock_guard<std::mutex> lock(failure_mutex);
-      if (!failure) failure = std::current_exception();
-    }
-  };
   unsigned threads = opt.threads ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
   threads = static_cast<unsigned>(std::min<std::size_t>(threads, n));
   // Tiny jobs are faster on one thread.
   if (plan.eval_times.size() * n < 20000) threads = 1;
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < threads; ++t) {
-    try {
-      pool.emplace_back(work);
-    } catch (const std::system_error&) {
-      break;  // no more threads to be had: fewer do the work
-    }
+  std::vector<Status> status(n, Status(Ok{}));
+  {
+    std::atomic<std::size_t> done{0};
+    std::atomic<bool> stop{false};  // a joint failed by exception (out of memory): skip the rest
+    WorkQueue queue(threads);
+    std::vector<std::future<void>> joints;
+    for (std::size_t j = 0; j < n; ++j)
+      joints.push_back(queue.submit([&, j] {
+        if (stop) return;
+        try {
+          status[j] = resample_joint(in, j, method[j], opt, grid, plan, out);
+        } catch (...) {
+          stop = true;
+          throw;
+        }
+        const std::size_t d = ++done;
+        if (opt.progress) opt.progress(d, n);
+      }));
+    for (auto& f : joints) f.get();  // rethrows the first exception, in joint order
   }
-  work();
-  for (auto& t : pool) t.join();
-  if (failure) std::rethrow_exception(failure);
   for (std::size_t j = 0; j < n; ++j)
     if (!status[j]) return make_error("joint '" + in.skeleton.joints[j].name + "': " + status[j].error());
   return out;

@@ -3,9 +3,11 @@
 #include "rotinterp/eval/metrics.h"
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 
 namespace rotinterp {
 
@@ -111,6 +113,103 @@ std::string format_summary_table(const Summary& s) {
   }
   if (!s.worst_clip.empty()) out += fmt::format("worst clip (RMS at keep {}): {}\n", s.worst_keep_every, s.worst_clip);
   return out;
+}
+
+namespace {
+
+using nlohmann::json;
+
+json entry_json(const SummaryEntry& e) {
+  return {{"method", e.method},
+          {"keep_every", e.keep_every},
+          {"clips", e.clips},
+          {"joints", e.joints},
+          {"samples", e.samples},
+          {"mean_deg", e.mean_deg},
+          {"rms_deg", e.rms_deg},
+          {"p95_deg", e.p95_deg},
+          {"max_deg", e.max_deg},
+          {"swing_rms_deg", e.swing_rms_deg},
+          {"twist_rms_deg", e.twist_rms_deg},
+          {"pos_rms_pct", e.pos_rms_pct},
+          {"pos_max_pct", e.pos_max_pct},
+          {"shell_rms_pct", e.shell_rms_pct},
+          {"shell_max_pct", e.shell_max_pct},
+          {"acc_rms_dps2", e.acc_rms},
+          {"acc_rms_ref_dps2", e.acc_rms_ref},
+          {"vel_jump_max_dps", e.vel_jump_max},
+          {"acc_jump_max_dps2", e.acc_jump_max},
+          {"worst", {{"clip", e.worst_clip}, {"joint", e.worst_joint}}}};
+}
+
+}  // namespace
+
+std::string summary_json(const RunRecord& r, const Summary& summary) {
+  json failed = json::array();
+  for (const EvalFailure& f : r.failed) failed.push_back({{"file", f.file}, {"error", f.message}});
+  json j = {{"tool", "rotinterp eval"},
+            {"version", r.version},
+            {"inputs", r.inputs},
+            {"files", r.files},
+            {"options",
+             {{"methods", r.options.methods},
+              {"keep_every", r.options.keep_every},
+              {"subframe", r.options.subframe},
+              {"shell_distance_m", r.options.shell_distance_m},
+              {"truth", r.options.truth}}},
+            {"started", r.started},
+            {"seconds", r.seconds},
+            {"failed", failed},
+            {"skipped", r.skipped}};
+  if (r.merged_from.empty()) {
+    j["shard"] = {{"index", r.shard_index}, {"count", r.shard_count}};
+    j["jobs"] = r.jobs;
+  } else {
+    j["merged_from"] = r.merged_from;
+    j["merge_seconds"] = r.merge_seconds;
+  }
+  json results = json::array();
+  for (const SummaryEntry& e : summary.entries) results.push_back(entry_json(e));
+  j["clips_evaluated"] = summary.clips;
+  j["results"] = std::move(results);
+  j["worst_clip"] = {{"clip", summary.worst_clip}, {"keep_every", summary.worst_keep_every}};
+  j["units"] = {{"angles", "degrees"},
+                {"pct", "percent of each clip's skeleton height"},
+                {"acc", "deg/s^2"},
+                {"vel", "deg/s"}};
+  return j.dump(2) + "\n";
+}
+
+Result<RunRecord> read_summary_json(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) return make_error(file.string() + ": cannot read");
+  json j;
+  try {
+    j = json::parse(in);
+  } catch (const std::exception& e) {
+    return make_error(file.string() + ": not JSON (" + std::string(e.what()) + ")");
+  }
+  if (!j.is_object() || !j.contains("options") || !j.contains("failed") || !j.contains("files"))
+    return make_error(file.string() + ": not a rotinterp eval summary");
+  RunRecord r;
+  try {
+    const json& o = j["options"];
+    r.options.methods = o.at("methods").get<std::vector<std::string>>();
+    r.options.keep_every = o.at("keep_every").get<std::vector<int>>();
+    r.options.subframe = o.at("subframe").get<int>();
+    r.options.shell_distance_m = o.at("shell_distance_m").get<double>();
+    r.options.truth = o.at("truth").get<bool>();
+    r.inputs = j.value("inputs", std::vector<std::string>{});
+    r.skipped = j.value("skipped", std::vector<std::string>{});
+    for (const auto& f : j["failed"]) r.failed.push_back({f.at("file").get<std::string>(), f.at("error").get<std::string>()});
+    r.files = j["files"].get<std::size_t>();
+    r.seconds = j.value("seconds", 0.0);
+    r.version = j.value("version", "");
+    r.started = j.value("started", "");
+  } catch (const std::exception& e) {
+    return make_error(file.string() + ": malformed summary (" + std::string(e.what()) + ")");
+  }
+  return r;
 }
 
 }  // namespace rotinterp

@@ -1,11 +1,14 @@
 // Aggregates of errors.csv rows per method × keep_every, over all clips and
 // joints. Built from the rows alone, clip by clip in the order of errors.csv, so a
-// merge of shard outputs gives the same numbers as a single run.
+// merge of shard outputs gives the same numbers as a single run. And summary.json,
+// written and read here alone: the aggregates with the record of the run.
 #pragma once
 
+#include "rotinterp/core/result.h"
 #include "rotinterp/eval/error_row.h"
 
 #include <cstddef>
+#include <filesystem>
 #include <map>
 #include <string>
 #include <utility>
@@ -67,5 +70,47 @@ class SummaryBuilder {
 
 // The stdout table: one line per method × keep_every.
 std::string format_summary_table(const Summary& summary);
+
+struct EvalFailure {
+  std::string file;
+  std::string message;  // one line, names the file
+};
+
+// The options a run evaluated with: shard runs merge only when theirs are equal.
+struct RunOptions {
+  std::vector<std::string> methods;
+  std::vector<int> keep_every;
+  int subframe = 0;
+  double shell_distance_m = 0;
+  bool truth = false;
+  friend bool operator==(const RunOptions& a, const RunOptions& b) {
+    return a.methods == b.methods && a.keep_every == b.keep_every && a.subframe == b.subframe &&
+           a.shell_distance_m == b.shell_distance_m && a.truth == b.truth;
+  }
+};
+
+// What summary.json records of a run besides its results: a run of one shard, or
+// a merge of shard runs (merged_from non-empty).
+struct RunRecord {
+  std::string version;
+  std::vector<std::string> inputs;
+  std::size_t files = 0;
+  RunOptions options;
+  int shard_index = 1, shard_count = 1;  // a run
+  std::size_t jobs = 0;                  // a run
+  std::vector<std::string> merged_from;  // a merge
+  std::string started;                   // UTC, ISO 8601
+  double seconds = 0;                    // a run's wall time; a merge: its shards' summed
+  double merge_seconds = 0;              // a merge
+  std::vector<EvalFailure> failed;
+  std::vector<std::string> skipped;
+};
+
+// summary.json's text: the record, then the summary's results.
+std::string summary_json(const RunRecord& record, const Summary& summary);
+
+// The record of a summary.json (its results are rebuilt from errors.csv instead).
+// Errors name the file: unreadable, not JSON, not a rotinterp eval summary.
+Result<RunRecord> read_summary_json(const std::filesystem::path& file);
 
 }  // namespace rotinterp

@@ -1,5 +1,6 @@
 // rotinterp info CLIP [--json] [--anim NAME|INDEX]: what a clip file holds.
 #include "common.h"
+#include "rotinterp/clip/bvh_layout.h"
 #include "rotinterp/clip/resample.h"
 #include "rotinterp/io/info.h"
 
@@ -22,9 +23,9 @@ struct InfoArgs {
   bool json = false;
 };
 
-std::string layout_text(const Joint& j) {
+std::string layout_text(const std::vector<Channel>& channels) {
   std::string s;
-  for (Channel c : j.channels) s += (s.empty() ? "" : " ") + std::string(channel_name(c));
+  for (Channel c : channels) s += (s.empty() ? "" : " ") + std::string(channel_name(c));
   return s;
 }
 
@@ -72,7 +73,7 @@ int run_info(const InfoArgs& args) {
     for (std::size_t j = 0; j < sk.joints.size(); ++j) {
       const Joint& jt = sk.joints[j];
       nlohmann::json channels = nlohmann::json::array();
-      for (Channel c : jt.channels) channels.push_back(channel_name(c));
+      for (Channel c : bvh_channels(clip, j)) channels.push_back(channel_name(c));
       joints.push_back({{"name", jt.name},
                         {"parent", jt.parent >= 0 ? nlohmann::json(sk.joints[static_cast<std::size_t>(jt.parent)].name)
                                                   : nlohmann::json(nullptr)},
@@ -102,7 +103,7 @@ int run_info(const InfoArgs& args) {
   if (rate)
     fmt::print("frame rate:  {} Hz{} (frame time {} s)\n", rate->to_string(),
                rate->den == 1 ? std::string() : fmt::format(" = {:.9g} Hz", rate->hz()),
-               clip.frame_time_text.empty() ? fmt::format("{:.9g}", clip.frame_time) : clip.frame_time_text);
+               frame_time_text(clip).empty() ? fmt::format("{:.9g}", clip.frame_time) : frame_time_text(clip));
   else
     fmt::print("frame rate:  none (keys not on a uniform grid){}\n",
                clip.file_rate_hz > 0 ? fmt::format("; the file's own: {:.9g} Hz (resample's default)", clip.file_rate_hz) : "");
@@ -113,7 +114,7 @@ int run_info(const InfoArgs& args) {
   for (std::size_t j = 0; j < sk.joints.size(); ++j) {
     const Joint& jt = sk.joints[j];
     std::string extra;
-    if (!jt.channels.empty()) extra += "  [" + layout_text(jt) + "]";
+    if (!bvh_channels(clip, j).empty()) extra += "  [" + layout_text(bvh_channels(clip, j)) + "]";
     extra += "  " + std::to_string(clip.rotations[j].keys.size()) + " rotation keys";
     if (clip.translations[j]) extra += ", " + std::to_string(clip.translations[j]->keys.size()) + " translation keys";
     fmt::print("  {}{}{}\n", std::string(static_cast<std::size_t>(2 * depth[j]), ' '), jt.name, extra);

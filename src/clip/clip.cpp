@@ -48,18 +48,6 @@ Status TranslationTrack::validate() const {
   return Ok{};
 }
 
-const char* channel_name(Channel c) {
-  switch (c) {
-    case Channel::Xposition: return "Xposition";
-    case Channel::Yposition: return "Yposition";
-    case Channel::Zposition: return "Zposition";
-    case Channel::Xrotation: return "Xrotation";
-    case Channel::Yrotation: return "Yrotation";
-    case Channel::Zrotation: return "Zrotation";
-  }
-  return "?";
-}
-
 int Skeleton::find(std::string_view name) const {
   for (std::size_t i = 0; i < joints.size(); ++i)
     if (joints[i].name == name) return static_cast<int>(i);

@@ -1,5 +1,6 @@
 #include "rotinterp/clip/resample.h"
 
+#include "rotinterp/clip/bvh_layout.h"
 #include "rotinterp/clip/frames.h"
 #include "rotinterp/core/work_queue.h"
 #include "rotinterp/interp/interpolator.h"
@@ -193,6 +194,7 @@ Result<Clip> resample_clip(const Clip& in, const ResampleOptions& options) {
   Clip out;
   out.name = in.name;
   out.skeleton = in.skeleton;
+  out.bvh_layout = in.bvh_layout;
   out.unit_scale = in.unit_scale;
   out.source_format = in.source_format;
   out.source_meshes = in.source_meshes;
@@ -212,7 +214,6 @@ Result<Clip> resample_clip(const Clip& in, const ResampleOptions& options) {
     }
     for (std::size_t k : keep_every_indices(i1 - i0 + 1, *opt.keep_every)) plan.key_times.push_back(grid->exact_time(i0 + k));
     out.frame_time = in.frame_time;
-    out.frame_time_text = in.frame_time_text;
   } else {
     const Rate rate = opt.fps ? *opt.fps : *grid->rate;
     TimeGrid g;
@@ -229,10 +230,10 @@ Result<Clip> resample_clip(const Clip& in, const ResampleOptions& options) {
       o.end = start + (b - a);
       plan.out_times = o.times();
       out.frame_time = rate.period();
+      out.bvh_layout = without_frame_time_text(in.bvh_layout);  // its Frame Time no longer holds
     } else {
       for (std::size_t k = 0; k < g.count; ++k) plan.out_times.push_back(label(*grid, k));
       out.frame_time = in.frame_time;
-      out.frame_time_text = in.frame_time_text;
     }
   }
 

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <memory>
 #include <optional>
 #include <string>
 #include <system_error>
@@ -431,10 +432,17 @@ Result<BvhFile> parse_bvh(std::string_view text, const std::string& label) {
 
 Skeleton bvh_skeleton(const BvhFile& file) {
   Skeleton s;
-  for (const BvhJoint& j : file.joints) s.joints.push_back(Joint{j.name, j.parent, j.offset, Quat::Identity(), j.channels});
+  for (const BvhJoint& j : file.joints) s.joints.push_back(Joint{j.name, j.parent, j.offset, Quat::Identity()});
   for (const BvhEndSite& e : file.end_sites)
     s.end_sites.push_back(EndSite{e.parent, e.offset, "EndSite_" + file.joints[static_cast<std::size_t>(e.parent)].name});
   return s;
+}
+
+BvhLayout bvh_layout(const BvhFile& file) {
+  BvhLayout layout;
+  for (const BvhJoint& j : file.joints) layout.channels.push_back(j.channels);
+  layout.frame_time_text = file.frame_time_text;
+  return layout;
 }
 
 namespace {
@@ -478,7 +486,7 @@ Clip bvh_to_clip(const BvhFile& file, const std::string& name) {
   clip.name = name;
   clip.skeleton = bvh_skeleton(file);
   clip.frame_time = file.frame_time;
-  clip.frame_time_text = file.frame_time_text;
+  clip.bvh_layout = std::make_shared<const BvhLayout>(bvh_layout(file));
   clip.source_format = "bvh";
   const std::size_t n = file.joints.size();
   const std::size_t frames = file.frames;

@@ -177,10 +177,10 @@ Status write_bvh(const Clip& clip, std::ostream& out, const WriteOptions& option
     if (Status s = on_grid(clip.rotations[j].times, joint.name); !s) return s;
     if (clip.translations[j])
       if (Status s = on_grid(clip.translations[j]->times, joint.name); !s) return s;
-    if (!joint.channels.empty()) {
-      layout[j] = joint.channels;
+    if (const std::vector<Channel>& channels = bvh_channels(clip, j); !channels.empty()) {
+      layout[j] = channels;
       bool has_position = false;
-      for (Channel c : joint.channels) has_position = has_position || !is_rotation(c);
+      for (Channel c : channels) has_position = has_position || !is_rotation(c);
       if (clip.translations[j] && !has_position)
         return make_error(label + ": joint '" + joint.name +
                           "' has a translation track but its BVH channels have no position channel");
@@ -261,7 +261,7 @@ Status write_bvh(const Clip& clip, std::ostream& out, const WriteOptions& option
 
   text += "MOTION\nFrames: " + std::to_string(frames) + "\nFrame Time: ";
   double parsed = 0.0;
-  const std::string& ftt = clip.frame_time_text;
+  const std::string& ftt = frame_time_text(clip);
   if (!ftt.empty() && std::from_chars(ftt.data(), ftt.data() + ftt.size(), parsed).ec == std::errc() && parsed == ft)
     text += ftt;
   else

@@ -2,9 +2,12 @@
 // doubles, strings and arrays as a count followed by their items.
 #include "clip_wire.h"
 
+#include "rotinterp/clip/bvh_layout.h"
+
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <memory>
 
 namespace rotinterp::wire {
 
@@ -137,13 +140,15 @@ void get(Reader& r, std::vector<double>& v) {
 void put(Writer& w, const Clip& clip) {
   w.str(clip.name);
   w.u64(clip.skeleton.joints.size());
-  for (const Joint& j : clip.skeleton.joints) {
+  for (std::size_t i = 0; i < clip.skeleton.joints.size(); ++i) {
+    const Joint& j = clip.skeleton.joints[i];
     w.str(j.name);
     w.i64(j.parent);
     w.vec3(j.offset);
     w.quat(j.rest_rotation);
-    w.u64(j.channels.size());
-    for (Channel c : j.channels) w.u8(static_cast<std::uint8_t>(c));
+    const std::vector<Channel>& channels = bvh_channels(clip, i);
+    w.u64(channels.size());
+    for (Channel c : channels) w.u8(static_cast<std::uint8_t>(c));
   }
   w.u64(clip.skeleton.end_sites.size());
   for (const EndSite& e : clip.skeleton.end_sites) {
@@ -166,7 +171,7 @@ void put(Writer& w, const Clip& clip) {
     for (const Vec3& v : t->keys) w.vec3(v);
   }
   w.f64(clip.frame_time);
-  w.str(clip.frame_time_text);
+  w.str(frame_time_text(clip));
   w.f64(clip.unit_scale);
   w.str(clip.source_format);
   w.u64(clip.source_meshes);
@@ -176,13 +181,18 @@ void put(Writer& w, const Clip& clip) {
 void get(Reader& r, Clip& clip) {
   clip.name = r.str();
   clip.skeleton.joints.resize(r.count(kString + 8 + kVec3 + kQuat + kCount));
+  // The layout travels as each joint's channels and the Frame Time text: a clip
+  // has one when any of them is there.
+  BvhLayout layout;
+  bool has_layout = false;
   for (Joint& j : clip.skeleton.joints) {
     j.name = r.str();
     j.parent = r.index();
     j.offset = r.vec3();
     j.rest_rotation = r.quat();
-    j.channels.resize(r.count(1));
-    for (Channel& c : j.channels) {
+    std::vector<Channel>& channels = layout.channels.emplace_back(r.count(1));
+    has_layout = has_layout || !channels.empty();
+    for (Channel& c : channels) {
       const std::uint8_t v = r.u8();
       if (v > static_cast<std::uint8_t>(Channel::Zrotation)) r.fail();
       c = static_cast<Channel>(v);
@@ -209,7 +219,8 @@ void get(Reader& r, Clip& clip) {
     for (Vec3& v : t->keys) v = r.vec3();
   }
   clip.frame_time = r.f64();
-  clip.frame_time_text = r.str();
+  layout.frame_time_text = r.str();
+  if (has_layout || !layout.frame_time_text.empty()) clip.bvh_layout = std::make_shared<const BvhLayout>(std::move(layout));
   clip.unit_scale = r.f64();
   clip.source_format = r.str();
   clip.source_meshes = r.size();

@@ -1,6 +1,7 @@
 #include "fbx_write.h"
 
 #include "fbx_encode.h"
+#include "rotinterp/clip/bvh_layout.h"
 #include "rotinterp/clip/resample.h"
 #include "rotinterp/clip/sampling.h"
 #include "rotinterp/io/euler.h"
@@ -62,10 +63,10 @@ std::vector<std::int64_t> fbx_ticks(const std::vector<double>& times, const std:
 // The joint's rotation order: its BVH rotation channels when they are three
 // different axes (FBX has only those six orders), else FBX's default XYZ
 // (R = Rz·Ry·Rx: our outermost-first ZYX).
-EulerAxes joint_axes(const Joint& joint) {
+EulerAxes joint_axes(const std::vector<Channel>& channels) {
   EulerAxes axes{};
   int n = 0;
-  for (Channel c : joint.channels) {
+  for (Channel c : channels) {
     if (c < Channel::Xrotation) continue;
     if (n == 3) return {2, 1, 0};
     axes[static_cast<std::size_t>(n++)] = static_cast<int>(c) - static_cast<int>(Channel::Xrotation);
@@ -169,7 +170,7 @@ Result<std::string> encode_fbx(const Clip& clip, FbxEncoding encoding) {
   std::vector<Curves> rot(n), pos(n);
   std::vector<Vec3> rest_euler(n);
   for (std::size_t j = 0; j < n; ++j) {
-    axes[j] = joint_axes(sk.joints[j]);
+    axes[j] = joint_axes(bvh_channels(clip, j));
     // Angle i of a sequence turns about axis axes[i]; FBX stores them by axis (X, Y, Z).
     const Vec3 rest = euler_nearest(sk.joints[j].rest_rotation, axes[j], Vec3::Zero()) * kDegrees;
     for (int i = 0; i < 3; ++i) rest_euler[j][axes[j][static_cast<std::size_t>(i)]] = rest[i];

@@ -15,8 +15,8 @@ namespace {
 Clip two_joint_clip(std::size_t frames, double frame_time) {
   Clip clip;
   clip.frame_time = frame_time;
-  clip.skeleton.joints = {Joint{"root", -1, Vec3::Zero(), Quat::Identity(), {}},
-                          Joint{"arm", 0, Vec3(0, 1, 0), Quat::Identity(), {}}};
+  clip.skeleton.joints = {Joint{"root", -1, Vec3::Zero(), Quat::Identity()},
+                          Joint{"arm", 0, Vec3(0, 1, 0), Quat::Identity()}};
   clip.rotations.resize(2);
   clip.translations.resize(2);
   for (std::size_t k = 0; k < frames; ++k) {

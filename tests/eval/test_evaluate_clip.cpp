@@ -22,7 +22,7 @@ Clip constant_velocity_clip(std::size_t frames, double fps) {
   const Vec3 omegas[] = {{0.5, -1.0, 2.0}, {-2.5, 0.3, 1.0}, {0.0, 3.0, 0.0}, {1.2, 1.2, -1.2}};
   for (int j = 0; j < 4; ++j) {
     c.skeleton.joints.push_back({"j" + std::to_string(j), j - 1, j == 0 ? Vec3::Zero() : Vec3(0, 10, 0),
-                                 Quat::Identity(), {}});
+                                 Quat::Identity()});
     RotationTrack r;
     const Quat q0 = exp(RotVec(0.3 * j, -0.2, 0.1 * j));
     for (std::size_t k = 0; k < frames; ++k) {

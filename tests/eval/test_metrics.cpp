@@ -180,9 +180,9 @@ TEST(Metrics, RunningErrorMatchesStoredStatistics) {
 // root at the origin → "upper" 1 unit up y → "lower" 1 unit further, End Site L along z.
 Skeleton three_joint_arm(double end_length) {
   Skeleton s;
-  s.joints.push_back({"root", -1, Vec3::Zero(), Quat::Identity(), {}});
-  s.joints.push_back({"upper", 0, Vec3(0, 1, 0), Quat::Identity(), {}});
-  s.joints.push_back({"lower", 1, Vec3(0, 1, 0), Quat::Identity(), {}});
+  s.joints.push_back({"root", -1, Vec3::Zero(), Quat::Identity()});
+  s.joints.push_back({"upper", 0, Vec3(0, 1, 0), Quat::Identity()});
+  s.joints.push_back({"lower", 1, Vec3(0, 1, 0), Quat::Identity()});
   s.end_sites.push_back({2, Vec3(0, 0, end_length), "EndSite_lower"});
   return s;
 }
@@ -255,8 +255,8 @@ TEST(Metrics, EqualPosesCountAsZeroErrorSamples) {
 
 TEST(Metrics, BoneAxisPointsToTheLongestChildOrContinuesTheParentBone) {
   Skeleton s = three_joint_arm(0.5);
-  s.joints.push_back({"side", 0, Vec3(0.2, 0, 0), Quat::Identity(), {}});   // shorter child of root
-  s.joints.push_back({"leaf", 3, Vec3(0, 0, -3), exp(RotVec(0, kPi / 2, 0)), {}});  // no child
+  s.joints.push_back({"side", 0, Vec3(0.2, 0, 0), Quat::Identity()});   // shorter child of root
+  s.joints.push_back({"leaf", 3, Vec3(0, 0, -3), exp(RotVec(0, kPi / 2, 0))});  // no child
   ASSERT_TRUE(s.validate().ok());
   const std::vector<Vec3> axes = bone_axes(s);
   EXPECT_TRUE(axes[0].isApprox(Vec3::UnitY()));  // "upper" (length 1) beats "side" (0.2)
@@ -271,7 +271,7 @@ TEST(Metrics, SkeletonHeightIsTheLargestRestExtent) {
   const Skeleton s = three_joint_arm(0.5);
   EXPECT_DOUBLE_EQ(skeleton_height(rest_pose(s)), 2.0);
   Skeleton one;
-  one.joints.push_back({"only", -1, Vec3(1, 2, 3), Quat::Identity(), {}});
+  one.joints.push_back({"only", -1, Vec3(1, 2, 3), Quat::Identity()});
   EXPECT_EQ(skeleton_height(rest_pose(one)), 0.0);
 }
 

@@ -2,6 +2,7 @@
 // and -0.0 differ, and a NaN equals only the same NaN).
 #pragma once
 
+#include "rotinterp/clip/bvh_layout.h"
 #include "rotinterp/io/info.h"
 
 #include <gtest/gtest.h>
@@ -35,7 +36,7 @@ inline void expect_identical(const Clip& a, const Clip& b, const std::string& wh
     EXPECT_EQ(x.parent, y.parent);
     EXPECT_TRUE(same(x.offset, y.offset));
     EXPECT_TRUE(same(x.rest_rotation, y.rest_rotation));
-    EXPECT_EQ(x.channels, y.channels);
+    EXPECT_EQ(bvh_channels(a, j), bvh_channels(b, j));
   }
   ASSERT_EQ(a.skeleton.end_sites.size(), b.skeleton.end_sites.size());
   for (std::size_t e = 0; e < a.skeleton.end_sites.size(); ++e) {
@@ -66,7 +67,8 @@ inline void expect_identical(const Clip& a, const Clip& b, const std::string& wh
     for (std::size_t k = 0; k < x.keys.size(); ++k) EXPECT_TRUE(same(x.keys[k], y.keys[k])) << "key " << k;
   }
   EXPECT_TRUE(same_bits(a.frame_time, b.frame_time)) << a.frame_time << " vs " << b.frame_time;
-  EXPECT_EQ(a.frame_time_text, b.frame_time_text);
+  EXPECT_EQ(a.bvh_layout == nullptr, b.bvh_layout == nullptr);
+  EXPECT_EQ(frame_time_text(a), frame_time_text(b));
   EXPECT_TRUE(same_bits(a.unit_scale, b.unit_scale)) << a.unit_scale << " vs " << b.unit_scale;
   EXPECT_EQ(a.source_format, b.source_format);
 }

@@ -1,5 +1,7 @@
 #include "io_test_util.h"
 
+#include "rotinterp/clip/bvh_layout.h"
+
 #include <unistd.h>
 
 #include <algorithm>
@@ -78,7 +80,7 @@ WorldPose pose_at(const Clip& clip, double t) {
 Clip resample_uniform(const Clip& clip, double frame_time) {
   Clip out = clip;
   out.frame_time = frame_time;
-  out.frame_time_text.clear();
+  out.bvh_layout = without_frame_time_text(clip.bvh_layout);
   const double start = clip.start_time();
   const std::size_t frames = static_cast<std::size_t>(std::floor((clip.end_time() - start) / frame_time + 1e-9)) + 1;
   for (std::size_t j = 0; j < clip.skeleton.joints.size(); ++j) {

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <memory>
 
 namespace rotinterp {
 namespace {
@@ -27,10 +28,9 @@ ClipFileInfo every_field_set() {
   Clip& c = info.clip;
   c.name = "Gehen \xC3\xBC";
   c.skeleton.joints = {
-      {"Hips", -1, Vec3(1.0, -0.0, 3.25), Quat(0.5, 0.5, -0.5, 0.5),
-       {Channel::Xposition, Channel::Yposition, Channel::Zposition, Channel::Zrotation, Channel::Xrotation, Channel::Yrotation}},
-      {"", 0, Vec3(std::numeric_limits<double>::denorm_min(), 1e-300, -7.0), Quat(1.0, 0.0, 0.0, -0.0), {}},
-      {"\xE8\x82\xA9", 1, Vec3(0.1, 0.2, 0.3), Quat(0.0, 1.0, 0.0, 0.0), {Channel::Yrotation}},
+      {"Hips", -1, Vec3(1.0, -0.0, 3.25), Quat(0.5, 0.5, -0.5, 0.5)},
+      {"", 0, Vec3(std::numeric_limits<double>::denorm_min(), 1e-300, -7.0), Quat(1.0, 0.0, 0.0, -0.0)},
+      {"\xE8\x82\xA9", 1, Vec3(0.1, 0.2, 0.3), Quat(0.0, 1.0, 0.0, 0.0)},
   };
   c.skeleton.end_sites = {{2, Vec3(0.0, 4.5, 0.0), "EndSite_\xE8\x82\xA9"}, {0, Vec3(-1.0, 0.0, 1.0), ""}};
   c.rotations.resize(3);
@@ -40,7 +40,11 @@ ClipFileInfo every_field_set() {
   c.translations = {TranslationTrack{{0.0, 0.5}, {Vec3(1, 2, 3), Vec3(4, 5, 6)}}, std::nullopt,
                     TranslationTrack{{0.25}, {Vec3(-0.0, 0.0, 1e-320)}}};
   c.frame_time = 1.0 / 120.0;
-  c.frame_time_text = ".0083333";
+  c.bvh_layout = std::make_shared<const BvhLayout>(BvhLayout{
+      {{Channel::Xposition, Channel::Yposition, Channel::Zposition, Channel::Zrotation, Channel::Xrotation, Channel::Yrotation},
+       {},
+       {Channel::Yrotation}},
+      ".0083333"});
   c.unit_scale = 0.01;
   c.source_format = "bvh";
   return info;

@@ -3,6 +3,7 @@
 // that assimp reads back with the same joints, frames, rate and poses.
 #include "fbx_write.h"
 #include "io_test_util.h"
+#include "rotinterp/clip/bvh_layout.h"
 #include "rotinterp/clip/resample.h"
 #include "rotinterp/io/read.h"
 #include "rotinterp/io/write.h"
@@ -112,7 +113,7 @@ TEST(FbxWrite, EulerCurvesTakeTheSolutionNearestThePreviousKey) {
   for (std::size_t j = 0; j < clip.skeleton.joints.size(); ++j) {
     const std::size_t first = j == 0 ? 0 : 3 + 3 * j;  // the root's translation curves follow its rotation curves
     std::vector<std::size_t> seq;  // curve index (X, Y, Z) of each angle in sequence order
-    for (Channel c : clip.skeleton.joints[j].channels)
+    for (Channel c : bvh_channels(clip, j))
       if (c >= Channel::Xrotation) seq.push_back(first + static_cast<std::size_t>(c) - static_cast<std::size_t>(Channel::Xrotation));
     ASSERT_EQ(seq.size(), 3u);
     for (std::size_t k = 1; k < values[first].size(); ++k) {

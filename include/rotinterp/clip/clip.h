@@ -11,13 +11,17 @@
 #include "rotinterp/core/result.h"
 #include "rotinterp/core/rotation.h"
 
+#include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace rotinterp {
+
+struct BvhLayout;  // clip/bvh_layout.h
 
 // Rotation keys of one joint.
 // Invariants (checked by validate()):
@@ -43,16 +47,11 @@ struct TranslationTrack {
   Status validate() const;
 };
 
-// BVH channel kinds, as in a CHANNELS line.
-enum class Channel : std::uint8_t { Xposition, Yposition, Zposition, Xrotation, Yrotation, Zrotation };
-const char* channel_name(Channel c);  // "Xposition", …
-
 struct Joint {
   std::string name;
   int parent = -1;                       // index into Skeleton::joints, −1 for a root
   Vec3 offset = Vec3::Zero();            // rest translation in the parent's frame
   Quat rest_rotation = Quat::Identity(); // rest local rotation (identity for BVH)
-  std::vector<Channel> channels;         // BVH channel layout; empty for other sources
 };
 
 // A BVH "End Site": a leaf point with an offset from its joint and no channels.
@@ -84,9 +83,6 @@ struct Clip {
   // One entry per joint; empty where the joint has no translation keys.
   std::vector<std::optional<TranslationTrack>> translations;
   double frame_time = 0.0;    // seconds per frame of the source (BVH Frame Time), 0 if none
-  // BVH source: the Frame Time exactly as written in its header (e.g. ".0083333"). The
-  // BVH writer reuses this text while it still parses to frame_time; empty otherwise.
-  std::string frame_time_text;
   double unit_scale = 1.0;    // metres per clip unit where the source says so (FBX cm → 0.01)
   std::string source_format;  // "bvh", "fbx", … (informational)
   std::size_t source_meshes = 0;  // meshes (with their skins) in the source: no writer keeps them
@@ -94,6 +90,9 @@ struct Clip {
   // GlobalSettings TimeMode / CustomFrameRate), Hz; 0 if none. resample's default
   // output rate when the keys lie on no grid (frame_time 0).
   double file_rate_hz = 0.0;
+  // The layout of a BVH source (clip/bvh_layout.h), kept for the writers; null for
+  // other sources. Shared between copies and never changed: replace it instead.
+  std::shared_ptr<const BvhLayout> bvh_layout;
 
   // Invariants: skeleton valid; one rotation and one translation entry per joint;
   // every track valid.

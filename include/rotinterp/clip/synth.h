@@ -19,7 +19,7 @@
 //  * walk     — a 31-joint walking figure (CMU naming: Hips, LeftUpLeg, …, RThumb)
 //               with a 1 Hz gait: hip/knee/ankle flexion, arm swing, pelvis
 //               rotation and bob, walking along +Z at ~1.2 units·100/s.
-// Every joint gets a random BVH rotation order (Joint::channels, seeded); roots have
+// Every joint gets a random BVH rotation order (Clip::bvh_layout, seeded); roots have
 // Xposition Yposition Zposition first. The same options always give the same clip.
 // Keep the per-frame rotation below π: spin at fps < 8 Hz aliases.
 #pragma once
@@ -30,6 +30,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -78,7 +79,8 @@ struct JointMotion {
 
 class SynthMotion {
  public:
-  SynthMotion(Skeleton skeleton, std::vector<JointMotion> motion);
+  // `layout`: the BVH layout sampled clips carry (may be null).
+  SynthMotion(Skeleton skeleton, std::vector<JointMotion> motion, std::shared_ptr<const BvhLayout> layout = nullptr);
 
   const Skeleton& skeleton() const { return skeleton_; }
   const std::vector<JointMotion>& motion() const { return motion_; }
@@ -97,6 +99,7 @@ class SynthMotion {
  private:
   Skeleton skeleton_;
   std::vector<JointMotion> motion_;
+  std::shared_ptr<const BvhLayout> layout_;
 };
 
 // The spec file `rotinterp synth` writes next to a clip: "<clip_file>.synth".

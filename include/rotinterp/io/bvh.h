@@ -15,6 +15,7 @@
 //    offset itself in them); components without a channel keep the OFFSET.
 #pragma once
 
+#include "rotinterp/clip/bvh_layout.h"
 #include "rotinterp/clip/clip.h"
 #include "rotinterp/core/result.h"
 #include "rotinterp/io/write.h"
@@ -76,16 +77,20 @@ constexpr double kMaxBvhFrameTime = 3600.0;       // seconds: one frame an hour
 // no stack. A UTF-8 byte order mark is skipped; UTF-16 text is refused as such.
 Result<BvhFile> parse_bvh(std::string_view text, const std::string& label);
 
-// The skeleton of a parsed file: joints (names, parents, OFFSETs, channel layout,
-// identity rest rotations) and End Sites named "EndSite_<joint>".
+// The skeleton of a parsed file: joints (names, parents, OFFSETs, identity rest
+// rotations) and End Sites named "EndSite_<joint>".
 Skeleton bvh_skeleton(const BvhFile& file);
+// Its layout: every joint's CHANNELS and the Frame Time text.
+BvhLayout bvh_layout(const BvhFile& file);
 
 // A clip read entirely from the parsed file (double precision, no assimp). Key k
-// is at k·frame_time; joints with position channels get translation tracks.
+// is at k·frame_time; joints with position channels get translation tracks. The
+// clip carries the file's layout (Clip::bvh_layout).
 Clip bvh_to_clip(const BvhFile& file, const std::string& name);
 
 // Writes `clip` as BVH text. Joints keep the clip's order (parents must come
-// first), OFFSETs, End Sites and channel layout; joints without a layout get
+// first), OFFSETs, End Sites and channel layout (Clip::bvh_layout, and its Frame
+// Time text while that still parses to frame_time); joints without channels get
 // `options.bvh_order` rotation channels, plus position channels where they have a
 // translation track. Rotation values are the Euler angles, in each joint's channel
 // order, nearest to the previous frame's (no ±180° wraps); values have 6 decimals.

@@ -112,4 +112,47 @@ GroundGrid ground_grid(const Bounds& bounds) {
   return g;
 }
 
+double pixels_at_target(const Camera& camera, double radius, int viewport_height) {
+  return radius / ((camera.eye - camera.target).norm() * std::tan(0.5 * camera.fov_y)) * 0.5 * viewport_height;
+}
+
+Vec3 unit_or_zero(const Vec3& v) {
+  const double n = v.norm();
+  return n > 0.0 && std::isfinite(n) ? Vec3(v / n) : Vec3::Zero();
+}
+
+TrailView trail_view(const std::vector<Vec3>& reference, const std::vector<Vec3>& method, const ViewAngles& scene_view) {
+  Vec3 mean = Vec3::Zero();
+  for (const Vec3& d : reference) mean += unit_or_zero(d);
+  mean /= static_cast<double>(reference.size());
+  Vec3 toward;
+  if (mean.norm() > 0.2) {
+    toward = mean.normalized();
+  } else {
+    const double az = scene_view.azimuth_deg * kPi / 180.0;
+    const double el = std::max(scene_view.elevation_deg, 20.0) * kPi / 180.0;
+    toward = Vec3(std::sin(az) * std::cos(el), std::sin(el), std::cos(az) * std::cos(el));
+  }
+  TrailView view;
+  Camera& camera = view.camera;
+  camera.eye = 3.9 * toward;
+  camera.target = Vec3::Zero();
+  camera.up = std::abs(toward.y()) < 0.95 ? Vec3::UnitY() : Vec3::UnitZ();
+  // Tangent of the angle between the view axis and each sample, seen from the eye.
+  double spread = 0.0;
+  for (const std::vector<Vec3>* curve : {&reference, &method})
+    for (const Vec3& d : *curve) {
+      const Vec3 u = unit_or_zero(d);
+      spread = std::max(spread, (u - u.dot(toward) * toward).norm() / (camera.eye.norm() - std::max(u.dot(toward), 0.0)));
+    }
+  const double max_half = 18.0 * kPi / 180.0;
+  const double half = std::clamp(std::atan(1.25 * spread + 0.02), 1.5 * kPi / 180.0, max_half);
+  view.zoom = std::tan(half) / std::tan(max_half);
+  camera.fov_y = 2.0 * half;
+  camera.aspect = 1.0;
+  camera.near_plane = 2.0;
+  camera.far_plane = 6.0;
+  return view;
+}
+
 }  // namespace rotinterp::render

@@ -1,6 +1,7 @@
 #include "rotinterp/render/layout.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace rotinterp::render {
 
@@ -27,6 +28,45 @@ std::vector<Rect> grid_layout(int count, int columns, int width, int height) {
   const int w = width / columns, h = height / rows;
   for (int i = 0; i < count; ++i) rects.push_back(Rect{(i % columns) * w, (i / columns) * h, w, h});
   return rects;
+}
+
+PanelLayout panel_layout(int width, int height, bool trail) {
+  PanelLayout l;
+  l.title_height = std::clamp(static_cast<int>(std::lround(0.075 * height)), 14, 40);
+  const int scene_height = height - l.title_height;
+  l.figure = Rect{0, l.title_height, width, scene_height};
+  if (!trail) return l;
+  const int margin = std::max(4, std::min(width, scene_height) / 60);
+  if (width * 5 <= scene_height * 6) {
+    const int side = std::min(width - 2 * margin, static_cast<int>(std::lround(0.34 * scene_height)));
+    l.inset = Rect{width - side - margin, height - margin - side, side, side};
+    l.figure.height = scene_height - side - margin;
+  } else {
+    const int side = std::min(scene_height - 2 * margin, static_cast<int>(std::lround(0.34 * width)));
+    l.inset = Rect{width - side - margin, l.title_height + margin, side, side};
+    l.figure.width = width - side - margin;
+  }
+  return l;
+}
+
+int fitting_height(const TextWidth& width, int pixel_height, float max_width) {
+  while (pixel_height > 8 && width(pixel_height) > max_width) --pixel_height;
+  return pixel_height;
+}
+
+TextItem title_text(const std::string& title, const PanelLayout& layout, int panel_width, const TextWidth& width) {
+  const int strip = layout.title_height;
+  const float pad = static_cast<float>(std::max(4, strip / 3));
+  const int px = fitting_height(width, static_cast<int>(std::lround(0.62 * strip)), static_cast<float>(panel_width) - 2 * pad);
+  const float line = static_cast<float>(px) * 1.15f;
+  return TextItem{title, pad, std::round((static_cast<float>(strip) - line) * 0.5f), px};
+}
+
+TextItem inset_label(const std::string& label, const Rect& inset, const TextWidth& width) {
+  const int side = inset.width;
+  const float pad = static_cast<float>(std::max(3, side / 40));
+  const int px = fitting_height(width, std::clamp(side / 11, 9, 22), static_cast<float>(side) - 2 * pad);
+  return TextItem{label, static_cast<float>(inset.x) + pad, static_cast<float>(inset.y) + pad, px};
 }
 
 }  // namespace rotinterp::render

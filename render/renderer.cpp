@@ -2,12 +2,13 @@
 
 #include "font.h"
 #include "gl_api.h"
+#include "rotinterp/render/geometry.h"
 #include "rotinterp/render/layout.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
+#include <cstddef>
 #include <map>
 #include <string>
 #include <utility>
@@ -107,179 +108,17 @@ constexpr float kBackground[3] = {0.155f, 0.165f, 0.185f};
 constexpr float kTitleStrip[3] = {0.095f, 0.100f, 0.115f};
 constexpr float kInsetBackground[3] = {0.120f, 0.128f, 0.145f};
 constexpr float kTitleText[4] = {0.93f, 0.93f, 0.93f, 1.0f};
-constexpr float kGridLine[4] = {0.30f, 0.32f, 0.35f, 1.0f};
-constexpr float kSphereWire[4] = {0.30f, 0.32f, 0.36f, 1.0f};
-constexpr Color kGhostColor = {0.84f, 0.87f, 0.92f};
-constexpr float kGhostAlpha = 0.33f;
-constexpr Color kKeyMarker = {0.96f, 0.96f, 0.96f};
 
-// Trail geometry on the unit sphere (sphere radii).
-constexpr float kTrailReferenceRadius = 0.034f;
-constexpr float kTrailMethodRadius = 0.017f;
-constexpr float kTrailKeyRadius = 0.036f;
-constexpr float kTrailCurrentRadius = 0.065f;
-constexpr std::size_t kMaxTrailSegments = 720;  // longer trails are drawn with a stride
-constexpr std::size_t kMaxKeyMarkers = 64;      // more keys than this are not marked (clutter)
-
-// ---- meshes ------------------------------------------------------------------
-
-struct Instance {
-  float model[16];  // column-major
-  float color[4];
-};
+// ---- GL meshes: the unit meshes of geometry.h with a buffer of instances ------
 
 struct Mesh {
   GLuint vao = 0, vertices = 0, indices = 0, instances = 0;
   GLsizei index_count = 0;
 };
 
-using Vertices = std::vector<float>;  // x y z nx ny nz
-using Indices = std::vector<unsigned>;
-
-// Radius 1, from z = 0 to z = 1, open (joint spheres close it).
-void cylinder_mesh(int sides, Vertices& v, Indices& idx) {
-  for (int i = 0; i <= sides; ++i) {
-    const double a = kTwoPi * i / sides;
-    const float c = static_cast<float>(std::cos(a)), s = static_cast<float>(std::sin(a));
-    for (float z : {0.0f, 1.0f}) v.insert(v.end(), {c, s, z, c, s, 0.0f});
-  }
-  for (unsigned i = 0; i < static_cast<unsigned>(sides); ++i) {
-    const unsigned a = 2 * i, b = 2 * i + 1, c = 2 * i + 2, d = 2 * i + 3;
-    idx.insert(idx.end(), {a, c, b, b, c, d});
-  }
-}
-
-// Unit sphere, latitude/longitude.
-void sphere_mesh(int slices, int stacks, Vertices& v, Indices& idx) {
-  for (int j = 0; j <= stacks; ++j) {
-    const double phi = kPi * j / stacks;
-    for (int i = 0; i <= slices; ++i) {
-      const double theta = kTwoPi * i / slices;
-      const float x = static_cast<float>(std::sin(phi) * std::cos(theta));
-      const float y = static_cast<float>(std::cos(phi));
-      const float z = static_cast<float>(std::sin(phi) * std::sin(theta));
-      v.insert(v.end(), {x, y, z, x, y, z});
-    }
-  }
-  const unsigned row = static_cast<unsigned>(slices + 1);
-  for (unsigned j = 0; j < static_cast<unsigned>(stacks); ++j)
-    for (unsigned i = 0; i < static_cast<unsigned>(slices); ++i) {
-      const unsigned a = j * row + i, b = a + 1, c = a + row, d = c + 1;
-      idx.insert(idx.end(), {a, b, c, b, d, c});
-    }
-}
-
 Eigen::Matrix4f to_float(const Eigen::Matrix4d& m) { return m.cast<float>(); }
 
-Instance make_instance(const Eigen::Matrix4d& model, const Color& color, float alpha) {
-  Instance in;
-  const Eigen::Matrix4f f = model.cast<float>();
-  std::memcpy(in.model, f.data(), sizeof in.model);  // Eigen is column-major, like GL
-  in.color[0] = color[0];
-  in.color[1] = color[1];
-  in.color[2] = color[2];
-  in.color[3] = alpha;
-  return in;
-}
-
-// Batches of instances for one look (colour, alpha).
-struct Batch {
-  std::vector<Instance> cylinders;
-  std::vector<Instance> spheres;
-  void clear() {
-    cylinders.clear();
-    spheres.clear();
-  }
-  void sphere(const Vec3& p, double radius, const Color& color, float alpha) {
-    Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
-    m.block<3, 3>(0, 0) = Mat3::Identity() * radius;
-    m.block<3, 1>(0, 3) = p;
-    spheres.push_back(make_instance(m, color, alpha));
-  }
-  // A capsule's body from a to b; skipped when shorter than `min_length`.
-  void cylinder(const Vec3& a, const Vec3& b, double radius, double min_length, const Color& color, float alpha) {
-    const Vec3 d = b - a;
-    const double length = d.norm();
-    if (!(length > min_length)) return;
-    const Mat3 r = Quat::FromTwoVectors(Vec3::UnitZ(), d / length).toRotationMatrix();
-    Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
-    m.block<3, 3>(0, 0) = r * Eigen::Vector3d(radius, radius, length).asDiagonal();
-    m.block<3, 1>(0, 3) = a;
-    cylinders.push_back(make_instance(m, color, alpha));
-  }
-};
-
-bool pose_usable(const WorldPose& pose, const Skeleton& skeleton) {
-  return pose.position.size() == skeleton.joints.size() && !pose.position.empty();
-}
-
-// Capsule bones joint → parent and End Site → joint, and a sphere at every joint.
-void add_pose(const Skeleton& skeleton, const WorldPose& pose, double radius, const Color& color, float alpha,
-              Batch& batch) {
-  if (!pose_usable(pose, skeleton)) return;
-  const double min_length = radius * 1e-3;
-  for (std::size_t j = 0; j < skeleton.joints.size(); ++j) {
-    const int p = skeleton.joints[j].parent;
-    if (p >= 0) batch.cylinder(pose.position[static_cast<std::size_t>(p)], pose.position[j], radius, min_length, color, alpha);
-    batch.sphere(pose.position[j], radius, color, alpha);
-  }
-  if (pose.end_site_position.size() != skeleton.end_sites.size()) return;
-  for (std::size_t e = 0; e < skeleton.end_sites.size(); ++e) {
-    const Vec3& a = pose.position[static_cast<std::size_t>(skeleton.end_sites[e].parent)];
-    const Vec3& b = pose.end_site_position[e];
-    batch.cylinder(a, b, radius, min_length, color, alpha);
-    batch.sphere(b, radius, color, alpha);
-  }
-}
-
-Vec3 unit_or_zero(const Vec3& v) {
-  const double n = v.norm();
-  return n > 0.0 && std::isfinite(n) ? Vec3(v / n) : Vec3::Zero();
-}
-
-// A tube through `points` (every `stride`-th, and the last).
-void add_curve(const std::vector<Vec3>& points, std::size_t stride, double radius, const Color& color, float alpha,
-               Batch& batch) {
-  if (points.empty()) return;
-  std::size_t previous = 0;
-  batch.sphere(unit_or_zero(points[0]), radius, color, alpha);
-  for (std::size_t i = stride; ; i += stride) {
-    const std::size_t k = std::min(i, points.size() - 1);
-    if (k == previous) break;
-    const Vec3 a = unit_or_zero(points[previous]), b = unit_or_zero(points[k]);
-    batch.cylinder(a, b, radius, 1e-6, color, alpha);
-    batch.sphere(b, radius, color, alpha);
-    previous = k;
-  }
-}
-
-void push_line(std::vector<float>& lines, const Vec3& a, const Vec3& b, const float rgba[4]) {
-  for (const Vec3* p : {&a, &b})
-    lines.insert(lines.end(), {static_cast<float>(p->x()), static_cast<float>(p->y()), static_cast<float>(p->z()),
-                               rgba[0], rgba[1], rgba[2], rgba[3]});
-}
-
-struct TextItem {
-  std::string text;
-  float x;         // left, pixels
-  float top;       // top of the line box, pixels from the panel's top
-  int pixel_height;
-};
-
 }  // namespace
-
-double scene_bone_radius(const Skeleton& skeleton, const Bounds& bounds) {
-  std::vector<double> lengths;
-  for (const Joint& j : skeleton.joints)
-    if (j.parent >= 0 && j.offset.norm() > 0.0) lengths.push_back(j.offset.norm());
-  for (const EndSite& e : skeleton.end_sites)
-    if (e.offset.norm() > 0.0) lengths.push_back(e.offset.norm());
-  const double diagonal = bounds.empty() ? 1.0 : std::max(bounds.size().norm(), 1e-9);
-  if (lengths.empty()) return 0.01 * diagonal;
-  std::nth_element(lengths.begin(), lengths.begin() + static_cast<std::ptrdiff_t>(lengths.size() / 2), lengths.end());
-  const double median = lengths[lengths.size() / 2];
-  return std::clamp(0.1 * median, 0.004 * diagonal, 0.02 * diagonal);
-}
 
 struct Renderer::Impl {
   std::unique_ptr<GLContext> context;
@@ -309,9 +148,9 @@ struct Renderer::Impl {
   int fbo_width = 0, fbo_height = 0;
   std::vector<std::uint8_t> readback;
 
-  std::vector<float> grid_lines;    // world space
-  std::vector<float> sphere_lines;  // unit sphere wireframe
-  Batch batch;
+  LineList grid;    // world space
+  LineList sphere_lines;
+  Batch solid, translucent;
   std::vector<TextItem> texts;
 
   ~Impl() {
@@ -365,7 +204,9 @@ struct Renderer::Impl {
     return program;
   }
 
-  void make_mesh(Mesh& mesh, const Vertices& v, const Indices& idx) {
+  void make_mesh(Mesh& mesh, const MeshData& data) {
+    const std::vector<float>& v = data.vertices;
+    const std::vector<unsigned>& idx = data.indices;
     gl.GenVertexArrays(1, &mesh.vao);
     gl.BindVertexArray(mesh.vao);
     gl.GenBuffers(1, &mesh.vertices);
@@ -437,17 +278,9 @@ struct Renderer::Impl {
     text_color = gl.GetUniformLocation(text_program, "u_color");
     text_atlas = gl.GetUniformLocation(text_program, "u_atlas");
 
-    Vertices v;
-    Indices idx;
     for (int level = 0; level < 2; ++level) {
-      v.clear();
-      idx.clear();
-      cylinder_mesh(level ? 24 : 10, v, idx);
-      make_mesh(cylinder[level], v, idx);
-      v.clear();
-      idx.clear();
-      sphere_mesh(level ? 24 : 10, level ? 14 : 6, v, idx);
-      make_mesh(sphere[level], v, idx);
+      make_mesh(cylinder[level], cylinder_mesh(level ? 24 : 10));
+      make_mesh(sphere[level], sphere_mesh(level ? 24 : 10, level ? 14 : 6));
     }
     make_dynamic(line_vao, line_vbo, 3, 4);
     make_dynamic(text_vao, text_vbo, 2, 2);
@@ -456,7 +289,8 @@ struct Renderer::Impl {
     if (!f) return make_error(f.error());
     font = *f;
 
-    build_static_lines();
+    grid = grid_lines(scene.bounds);
+    sphere_lines = sphere_wireframe();
     if (GLenum e = gl.GetError(); e != GL_NO_ERROR) return gl_error("setup", e);
     return Ok{};
   }
@@ -465,33 +299,6 @@ struct Renderer::Impl {
     char hex[16];
     std::snprintf(hex, sizeof hex, "0x%04X", code);
     return make_error(std::string(backend_name(context->backend())) + ": OpenGL error " + hex + " during " + where);
-  }
-
-  void build_static_lines() {
-    const GroundGrid g = ground_grid(scene.bounds);
-    const auto nx = static_cast<long>(std::llround((g.x1 - g.x0) / g.step));
-    const auto nz = static_cast<long>(std::llround((g.z1 - g.z0) / g.step));
-    for (long i = 0; i <= nx; ++i) {
-      const double x = g.x0 + static_cast<double>(i) * g.step;
-      push_line(grid_lines, Vec3(x, g.y, g.z0), Vec3(x, g.y, g.z1), kGridLine);
-    }
-    for (long i = 0; i <= nz; ++i) {
-      const double z = g.z0 + static_cast<double>(i) * g.step;
-      push_line(grid_lines, Vec3(g.x0, g.y, z), Vec3(g.x1, g.y, z), kGridLine);
-    }
-    // Unit sphere: parallels every 30°, meridians every 30°, 48 segments each.
-    constexpr int kSegments = 48;
-    auto point = [](double lat, double lon) {
-      return Vec3(std::cos(lat) * std::sin(lon), std::sin(lat), std::cos(lat) * std::cos(lon));
-    };
-    for (int p = -2; p <= 2; ++p)
-      for (int s = 0; s < kSegments; ++s)
-        push_line(sphere_lines, point(p * kPi / 6, kTwoPi * s / kSegments), point(p * kPi / 6, kTwoPi * (s + 1) / kSegments),
-                  kSphereWire);
-    for (int m = 0; m < 6; ++m)
-      for (int s = 0; s < kSegments; ++s)
-        push_line(sphere_lines, point(-kPi / 2 + kPi * s / kSegments, m * kPi / 6),
-                  point(-kPi / 2 + kPi * (s + 1) / kSegments, m * kPi / 6), kSphereWire);
   }
 
   const GLAtlas& atlas(int pixel_height) {
@@ -580,9 +387,7 @@ struct Renderer::Impl {
   // `radius` (world units) at the target seen from `camera` in a viewport
   // `viewport_height` pixels high picks the level of detail: fine from 6 px.
   void use_mesh_program(const Camera& camera, double radius, int viewport_height) {
-    const double pixels = radius / ((camera.eye - camera.target).norm() * std::tan(0.5 * camera.fov_y)) *
-                          0.5 * viewport_height;
-    detail = pixels >= 6.0 ? 1 : 0;
+    detail = pixels_at_target(camera, radius, viewport_height) >= 6.0 ? 1 : 0;
     const Eigen::Matrix4f vp = to_float(camera.projection() * camera.view());
     const Vec3 back = (camera.eye - camera.target).normalized();
     const Vec3 right = camera.up.cross(back).normalized();
@@ -654,85 +459,33 @@ struct Renderer::Impl {
     texts.clear();
   }
 
-  // A text line fitting `max_width`: the pixel height shrinks (not below 8 px) until
-  // it fits; past that the text is clipped by the panel.
-  int fitting_height(const std::string& text, int pixel_height, float max_width) {
-    while (pixel_height > 8 && atlas(pixel_height).atlas.text_width(text) > max_width) --pixel_height;
-    return pixel_height;
+  // The width of `text` at a pixel height, in the font drawn.
+  TextWidth text_width(const std::string& text) {
+    return [this, &text](int pixel_height) { return atlas(pixel_height).atlas.text_width(text); };
   }
 
-  // The trail inset (GL coordinates, y from the bottom); `height` is the panel's.
+  // A viewport and scissor box at `r` (y downwards) of a panel `height` pixels high.
+  void viewport(const Rect& r, int height) { gl.Viewport(r.x, height - (r.y + r.height), r.width, r.height); }
+  void scissor(const Rect& r, int height) { gl.Scissor(r.x, height - (r.y + r.height), r.width, r.height); }
+
   void draw_trail(const Panel& panel, const Trail& trail, const Rect& inset, int height) {
-    const int side = inset.width, x = inset.x, y = inset.y;
     gl.Enable(GL_SCISSOR_TEST);
-    gl.Scissor(x, y, side, side);
+    scissor(inset, height);
     gl.ClearColor(kInsetBackground[0], kInsetBackground[1], kInsetBackground[2], 1.0f);
     gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    gl.Viewport(x, y, side, side);
-
-    // Look at the sphere from the trail's mean direction, so the curve faces the
-    // viewer; the scene's view direction where the mean is near zero.
-    Vec3 mean = Vec3::Zero();
-    for (const Vec3& d : trail.reference) mean += unit_or_zero(d);
-    mean /= static_cast<double>(trail.reference.size());
-    Vec3 toward;
-    if (mean.norm() > 0.2) {
-      toward = mean.normalized();
-    } else {
-      const double az = scene.view.azimuth_deg * kPi / 180.0;
-      const double el = std::max(scene.view.elevation_deg, 20.0) * kPi / 180.0;
-      toward = Vec3(std::sin(az) * std::cos(el), std::sin(el), std::cos(az) * std::cos(el));
-    }
-    Camera camera;
-    camera.eye = 3.9 * toward;
-    camera.target = Vec3::Zero();
-    camera.up = std::abs(toward.y()) < 0.95 ? Vec3::UnitY() : Vec3::UnitZ();
-    // Zoom on the curves: the field of view holds the farthest sample from the view
-    // axis with a margin; at most the whole sphere (half-angle 18°), at least 1.5°.
-    double spread = 0.0;
-    for (const std::vector<Vec3>* curve : {&trail.reference, &trail.method})
-      for (const Vec3& d : *curve) {
-        const Vec3 u = unit_or_zero(d);
-        spread = std::max(spread, (u - u.dot(toward) * toward).norm() / (camera.eye.norm() - std::max(u.dot(toward), 0.0)));
-      }
-    const double max_half = 18.0 * kPi / 180.0;
-    const double half = std::clamp(std::atan(1.25 * spread + 0.02), 1.5 * kPi / 180.0, max_half);
-    const double zoom = std::tan(half) / std::tan(max_half);  // tubes and markers shrink with the view
-    camera.fov_y = 2.0 * half;
-    camera.aspect = 1.0;
-    camera.near_plane = 2.0;
-    camera.far_plane = 6.0;
-    draw_lines(sphere_lines, to_float(camera.projection() * camera.view()));
-
-    const std::size_t n = trail.reference.size();
-    const std::size_t stride = std::max<std::size_t>(1, (n + kMaxTrailSegments - 1) / kMaxTrailSegments);
-    use_mesh_program(camera, zoom * kTrailReferenceRadius, side);
-    batch.clear();
-    add_curve(trail.method, stride, zoom * kTrailMethodRadius, panel.color, 1.0f, batch);
-    if (trail.keys.size() <= kMaxKeyMarkers)
-      for (std::size_t k : trail.keys)
-        if (k < trail.method.size()) batch.sphere(unit_or_zero(trail.method[k]), zoom * kTrailKeyRadius, kKeyMarker, 1.0f);
-    if (trail.current < trail.method.size())
-      batch.sphere(unit_or_zero(trail.method[trail.current]), zoom * kTrailCurrentRadius, panel.color, 1.0f);
-    draw_opaque(batch);
-    batch.clear();
-    add_curve(trail.reference, stride, zoom * kTrailReferenceRadius, kGhostColor, kGhostAlpha, batch);
-    if (trail.current < n)
-      batch.sphere(unit_or_zero(trail.reference[trail.current]), zoom * kTrailCurrentRadius * 1.25, kGhostColor, kGhostAlpha);
-    draw_translucent(batch);
+    viewport(inset, height);
+    const TrailView view = trail_view(trail.reference, trail.method, scene.view);
+    draw_lines(sphere_lines, to_float(view.camera.projection() * view.camera.view()));
+    use_mesh_program(view.camera, view.zoom * kTrailReferenceRadius, inset.height);
+    trail_figure(trail, panel.color, view.zoom, solid, translucent);
+    draw_opaque(solid);
+    draw_translucent(translucent);
     gl.Disable(GL_SCISSOR_TEST);
-
-    if (!trail.label.empty()) {
-      const float pad = static_cast<float>(std::max(3, side / 40));
-      const int px = fitting_height(trail.label, std::clamp(side / 11, 9, 22), static_cast<float>(side) - 2 * pad);
-      // Pixel rows from the panel's top: the inset's top edge is at height − (y + side).
-      texts.push_back(TextItem{trail.label, static_cast<float>(x) + pad, static_cast<float>(height - (y + side)) + pad, px});
-    }
+    if (!trail.label.empty()) texts.push_back(inset_label(trail.label, inset, text_width(trail.label)));
   }
 
   Status draw_panel(const Panel& panel, int width, int height) {
-    const int title_height = std::clamp(static_cast<int>(std::lround(0.075 * height)), 14, 40);
-    const int scene_height = height - title_height;
+    const PanelLayout layout = panel_layout(width, height, panel.trail && !panel.trail->reference.empty());
     gl.BindFramebuffer(GL_FRAMEBUFFER, msaa_fbo);
     gl.Viewport(0, 0, width, height);
     gl.Disable(GL_SCISSOR_TEST);
@@ -742,46 +495,24 @@ struct Renderer::Impl {
     gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     gl.Enable(GL_SCISSOR_TEST);
-    gl.Scissor(0, scene_height, width, title_height);
+    scissor(Rect{0, 0, width, layout.title_height}, height);
     gl.ClearColor(kTitleStrip[0], kTitleStrip[1], kTitleStrip[2], 1.0f);
     gl.Clear(GL_COLOR_BUFFER_BIT);
     gl.Disable(GL_SCISSOR_TEST);
 
-    // With a trail the figure and the inset share the scene area without
-    // overlapping: the inset below the figure in tall panels, beside it in wide ones.
-    Rect view{0, 0, width, scene_height};
-    Rect inset;
-    if (panel.trail && !panel.trail->reference.empty()) {
-      const int margin = std::max(4, std::min(width, scene_height) / 60);
-      if (width * 5 <= scene_height * 6) {
-        const int side = std::min(width - 2 * margin, static_cast<int>(std::lround(0.34 * scene_height)));
-        inset = Rect{width - side - margin, margin, side, side};
-        view = Rect{0, side + margin, width, scene_height - side - margin};
-      } else {
-        const int side = std::min(scene_height - 2 * margin, static_cast<int>(std::lround(0.34 * width)));
-        inset = Rect{width - side - margin, scene_height - side - margin, side, side};
-        view = Rect{0, 0, width - side - margin, scene_height};
-      }
-    }
-    gl.Viewport(view.x, view.y, view.width, view.height);
+    const Rect& figure = layout.figure;
+    viewport(figure, height);
     gl.Enable(GL_DEPTH_TEST);
     gl.Enable(GL_MULTISAMPLE);
-    const Camera camera = frame_bounds(scene.bounds, static_cast<double>(view.width) / view.height, scene.view);
-    draw_lines(grid_lines, to_float(camera.projection() * camera.view()));
-    use_mesh_program(camera, scene.bone_radius, view.height);
-    batch.clear();
-    add_pose(scene.skeleton, panel.pose, scene.bone_radius, panel.color, 1.0f, batch);
-    draw_opaque(batch);
-    batch.clear();
-    add_pose(scene.skeleton, panel.ghost, scene.bone_radius * 1.02, kGhostColor, kGhostAlpha, batch);
-    draw_translucent(batch);
-    if (inset.width >= 32) draw_trail(panel, *panel.trail, inset, height);
+    const Camera camera = frame_bounds(scene.bounds, static_cast<double>(figure.width) / figure.height, scene.view);
+    draw_lines(grid, to_float(camera.projection() * camera.view()));
+    use_mesh_program(camera, scene.bone_radius, figure.height);
+    panel_figure(scene, panel, solid, translucent);
+    draw_opaque(solid);
+    draw_translucent(translucent);
+    if (layout.inset.width >= 32) draw_trail(panel, *panel.trail, layout.inset, height);
 
-    const float pad = static_cast<float>(std::max(4, title_height / 3));
-    const int px = fitting_height(panel.title, static_cast<int>(std::lround(0.62 * title_height)),
-                                  static_cast<float>(width) - 2 * pad);
-    const float line = static_cast<float>(px) * 1.15f;
-    texts.push_back(TextItem{panel.title, pad, std::round((static_cast<float>(title_height) - line) * 0.5f), px});
+    texts.push_back(title_text(panel.title, layout, width, text_width(panel.title)));
     draw_texts(width, height);
     if (GLenum e = gl.GetError(); e != GL_NO_ERROR) return gl_error("drawing a panel", e);
     return Ok{};

@@ -1,4 +1,5 @@
-// Camera framing, ground grid and panel layout: pure geometry, no GL.
+// Camera framing, ground grid, the trail inset's view, and the layout of panels
+// and of what is in them: pure geometry, no GL.
 #include "rotinterp/render/camera.h"
 #include "rotinterp/render/layout.h"
 #include "rotinterp/render/renderer.h"
@@ -6,6 +7,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
+#include <vector>
 
 namespace rotinterp::render {
 namespace {
@@ -65,6 +68,77 @@ TEST(Framing, GroundGridUsesA125StepAndCoversTheBoxOnTheFloor) {
   EXPECT_DOUBLE_EQ(ground_grid(box(Vec3(0, 0, 0), Vec3(0.3, 1, 0.1))).step, 0.05);  // 0.0375 → 0.05
 }
 
+TEST(Framing, PixelsAtTargetScaleWithTheViewportAndTheField) {
+  Camera camera;
+  camera.eye = Vec3(0, 0, 10);
+  camera.fov_y = 2.0 * std::atan(0.5);  // the viewport's half-height is 5 units at the target
+  EXPECT_NEAR(pixels_at_target(camera, 5.0, 400), 200.0, 1e-9);
+  EXPECT_NEAR(pixels_at_target(camera, 1.0, 400), 40.0, 1e-9);
+  camera.eye = Vec3(0, 0, 20);
+  EXPECT_NEAR(pixels_at_target(camera, 1.0, 400), 20.0, 1e-9);
+}
+
+// The trail's unit vector at p seen by `view` is inside the square inset and between its planes.
+void expect_seen(const TrailView& view, const Vec3& p) {
+  const Eigen::Vector3d q = ndc(view.camera, unit_or_zero(p));
+  EXPECT_LT(std::abs(q.x()), 1.0) << p.transpose();
+  EXPECT_LT(std::abs(q.y()), 1.0) << p.transpose();
+  EXPECT_GT(q.z(), -1.0);
+  EXPECT_LT(q.z(), 1.0);
+}
+
+TEST(Framing, TrailViewLooksAlongTheReferencesMeanAndSeesEverySample) {
+  const Vec3 centre = Vec3(0.3, 0.5, 0.8).normalized();
+  const Vec3 side = centre.cross(Vec3::UnitY()).normalized(), up = side.cross(centre);
+  std::vector<Vec3> reference, method;
+  for (int i = 0; i <= 40; ++i) {
+    const double a = 0.01 * (i - 20);
+    reference.push_back(2.0 * (centre + a * side));  // not unit: normalized
+    method.push_back(centre + a * side + 0.05 * up);
+  }
+  const TrailView view = trail_view(reference, method, ViewAngles{});
+  EXPECT_GT(view.camera.eye.normalized().dot(centre), 0.9999);
+  EXPECT_NEAR(view.camera.target.norm(), 0.0, 1e-12);
+  EXPECT_EQ(view.camera.aspect, 1.0) << "the inset is square";
+  EXPECT_GT(view.zoom, 0.0);
+  EXPECT_LT(view.zoom, 0.5) << "a short trail is zoomed on";
+  EXPECT_NEAR(std::tan(0.5 * view.camera.fov_y), view.zoom * std::tan(18.0 * kPi / 180.0), 1e-12);
+  for (const auto* curve : {&reference, &method})
+    for (const Vec3& p : *curve) expect_seen(view, p);
+  // The sphere's front stays between the planes.
+  expect_seen(view, centre);
+}
+
+TEST(Framing, TrailViewOfATrailAroundTheSphereLooksFromTheScenesViewAndSeesAllOfIt) {
+  std::vector<Vec3> ring;
+  for (int i = 0; i < 36; ++i) ring.push_back(Vec3(std::cos(i * kPi / 18), 0, std::sin(i * kPi / 18)));
+  ViewAngles angles;
+  angles.azimuth_deg = 30.0;
+  angles.elevation_deg = 5.0;  // raised to 20°
+  const TrailView view = trail_view(ring, ring, angles);
+  const double az = 30.0 * kPi / 180.0, el = 20.0 * kPi / 180.0;
+  const Vec3 toward(std::sin(az) * std::cos(el), std::sin(el), std::cos(az) * std::cos(el));
+  EXPECT_LT((view.camera.eye.normalized() - toward).norm(), 1e-12);
+  EXPECT_DOUBLE_EQ(view.zoom, 1.0) << "the whole sphere";
+  EXPECT_NEAR(view.camera.fov_y, 36.0 * kPi / 180.0, 1e-12);
+}
+
+TEST(Framing, TrailViewOfOneSampleHasTheNarrowestField) {
+  const TrailView view = trail_view({Vec3::UnitY()}, {Vec3::UnitY()}, ViewAngles{});
+  EXPECT_NEAR(view.camera.fov_y, 3.0 * kPi / 180.0, 1e-12);
+  EXPECT_NEAR(view.zoom, std::tan(1.5 * kPi / 180.0) / std::tan(18.0 * kPi / 180.0), 1e-12);
+  const Eigen::Matrix3d r = view.camera.view().block<3, 3>(0, 0);
+  EXPECT_TRUE((r * r.transpose()).isApprox(Eigen::Matrix3d::Identity(), 1e-9)) << "looking along +Y needs another up";
+  expect_seen(view, Vec3::UnitY());
+}
+
+TEST(Framing, UnitOrZeroNormalizesDirectionsOnly) {
+  EXPECT_LT((unit_or_zero(Vec3(0, 3, 4)) - Vec3(0, 0.6, 0.8)).norm(), 1e-15);
+  EXPECT_EQ(unit_or_zero(Vec3::Zero()), Vec3::Zero());
+  EXPECT_EQ(unit_or_zero(Vec3(std::nan(""), 1, 0)), Vec3::Zero());
+  EXPECT_EQ(unit_or_zero(Vec3(HUGE_VAL, 1, 0)), Vec3::Zero());
+}
+
 TEST(Layout, PanelsAreEqualAndTileWithinTheImage) {
   for (int count = 1; count <= 9; ++count) {
     const int columns = automatic_columns(count, 961, 541);
@@ -85,6 +159,92 @@ TEST(Layout, ThreeMethodsInAWideFrameSitSideBySide) {
   EXPECT_EQ(automatic_columns(3, 960, 540), 3);
   EXPECT_EQ(automatic_columns(4, 960, 540), 2);  // 2×2: 480×270 beats 240×540
   EXPECT_EQ(automatic_columns(2, 400, 900), 1);
+}
+
+bool overlap(const Rect& a, const Rect& b) {
+  return a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height;
+}
+
+TEST(Layout, WithoutATrailTheFigureFillsThePanelUnderTheTitle) {
+  const PanelLayout l = panel_layout(320, 240, false);
+  EXPECT_EQ(l.title_height, 18);  // 0.075 × 240
+  EXPECT_EQ(l.figure.x, 0);
+  EXPECT_EQ(l.figure.y, 18);
+  EXPECT_EQ(l.figure.width, 320);
+  EXPECT_EQ(l.figure.height, 222);
+  EXPECT_EQ(l.inset.width, 0);
+  EXPECT_EQ(panel_layout(320, 100, false).title_height, 14);
+  EXPECT_EQ(panel_layout(320, 2000, false).title_height, 40);
+}
+
+TEST(Layout, TheTrailInsetIsASquareInsideThePanelBesideOrBelowTheFigure) {
+  for (const auto& [width, height] : std::vector<std::pair<int, int>>{{320, 240}, {480, 270}, {200, 400}, {960, 1080}, {64, 48}, {1000, 90}}) {
+    const PanelLayout l = panel_layout(width, height, true);
+    const Rect& f = l.figure;
+    const Rect& i = l.inset;
+    const int scene_height = height - l.title_height;
+    SCOPED_TRACE(std::to_string(width) + "x" + std::to_string(height));
+    EXPECT_EQ(i.width, i.height);
+    EXPECT_GT(i.width, 0);
+    EXPECT_GE(i.x, 0);
+    EXPECT_LE(i.x + i.width, width);
+    EXPECT_GE(i.y, l.title_height);
+    EXPECT_LE(i.y + i.height, height);
+    EXPECT_GE(f.y, l.title_height);
+    EXPECT_LE(f.x + f.width, width);
+    EXPECT_LE(f.y + f.height, height);
+    EXPECT_FALSE(overlap(f, i));
+    if (width * 5 <= scene_height * 6) {  // tall: the inset below the figure, at the bottom right
+      EXPECT_EQ(f.width, width);
+      EXPECT_LE(f.y + f.height, i.y);
+      EXPECT_GT(i.y + i.height, height - i.height / 4);
+    } else {  // wide: beside it, at the top right
+      EXPECT_EQ(f.height, scene_height);
+      EXPECT_LE(f.x + f.width, i.x);
+      EXPECT_LT(i.y, l.title_height + i.height / 4);
+    }
+    EXPECT_GT(i.x + i.width, width - i.width / 4) << "at the right";
+  }
+}
+
+// A text whose glyphs are all 0.6 of the pixel height wide.
+TextWidth glyphs(std::size_t count) {
+  return [count](int pixel_height) { return 0.6f * static_cast<float>(pixel_height) * static_cast<float>(count); };
+}
+
+TEST(Layout, TextShrinksUntilItFitsButNotBelowEightPixels) {
+  EXPECT_EQ(fitting_height(glyphs(10), 30, 100.0f), 16);  // 0.6 × 16 × 10 = 96
+  EXPECT_EQ(fitting_height(glyphs(10), 12, 100.0f), 12);
+  EXPECT_EQ(fitting_height(glyphs(10), 30, 1.0f), 8);
+  EXPECT_EQ(fitting_height(glyphs(10), 6, 1.0f), 6);
+}
+
+TEST(Layout, TitleIsCentredInItsStripAndFitsThePanel) {
+  const PanelLayout l = panel_layout(320, 240, true);
+  const std::string title = "slerp  mean 1.23°  max 4.56°";
+  const TextItem t = title_text(title, l, 320, glyphs(10));
+  EXPECT_EQ(t.text, title);
+  EXPECT_EQ(t.pixel_height, 11);  // 0.62 × 18
+  EXPECT_EQ(t.x, 6.0f);
+  const float line = 1.15f * static_cast<float>(t.pixel_height);
+  EXPECT_GE(t.top, 0.0f);
+  EXPECT_LE(t.top + line, static_cast<float>(l.title_height));
+  EXPECT_NEAR(t.top, static_cast<float>(l.title_height) - (t.top + line), 1.0f) << "centred";
+  const TextItem long_title = title_text(title, l, 320, glyphs(50));
+  EXPECT_LT(long_title.pixel_height, 11);
+  EXPECT_LE(glyphs(50)(long_title.pixel_height), 320.0f - 2 * long_title.x);
+}
+
+TEST(Layout, InsetLabelIsInsideTheInsetAndFitsIt) {
+  const Rect inset{200, 100, 110, 110};
+  const TextItem t = inset_label("LeftElbow", inset, glyphs(9));
+  EXPECT_GT(t.x, static_cast<float>(inset.x));
+  EXPECT_GT(t.top, static_cast<float>(inset.y));
+  EXPECT_LT(t.top + static_cast<float>(t.pixel_height), static_cast<float>(inset.y + inset.height));
+  EXPECT_EQ(t.pixel_height, 10);  // 110 / 11
+  EXPECT_LE(t.x + glyphs(9)(t.pixel_height), static_cast<float>(inset.x + inset.width));
+  const TextItem wide = inset_label(std::string(40, 'x'), inset, glyphs(40));
+  EXPECT_LT(wide.pixel_height, 10);
 }
 
 TEST(ImageSize, LimitsAreCheckedWithOneLineNamingTheProblem) {

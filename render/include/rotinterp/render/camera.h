@@ -1,5 +1,6 @@
 // The one camera all panels share, framed from the bounds of everything drawn,
-// and the ground grid under it. World is Y-up (BVH's and assimp's convention).
+// and the ground grid under it; the camera of a trail inset. World is Y-up
+// (BVH's and assimp's convention).
 #pragma once
 
 #include "rotinterp/core/rotation.h"
@@ -7,6 +8,7 @@
 #include <Eigen/Core>
 
 #include <limits>
+#include <vector>
 
 namespace rotinterp::render {
 
@@ -58,5 +60,27 @@ struct GroundGrid {
   double x0 = 0.0, x1 = 0.0, z0 = 0.0, z1 = 0.0;
 };
 GroundGrid ground_grid(const Bounds& bounds);
+
+// How many pixels `radius` (world units) at the camera's target spans in a
+// viewport `viewport_height` pixels high.
+double pixels_at_target(const Camera& camera, double radius, int viewport_height);
+
+// A trail sample as a point of the unit sphere: v normalized, or zero where v is
+// zero or not finite.
+Vec3 unit_or_zero(const Vec3& v);
+
+// The view of a trail inset (square) onto the unit sphere, and the zoom its tubes
+// and markers scale by so that they keep their size on screen.
+struct TrailView {
+  Camera camera;
+  double zoom = 1.0;  // tan(half field) / tan(18°): 1 when the whole sphere is seen
+};
+
+// Looks at the sphere from the mean direction of `reference` (unit_or_zero of each
+// sample), so that the curve faces the viewer; from `scene_view`'s azimuth and
+// elevation (at least 20°) where that mean is shorter than 0.2. The field holds
+// the sample of either curve farthest from the view axis with a margin: half-angle
+// at most 18° (the whole sphere), at least 1.5°. `reference` is not empty.
+TrailView trail_view(const std::vector<Vec3>& reference, const std::vector<Vec3>& method, const ViewAngles& scene_view);
 
 }  // namespace rotinterp::render

@@ -1,7 +1,11 @@
 // Placing panels on an image: a grid of equal panels (so panels showing the same
-// thing are pixel-identical), leftover pixels as a margin on the right and bottom.
+// thing are pixel-identical), leftover pixels as a margin on the right and bottom;
+// and within a panel, its title strip, the figure's viewport, the trail inset and
+// the lines of text.
 #pragma once
 
+#include <functional>
+#include <string>
 #include <vector>
 
 namespace rotinterp::render {
@@ -18,5 +22,39 @@ int automatic_columns(int count, int width, int height);
 // `count` equal rectangles, row-major on a grid of `columns`, each
 // floor(width / columns) × floor(height / rows).
 std::vector<Rect> grid_layout(int count, int columns, int width, int height);
+
+// A width × height panel: a title strip across the top, and under it the scene
+// area. With a trail the figure and a square inset share the scene area without
+// overlapping: the inset at the bottom right below the figure in tall panels,
+// at the top right beside it in wide ones. Rects are in the panel's pixels, y
+// downwards.
+struct PanelLayout {
+  int title_height = 0;  // rows at the top
+  Rect figure;           // the figure's viewport
+  Rect inset;            // the trail's square; 0 × 0 without a trail
+};
+PanelLayout panel_layout(int width, int height, bool trail);
+
+// A line of text in a panel.
+struct TextItem {
+  std::string text;
+  float x = 0;           // left, pixels
+  float top = 0;         // top of the line box, pixels from the panel's top
+  int pixel_height = 0;  // the font's ascent − descent, pixels
+};
+
+// The width in pixels of a text at a pixel height.
+using TextWidth = std::function<float(int pixel_height)>;
+
+// The pixel height from `pixel_height` down at which `width` fits `max_width`,
+// at least 8 (past that the text is clipped by the panel).
+int fitting_height(const TextWidth& width, int pixel_height, float max_width);
+
+// The title, left in the title strip and centred on it vertically, about 0.62 of
+// its height and smaller where it is too wide for the panel.
+TextItem title_text(const std::string& title, const PanelLayout& layout, int panel_width, const TextWidth& width);
+
+// The trail's label inside the top left of the inset, smaller where too wide for it.
+TextItem inset_label(const std::string& label, const Rect& inset, const TextWidth& width);
 
 }  // namespace rotinterp::render

@@ -1,214 +1,16 @@
 #include "rotinterp/interp/bf.h"
 
 #include "detail.h"
+#include "rotinterp/core/so3_jacobian.h"
 #include "rotinterp/interp/c2.h"
 #include "rotinterp/interp/slerp.h"
 
-#include <Eigen/Eigenvalues>
-
 #include <array>
 #include <cmath>
-#include <limits>
 #include <string>
 #include <vector>
 
 namespace rotinterp {
-
-namespace {
-
-// BF's log on S³ (not on SO(3)): the tangent vector at 1 toward q along the great
-// circle, as a rotation vector (angle 2·atan2(|v|, w) ∈ [0, 2π]). Unlike the core
-// log it does not pick the nearer sign of q, so averages of points spread over
-// more than 180° of rotation (still in one open hemisphere of S³) stay smooth.
-// Every curve point averages nearby control points, so nearly all calls take the
-// first branch: 2·atan(x)/s = (2/w)·atan(x)/x with x² = |v|²/w², no square root
-// (half_angle's series, for angles below 2·atan(1/8) ≈ 14°). Inlined into the
-// average's loop: 7 % of a bf rebuild (bench_eval's "curves alone").
-[[gnu::always_inline]] inline Vec3 log_s3(const Quat& q) {
-  const Vec3 v = q.vec();
-  const double w = q.w(), s2 = v.squaredNorm();
-  if (w > 0.0 && s2 <= (1.0 / 64.0) * w * w) return v * angle_over_sine_series(s2, w);
-  const double s = std::sqrt(s2);
-  if (!(s > 0.0)) return Vec3::Zero();
-  return v * (2.0 * half_angle(s, w) / s);
-}
-
-// The J_l⁻¹ coefficient c(θ) = (1 − (θ/2)cot(θ/2))/θ² from θ²: its Taylor series
-// below θ = 0.5 (truncation θ⁶/1 209 600, 1e-10 relative there), the closed form
-// above. Every point of a spline span is the mean of four nearby control points,
-// so nearly all calls take the series and skip sin/cos.
-double jac_inv_c_sq(double th2) {
-  if (th2 < 0.25) return 1.0 / 12.0 + th2 / 720.0 + th2 * th2 / 30240.0;
-  const double th = std::sqrt(th2), h = 0.5 * th;
-  return (1.0 - h * std::cos(h) / std::sin(h)) / th2;
-}
-
-// J_l⁻¹(v) = I − ½[v]× + c(θ)[v]×², with [v]×² = vvᵀ − θ²I (no matrix products).
-Mat3 left_jacobian_inverse(const Vec3& v) {
-  const double th2 = v.squaredNorm();
-  const double c = jac_inv_c_sq(th2);
-  Mat3 m = c * (v * v.transpose());
-  const double d = 1.0 - c * th2;
-  m(0, 0) += d, m(1, 1) += d, m(2, 2) += d;
-  m(0, 1) += 0.5 * v.z(), m(1, 0) -= 0.5 * v.z();
-  m(0, 2) -= 0.5 * v.y(), m(2, 0) += 0.5 * v.y();
-  m(1, 2) += 0.5 * v.x(), m(2, 1) -= 0.5 * v.x();
-  return m;
-}
-
-// Solves H·x = g by the adjugate (H is 3×3: cheaper than a factorization). False,
-// x untouched, when |det H| ≤ 1e-6: near singular.
-bool solve3(const Mat3& H, const Vec3& g, Vec3& x) {
-  const Vec3 c0 = H.col(1).cross(H.col(2)), c1 = H.col(2).cross(H.col(0)), c2 = H.col(0).cross(H.col(1));
-  const double det = H.col(0).dot(c0);
-  if (!(std::abs(det) > 1e-6)) return false;
-  // H⁻¹ has the rows c0, c1, c2 divided by det.
-  x = Vec3(c0.dot(g), c1.dot(g), c2.dot(g)) / det;
-  return true;
-}
-
-// The spline averages' start: the normalized weighted sum of the points (the
-// chordal estimate), or p[1] where that is zero or not finite — weights overflow
-// on knots a denormal time apart, and the iteration keeps a finite start finite.
-Quat chordal_start(const Quat* p, const double* w, int n) {
-  Eigen::Vector4d sum = Eigen::Vector4d::Zero();
-  for (int k = 0; k < n; ++k) sum += w[k] * p[k].coeffs();
-  const double sn = sum.norm();
-  return sn > 0.0 && std::isfinite(sn) ? Quat(sum / sn) : p[1];
-}
-
-// m·exp(step) for a unit m (apply_moving without renormalizing m first).
-Quat step_from(const Quat& m, const Vec3& step) { return (m * exp(RotVec(step))).normalized(); }
-
-struct AverageOutcome {
-  Quat m;
-  double residual;  // |Σ wᵢ log(m⁻¹pᵢ)|, rad
-  bool converged;
-};
-
-// Below this residual (rad) a Newton step lands within K·residual² ≈ 1e-15 rad of
-// the mean (quadratic convergence; H exact to 1e-10 relative), so the spline's
-// averages take it without evaluating the residual once more. K ≤ 1.2e-3 for
-// residuals below 1e-5 from the chordal start: measured over 2·10⁵ random sets of
-// four points spread 1e-3 to 1 rad (small residuals come from tight sets, where
-// the log is nearly linear). About half of a clip's curve points start below it.
-constexpr double kFinalNewtonStep = 1e-6;
-
-// The BF iteration on points p (any signs: the core log takes the nearer one) with
-// positive weights summing to 1, from the start point m. With `final_step`, a
-// Newton step from a residual below kFinalNewtonStep is the last one (its
-// residual, reported as the square of the previous one, is not evaluated).
-AverageOutcome average_iterate(const Quat* p, const double* w, std::size_t n, Quat m, const BfAverageOptions& o,
-                               bool final_step = false) {
-  bool newton = o.algorithm == BfAverageOptions::Algorithm::a2;
-  double previous = std::numeric_limits<double>::infinity();
-  double gn = previous;
-  for (int it = 0;; ++it) {
-    // g = Σ wᵢvᵢ and, for Newton, H = Σ wᵢJ_l⁻¹(vᵢ) = (Σwᵢ)I − ½[g]× + Σ wᵢcᵢ(vᵢvᵢᵀ − θᵢ²I),
-    // accumulated without 3×3 products.
-    Vec3 g = Vec3::Zero();
-    Mat3 S = Mat3::Zero();
-    double trace = 0.0, wsum = 0.0;
-    const Quat mi = m.conjugate();
-    for (std::size_t i = 0; i < n; ++i) {
-      const Vec3 v = log_s3(mi * p[i]);
-      g += w[i] * v;
-      if (newton) {
-        const double th2 = v.squaredNorm();
-        const double wc = w[i] * jac_inv_c_sq(th2);
-        S.noalias() += wc * (v * v.transpose());
-        trace += wc * th2;
-        wsum += w[i];
-      }
-    }
-    gn = g.norm();
-    if (gn <= o.tolerance) return {m, gn, true};
-    if (gn >= previous) {
-      if (gn <= o.stall_tolerance) return {m, gn, true};  // round-off floor
-      newton = false;                                     // Newton overshot: plain A1 from here
-    }
-    if (it >= o.max_iterations) break;
-    previous = gn;
-    Vec3 step = g;
-    if (newton) {
-      // H = Σ wᵢJ_l⁻¹(vᵢ) is I + O(spread²): a near-zero determinant means the
-      // points are spread over most of the hemisphere; A1 is safe there.
-      Mat3 H = S;
-      const double d = wsum - trace;
-      H(0, 0) += d, H(1, 1) += d, H(2, 2) += d;
-      H(0, 1) += 0.5 * g.z(), H(1, 0) -= 0.5 * g.z();
-      H(0, 2) -= 0.5 * g.y(), H(2, 0) += 0.5 * g.y();
-      H(1, 2) += 0.5 * g.x(), H(2, 1) -= 0.5 * g.x();
-      if (solve3(H, g, step) && final_step && gn <= kFinalNewtonStep) return {step_from(m, step), gn * gn, true};
-    }
-    m = step_from(m, step);
-  }
-  return {m, gn, gn <= o.stall_tolerance};
-}
-
-}  // namespace
-
-Quat chordal_mean(const std::vector<Quat>& q, const std::vector<double>& w) {
-  if (q.empty() || q.size() != w.size()) return Quat::Identity();
-  Eigen::Matrix4d M = Eigen::Matrix4d::Zero();
-  for (std::size_t i = 0; i < q.size(); ++i) {
-    if (!(w[i] >= 0.0) || !std::isfinite(w[i])) return Quat::Identity();
-    const Eigen::Vector4d c = normalized_or_identity(q[i]).coeffs();
-    M += w[i] * c * c.transpose();
-  }
-  if (!M.allFinite() || M.isZero(0.0)) return Quat::Identity();
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> es(M);
-  const Eigen::Vector4d v = es.eigenvectors().col(3);  // eigenvalues ascending
-  return normalized_or_identity(Quat(v));
-}
-
-Result<Quat> bf_average(const std::vector<Quat>& q_in, const std::vector<double>& w_in, const BfAverageOptions& o) {
-  if (q_in.empty()) return make_error("bf average: no orientations");
-  if (q_in.size() != w_in.size())
-    return make_error("bf average: " + std::to_string(q_in.size()) + " orientations but " +
-                      std::to_string(w_in.size()) + " weights");
-  double total = 0.0;
-  for (std::size_t i = 0; i < w_in.size(); ++i) {
-    if (!std::isfinite(w_in[i])) return make_error("bf average: weight " + std::to_string(i) + " is not finite");
-    if (w_in[i] < 0.0) return make_error("bf average: weight " + std::to_string(i) + " is negative");
-    const double n = q_in[i].norm();
-    if (!q_in[i].coeffs().allFinite() || !(n > 0.0))
-      return make_error("bf average: orientation " + std::to_string(i) + " is zero or not finite");
-    total += w_in[i];
-  }
-  if (!(total > 0.0) || !std::isfinite(total)) return make_error("bf average: the weights sum to zero");
-  std::vector<Quat> q;
-  std::vector<double> w;
-  std::size_t heaviest = 0;
-  for (std::size_t i = 0; i < q_in.size(); ++i) {
-    if (w_in[i] == 0.0) continue;
-    q.push_back(normalized_or_identity(q_in[i]));
-    w.push_back(w_in[i] / total);
-    if (w.back() > w[heaviest]) heaviest = w.size() - 1;
-  }
-  // Orientation semantics: every input is taken as ±qᵢ in the heaviest input's
-  // hemisphere. An input exactly 180° from it (dot 0) has two equally near signs
-  // and the mean two equally good values: refused.
-  std::vector<Quat> aligned(q.size());
-  Eigen::Vector4d sum = Eigen::Vector4d::Zero();
-  for (std::size_t i = 0; i < q.size(); ++i) {
-    aligned[i] = detail::align_pair(q[heaviest], q[i]);
-    if (!(aligned[i].dot(q[heaviest]) > 0.0))
-      return make_error("bf average: orientation " + std::to_string(i) +
-                        " is 180° from the heaviest one: the inputs do not fit in an open hemisphere");
-    sum += w[i] * aligned[i].coeffs();
-  }
-  const Quat center(sum / sum.norm());
-  const AverageOutcome r = average_iterate(aligned.data(), w.data(), aligned.size(), center, o);
-  for (std::size_t i = 0; i < aligned.size(); ++i)
-    if (!(std::abs(aligned[i].dot(r.m)) > 0.0))
-      return make_error("bf average: orientation " + std::to_string(i) +
-                        " is 180° from the mean: the inputs do not fit in an open hemisphere");
-  if (!r.converged)
-    return make_error("bf average: no convergence in " + std::to_string(o.max_iterations) +
-                      " iterations (residual " + std::to_string(r.residual) + " rad)");
-  return r.m;
-}
 
 // ---- the spline ------------------------------------------------------------------------
 
@@ -308,7 +110,7 @@ class BfInterpolator final : public detail::SegmentInterpolator<BfInterpolator> 
     Vec3 g = Vec3::Zero();
     for (int k = 0; k < 4; ++k) {
       const Vec3 v = log_s3(mi * c_[s + k]);
-      H += N[k] * left_jacobian_inverse(v);
+      H += N[k] * so3_left_jacobian_inverse_with(v, so3_jacobian_c_newton(v.squaredNorm()));
       g += dN[k] * v;
     }
     return m * Vec3(H.fullPivLu().solve(g));
@@ -372,7 +174,7 @@ class BfInterpolator final : public detail::SegmentInterpolator<BfInterpolator> 
   // BF average of c_{s−1} … c_{s+2} (stored at c_[s … s+3]) with weights N.
   Quat average(std::ptrdiff_t s, const double N[4]) const {
     const Quat* c = &c_[static_cast<std::size_t>(s)];
-    return average_iterate(c, N, 4, chordal_start(c, N, 4), avg_, true).m;
+    return bf_average_of_points(c, N, 4, avg_);
   }
 
   // Key misses rⱼ = log(qⱼ·pⱼ⁻¹) (fixed frame) and pⱼ, the curve at tⱼ. Returns max |rⱼ|.
@@ -399,11 +201,12 @@ class BfInterpolator final : public detail::SegmentInterpolator<BfInterpolator> 
       const Quat pi = p[j].conjugate();
       Mat3 H = Mat3::Zero(), Jinv[3];
       for (int k = 0; k < 3; ++k) {
-        Jinv[k] = left_jacobian_inverse(log_s3(pi * c[k]));
+        const Vec3 v = log_s3(pi * c[k]);
+        Jinv[k] = so3_left_jacobian_inverse_with(v, so3_jacobian_c_newton(v.squaredNorm()));
         H += w[k] * Jinv[k];
       }
       const Mat3 Rp = p[j].toRotationMatrix();
-      const Mat3 front = detail::right_jacobian_inverse(r[j]) * Rp * H.inverse();
+      const Mat3 front = so3_right_jacobian_inverse(r[j]) * Rp * H.inverse();
       auto& g = G[j];
       for (int k = 0; k < 3; ++k) g[k] = front * (w[k] * Jinv[k]) * Rp.transpose();
       if (j == 0) {  // c₋₁ = c₀c₁⁻¹c₀ moves by (I + P)δ₀ − Pδ₁, P = R(c₀c₁⁻¹)
@@ -422,7 +225,7 @@ class BfInterpolator final : public detail::SegmentInterpolator<BfInterpolator> 
   }
 
   Quat average3(const Quat* c, const double* w) const {
-    return average_iterate(c, w, 3, chordal_start(c, w, 3), avg_, true).m;
+    return bf_average_of_points(c, w, 3, avg_);
   }
 
   BfAverageOptions avg_;

@@ -8,6 +8,7 @@
 #pragma once
 
 #include "detail.h"
+#include "rotinterp/core/so3_jacobian.h"
 
 #include <vector>
 
@@ -30,7 +31,7 @@ class BodyCubic final : public SegmentInterpolator<BodyCubic> {
     d_end_.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
       w_start_[i] = w[i];
-      d_end_[i] = right_jacobian_inverse_times(rho_[i], w[i + 1]);
+      d_end_[i] = so3_right_jacobian_inverse_times(rho_[i], w[i + 1]);
     }
   }
 
@@ -47,7 +48,7 @@ class BodyCubic final : public SegmentInterpolator<BodyCubic> {
     const Vec3 rdot = (6.0 * u - 6.0 * u2) * rho_[i] / h + (3.0 * u2 - 4.0 * u + 1.0) * w_start_[i] +
                       (3.0 * u2 - 2.0 * u) * d_end_[i];
     const Vec3 rr = r(i, u);
-    return apply_moving(k_.q[i], RotVec(rr)) * right_jacobian_times(rr, rdot);
+    return apply_moving(k_.q[i], RotVec(rr)) * so3_right_jacobian_times(rr, rdot);
   }
 
  private:

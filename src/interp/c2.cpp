@@ -1,6 +1,7 @@
 #include "rotinterp/interp/c2.h"
 
 #include "body_cubic.h"
+#include "rotinterp/core/so3_jacobian.h"
 
 #include <cmath>
 #include <vector>
@@ -22,8 +23,8 @@ std::vector<Vec3> c2_rates(const detail::Keys& k, const std::vector<Vec3>& rho, 
   const std::size_t m = n - 1;  // unknowns: keys 1 … n−1 at index k−1
   std::vector<Mat3> L(m), D(m), U(m), Jr(n), Jri(n);
   for (std::size_t i = 0; i < n; ++i) {
-    Jr[i] = detail::right_jacobian(rho[i]);
-    Jri[i] = detail::right_jacobian_inverse(rho[i]);
+    Jr[i] = so3_right_jacobian(rho[i]);
+    Jri[i] = so3_right_jacobian_inverse(rho[i]);
   }
   std::vector<Vec3> b0(m);
   for (std::size_t k = 1; k <= m; ++k) {
@@ -47,7 +48,7 @@ std::vector<Vec3> c2_rates(const detail::Keys& k, const std::vector<Vec3>& rho, 
   for (int it = 0; it < o.max_iterations; ++it) {
     for (std::size_t k = 1; k <= m; ++k) {
       const Vec3 d = Jri[k - 1] * w[k];
-      b[k - 1] = b0[k - 1] - detail::right_jacobian_rate_term(rho[k - 1], d);
+      b[k - 1] = b0[k - 1] - so3_right_jacobian_rate(rho[k - 1], d);
     }
     for (std::size_t j = 0; j < m; ++j) y[j] = b[j] - (j > 0 ? Vec3(L[j] * (Dpinv[j - 1] * y[j - 1])) : Vec3::Zero());
     bool done = true;

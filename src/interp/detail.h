@@ -1,5 +1,6 @@
 // Private helpers shared by the interpolators (not installed): track preparation,
-// segment search, SO(3) Jacobians, the 180° tie-break.
+// segment search, the 180° tie-break. (The SO(3) Jacobians are public:
+// rotinterp/core/so3_jacobian.h.)
 #pragma once
 
 #include "rotinterp/interp/interpolator.h"
@@ -77,93 +78,6 @@ inline Where locate(const std::vector<double>& t, double x, std::size_t& hint) {
   hint = i;
   const double u = (x - t[i]) / (t[i + 1] - t[i]);
   return {i, std::clamp(u, 0.0, 1.0)};
-}
-
-// ---- SO(3) Jacobians -------------------------------------------------------------
-// For R = exp(v): world angular velocity ω = J_l(v)·v̇ and body angular velocity
-// ω_b = J_r(v)·v̇ with J_l(v) = I + a(θ)[v]× + b(θ)[v]×², J_r(v) = J_l(−v),
-//   a = (1 − cos θ)/θ² = ½(sin(θ/2)/(θ/2))²  (cancellation-free),
-//   b = (θ − sin θ)/θ³, series below kJacobianSeries.
-// The inverse J_l⁻¹ is the core's rotvec_derivative.
-
-// Below this angle (rad) b, a′/θ and b′/θ use their series to θ⁸: the truncation
-// error there is < 1e-16 relative, while the closed forms lose 60ε/θ⁴ (b′/θ),
-// i.e. 3e-12 at 0.25.
-constexpr double kJacobianSeries = 0.25;
-
-inline double jac_a(double th) {
-  if (th == 0.0) return 0.5;
-  const double h = 0.5 * th;
-  const double s = std::sin(h) / h;
-  return 0.5 * s * s;
-}
-inline double jac_b(double th) {
-  const double t2 = th * th;
-  if (th < kJacobianSeries)
-    return 1.0 / 6.0 - t2 / 120.0 + t2 * t2 / 5040.0 - t2 * t2 * t2 / 362880.0 + t2 * t2 * t2 * t2 / 39916800.0;
-  return (th - std::sin(th)) / (t2 * th);
-}
-// a′(θ)/θ and b′(θ)/θ.
-inline double jac_da(double th) {
-  const double t2 = th * th;
-  if (th < kJacobianSeries)
-    return -1.0 / 12.0 + t2 / 180.0 - t2 * t2 / 6720.0 + t2 * t2 * t2 / 453600.0 - t2 * t2 * t2 * t2 / 47900160.0;
-  const double omc = 2.0 * std::sin(0.5 * th) * std::sin(0.5 * th);
-  return (th * std::sin(th) - 2.0 * omc) / (t2 * t2);
-}
-inline double jac_db(double th) {
-  const double t2 = th * th;
-  if (th < kJacobianSeries)
-    return -1.0 / 60.0 + t2 / 1260.0 - t2 * t2 / 60480.0 + t2 * t2 * t2 / 4989600.0 -
-           t2 * t2 * t2 * t2 / 622702080.0;
-  const double omc = 2.0 * std::sin(0.5 * th) * std::sin(0.5 * th);
-  return (th * omc - 3.0 * (th - std::sin(th))) / (t2 * t2 * th);
-}
-
-// J_l(v)·x without forming the matrix.
-inline Vec3 left_jacobian_times(const Vec3& v, const Vec3& x) {
-  const double th = v.norm();
-  const Vec3 vx = v.cross(x);
-  return x + jac_a(th) * vx + jac_b(th) * v.cross(vx);
-}
-// J_r(v)·x = J_l(−v)·x.
-inline Vec3 right_jacobian_times(const Vec3& v, const Vec3& x) { return left_jacobian_times(-v, x); }
-inline Mat3 right_jacobian(const Vec3& v) {
-  const double th = v.norm();
-  const Mat3 H = hat(v);
-  return Mat3::Identity() - jac_a(th) * H + jac_b(th) * H * H;
-}
-// J_r⁻¹(v)·x = J_l⁻¹(−v)·x.
-inline Vec3 right_jacobian_inverse_times(const Vec3& v, const Vec3& x) { return rotvec_derivative(-v, x); }
-inline Mat3 right_jacobian_inverse(const Vec3& v) {
-  Mat3 m;
-  for (int c = 0; c < 3; ++c) m.col(c) = right_jacobian_inverse_times(v, Vec3::Unit(c));
-  return m;
-}
-// (d/dt J_r(r(t)))·ṙ for ṙ = u: the part of the body angular acceleration of
-// exp(r(t)) that is not J_r·r̈.
-inline Vec3 right_jacobian_rate_term(const Vec3& r, const Vec3& u) {
-  const double th = r.norm();
-  const double ru = r.dot(u);
-  const Vec3 rxu = r.cross(u);
-  return -jac_da(th) * ru * rxu + jac_db(th) * ru * r.cross(rxu) + jac_b(th) * u.cross(rxu);
-}
-
-// Fixed-frame angular velocity of t ↦ q(t) given body angular velocity ω_b.
-inline Vec3 to_world(const Quat& q, const Vec3& body) { return q * body; }
-
-// J_l⁻¹ coefficient c(θ) = (1 − (θ/2)cot(θ/2))/θ² (as in the core's rotvec_derivative).
-inline double jac_inv_c(double th) {
-  if (th < kSeriesThreshold) {
-    const double t2 = th * th;
-    return 1.0 / 12.0 + t2 / 720.0 + t2 * t2 / 30240.0;
-  }
-  const double h = 0.5 * th;
-  return (1.0 - h * std::cos(h) / std::sin(h)) / (th * th);
-}
-inline Mat3 left_jacobian_inverse(const Vec3& v) {
-  const Mat3 H = hat(v);
-  return Mat3::Identity() - 0.5 * H + jac_inv_c(v.norm()) * H * H;
 }
 
 // Base of every interpolator: a prepared key track, evaluation through a

@@ -1,7 +1,8 @@
 #include "rotinterp/interp/expmap.h"
 
 #include "detail.h"
-#include "rotinterp/interp/bf.h"
+#include "rotinterp/core/average.h"
+#include "rotinterp/core/so3_jacobian.h"
 
 #include <vector>
 
@@ -50,7 +51,7 @@ class ExpmapInterpolator final : public detail::SegmentInterpolator<ExpmapInterp
     const Vec3 vdot = ((6.0 * u2 - 6.0 * u) * v_[i] + (3.0 * u2 - 4.0 * u + 1.0) * h * m_[i] +
                        (-6.0 * u2 + 6.0 * u) * v_[i + 1] + (3.0 * u2 - 2.0 * u) * h * m_[i + 1]) /
                       h;
-    return ref_ * detail::left_jacobian_times(value(i, u), vdot);
+    return ref_ * so3_left_jacobian_times(value(i, u), vdot);
   }
 
  private:

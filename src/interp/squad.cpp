@@ -1,6 +1,7 @@
 #include "rotinterp/interp/squad.h"
 
 #include "detail.h"
+#include "rotinterp/core/so3_jacobian.h"
 #include "rotinterp/interp/slerp.h"
 
 #include <vector>
@@ -70,9 +71,9 @@ class SquadInterpolator final : public detail::SegmentInterpolator<SquadInterpol
     const Vec3 wQ = Q * M_[i];
     const Vec3 X = log_great_arc(P.conjugate() * Q);
     const Vec3 y = P.conjugate() * (wQ - wP);
-    const Vec3 Xdot = rotvec_derivative(X, y);
+    const Vec3 Xdot = so3_left_jacobian_inverse_times(X, y);
     const double g = 2.0 * u * (1.0 - u), gdot = 2.0 - 4.0 * u;
-    const Vec3 wE = detail::left_jacobian_times(g * X, gdot * X + g * Xdot);
+    const Vec3 wE = so3_left_jacobian_times(g * X, gdot * X + g * Xdot);
     return (wP + P * wE) / dt(i);
   }
 

@@ -30,7 +30,7 @@ using test::Rz;
 constexpr double kKeyTolerance = 1e-9;  // rad
 // Unit output: |‖q‖ − 1| below this (a few ulps of accumulated round-off).
 constexpr double kUnitTolerance = 1e-12;
-// Coordinate invariance where claimed (rad), as the issue asks.
+// Coordinate invariance where a method claims it (rad).
 constexpr double kInvarianceTolerance = 1e-9;
 
 struct Fixture {

@@ -31,8 +31,8 @@ TEST(Slerp, MatchesEigenSlerpWhereEigenIsAccurate) {
 }
 
 TEST(Slerp, AKeyWithItselfIsThatKeyEvenWhenItsDotIsOneUlpAboveOne) {
-  // The issue's key (1, 2, 3, 4)/√30 to 8 digits. Normalized with Eigen it has
-  // q·q = 1 − 1 ulp here; nudging z up by ulps gives the case the issue means.
+  // The key (1, 2, 3, 4)/√30 to 8 digits. Normalized with Eigen it has q·q = 1 − 1 ulp
+  // here; nudging z up by ulps gives a key whose q·q rounds above 1.
   Quat q = Quat(0.18257419, 0.36514837, 0.54772256, 0.73029674).normalized();
   for (int k = 0; k < 16 && !(q.dot(q) > 1.0); ++k) q.z() = std::nextafter(q.z(), 2.0);
   ASSERT_GT(q.dot(q), 1.0);               // the fixture: above 1 by rounding …

@@ -38,21 +38,11 @@ using Quat = Eigen::Quaterniond;
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kTwoPi = 2.0 * kPi;
 
-// Below this angle (rad) ∂q/∂v uses the Taylor form of sin(θ/2)/θ. ⁴√ε ≈ 1.2e-4 is
-// where the two-term series 1/2 − θ²/48 is exact to double precision (the next
-// term, θ⁴/3840, is below ε/2 there) — Grassia §3.
-inline const double kExpTaylorThreshold = std::pow(std::numeric_limits<double>::epsilon(), 0.25);
-
 // Below this angle (rad) exp sums the series of cos(θ/2) and sin(θ/2)/θ instead of
 // calling libm: through the θ¹² terms they are exact to < 1e-19 there, and nearly
 // every rotation a spline or a metric exponentiates (a step between nearby keys or
 // frames, 29° at most) is this small.
 constexpr double kExpSeriesThreshold = 0.5;
-
-// Below this angle (rad) the derivative and angular-velocity coefficients use their
-// series: the closed forms cancel, losing about ε/θ² relatively (2e-12 at 1e-2),
-// while three series terms are exact to ~1e-19 there.
-constexpr double kSeriesThreshold = 1e-2;
 
 // A rotation (displacement) as a rotation vector: axis · angle.
 class RotVec {
@@ -154,22 +144,10 @@ Quat apply_moving(const Quat& q, const RotVec& r);
 // round-off as ~0.05°.)
 double angular_distance(const Quat& a, const Quat& b);
 
-// ---- derivatives (Grassia §3) -------------------------------------------------
-
-// ∂q/∂v, rows (w, x, y, z), columns (v_x, v_y, v_z).
-Eigen::Matrix<double, 4, 3> dq_dv(const Vec3& v);
-// ∂R/∂v_i for i = 0, 1, 2, R = exp(v) as a rotation matrix (chain rule through q).
-std::array<Mat3, 3> dR_dv(const Vec3& v);
-
 // ---- angular velocity -----------------------------------------------------------
+// (The rate of a rotation vector, v̇ = J_l⁻¹(v)·ω, and the other SO(3) Jacobians:
+// so3_jacobian.h.)
 
-// v̇ for a rotation vector v whose quaternion moves as q̇ = ½ ω̃ q (ω in the fixed
-// frame): v̇ = ω − ½ v×ω + c(θ)·v×(v×ω), c = (1 − (θ/2)cot(θ/2))/θ², with the series
-// c = 1/12 + θ²/720 + θ⁴/30240 below kSeriesThreshold. Grassia writes it with
-// η = (ω·v/θ)(cot(θ/2) − 2/θ) = −2c(ω·v), whose small-angle limit is
-// −(ω·v)(60 + θ²)/360 (the paper's η₀ has the opposite sign). Singular at |v| = 2π:
-// reparameterize() first.
-Vec3 rotvec_derivative(const Vec3& v, const Vec3& omega);
 // Constant fixed-frame angular velocity taking q0 to q1 in dt: log(q1 q0⁻¹)/dt.
 // Returns zero for dt ≤ 0.
 Vec3 angular_velocity(const Quat& q0, const Quat& q1, double dt);
@@ -189,20 +167,5 @@ struct SwingTwist {
   Quat twist;
 };
 SwingTwist swing_twist(const Quat& q, const Vec3& axis);
-
-// Grassia §5: a two-DOF swing v = α·ŝ + β·t̂ in the plane perpendicular to a twist
-// axis, with its chain rule and the elliptical joint-limit test.
-struct SwingParam {
-  Vec3 s;  // unit, ⟂ t and the twist axis
-  Vec3 t;  // unit
-  // Builds an orthonormal pair perpendicular to `twist_axis`.
-  static SwingParam perpendicular_to(const Vec3& twist_axis);
-  Vec3 vector(double alpha, double beta) const { return alpha * s + beta * t; }
-  Quat orientation(double alpha, double beta) const { return rotinterp::exp(RotVec(vector(alpha, beta))); }
-  // ∂q/∂(α, β) = ∂q/∂v · [ŝ t̂].
-  Eigen::Matrix<double, 4, 2> dq_dswing(double alpha, double beta) const;
-};
-// (α/a)² + (β/b)² ≤ 1: inside the elliptical swing limit with semi-axes a, b > 0.
-bool within_swing_limit(double alpha, double beta, double a, double b);
 
 }  // namespace rotinterp

@@ -1,8 +1,9 @@
-// bf: Buss–Fillmore spherical weighted averages (ACM TOG 20(2), 2001) and their
-// spherical cubic B-spline interpolating the keys.
+// bf: the spherical cubic B-spline of Buss and Fillmore (ACM TOG 20(2), 2001)
+// interpolating the keys; every point a weighted average (core/average.h).
 #pragma once
 
 #include "rotinterp/clip/clip.h"
+#include "rotinterp/core/average.h"
 #include "rotinterp/core/result.h"
 #include "rotinterp/core/rotation.h"
 #include "rotinterp/interp/interpolator.h"
@@ -11,46 +12,6 @@
 #include <vector>
 
 namespace rotinterp {
-
-// ---- the weighted average ---------------------------------------------------------
-//
-// The orientation m minimizing Σ wᵢ·dist(m, qᵢ)², i.e. the solution of the
-// stationarity condition Σ wᵢ·log(m⁻¹qᵢ) = 0. Bi-invariant:
-// avg(R·qᵢ·S) = R·avg(qᵢ)·S.
-struct BfAverageOptions {
-  enum class Algorithm {
-    a1,  // BF's A1 fixed point m ← m·exp(Σ wᵢ log(m⁻¹qᵢ)): linear convergence
-    a2,  // Newton on the same equation: m ← m·exp(H⁻¹g), H = Σ wᵢ J_l⁻¹(log(m⁻¹qᵢ));
-         // falls back to an A1 step when H is near singular or the residual grows
-  };
-  Algorithm algorithm = Algorithm::a2;
-  // Converged when |Σ wᵢ log(m⁻¹qᵢ)| (rad) is below `tolerance` …
-  double tolerance = 1e-15;
-  // … or below `stall_tolerance` once round-off stops it decreasing.
-  double stall_tolerance = 1e-13;
-  int max_iterations = 200;
-};
-
-// Errors: sizes differ or are zero; a weight is negative or not finite; the
-// weights sum to zero; a quaternion is zero or not finite; the inputs do not fit
-// in an open hemisphere; no convergence within max_iterations.
-// Inputs are orientations: each is taken as ±qᵢ in the hemisphere of the heaviest
-// input (BF's algorithm needs the points in an open hemisphere of S³). An input
-// exactly 180° from the heaviest one (dot 0) lies on that hemisphere's border —
-// its two signs are equally near and the mean is not unique — and is refused, as
-// is a result 180° from an input. Weights are divided by their sum; zero-weight
-// inputs are ignored. Starts from the normalized weighted sum (the chordal
-// estimate) and iterates until converged. The iteration uses BF's log on S³ (the
-// signs as aligned, angles up to 2π), which equals the SO(3) log for every input
-// within 180° of the mean — then Σ wᵢ·log(m⁻¹qᵢ) = 0 holds with the core log too.
-Result<Quat> bf_average(const std::vector<Quat>& q, const std::vector<double>& w, const BfAverageOptions& options = {});
-
-// Markley's chordal mean: the unit eigenvector of Σ wᵢ·qᵢqᵢᵀ with the largest
-// eigenvalue (minimizes Σ wᵢ·|m ∓ qᵢ|², not the geodesic distances): close to the
-// BF mean for tight clusters, far off for spread ones (keys 120° apart with weights
-// 0.75/0.25: 19.1° from the first instead of 30°). Same weight rules, no errors:
-// invalid input gives the identity.
-Quat chordal_mean(const std::vector<Quat>& q, const std::vector<double>& w);
 
 // ---- the spline ------------------------------------------------------------------------
 //

@@ -2,7 +2,7 @@
 // offscreen (render/comparison.h does the work). Built only with the renderer.
 #if ROTINTERP_HAVE_RENDER
 #include "common.h"
-#include "rotinterp/eval/metrics.h"
+#include "rotinterp/clip/metrics.h"
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/io/atomic_file.h"
 #include "rotinterp/io/read.h"

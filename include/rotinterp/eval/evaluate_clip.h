@@ -1,4 +1,4 @@
-// Evaluating one clip: decimate, rebuild with each method, measure (eval/metrics.h).
+// Evaluating one clip: decimate, rebuild with each method, measure (clip/metrics.h).
 //
 // The clip's frames are t_k = start + k·frame_time, k < frame_count() (for a clip
 // without a frame time: the key times of its longest rotation track). The
@@ -11,9 +11,9 @@
 #pragma once
 
 #include "rotinterp/clip/clip.h"
+#include "rotinterp/clip/metrics.h"
 #include "rotinterp/core/result.h"
 #include "rotinterp/eval/error_row.h"
-#include "rotinterp/eval/metrics.h"
 
 #include <functional>
 #include <optional>

@@ -9,6 +9,7 @@
 #include "rotinterp/render/comparison.h"
 #include "rotinterp/render/context.h"
 
+#include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
 #include <memory>

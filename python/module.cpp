@@ -6,10 +6,10 @@
 // Eigen's storage — or scalar-first (w, x, y, z) with scalar_first=True. Long
 // calls release the GIL; errors raise ValueError (bad input) or OSError (files)
 // with the library's one-line message.
+#include "rotinterp/clip/metrics.h"
 #include "rotinterp/clip/resample.h"
 #include "rotinterp/eval/error_row.h"
 #include "rotinterp/eval/evaluate_clip.h"
-#include "rotinterp/eval/metrics.h"
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/io/read.h"
 #include "rotinterp/io/write.h"

@@ -7,6 +7,7 @@
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/io/atomic_file.h"
 
+#include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
 #include <algorithm>

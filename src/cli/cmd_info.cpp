@@ -4,6 +4,7 @@
 #include "rotinterp/clip/resample.h"
 #include "rotinterp/io/info.h"
 
+#include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
 #include <nlohmann/json.hpp>

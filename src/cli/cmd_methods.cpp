@@ -2,6 +2,7 @@
 #include "common.h"
 #include "rotinterp/interp/interpolator.h"
 
+#include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
 #include <nlohmann/json.hpp>

@@ -2,13 +2,14 @@
 // offscreen (render/comparison.h does the work). Built only with the renderer.
 #if ROTINTERP_HAVE_RENDER
 #include "common.h"
-#include "rotinterp/eval/metrics.h"
+#include "rotinterp/clip/metrics.h"
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/io/atomic_file.h"
 #include "rotinterp/io/read.h"
 #include "rotinterp/render/comparison.h"
 #include "rotinterp/render/context.h"
 
+#include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
 #include <memory>

@@ -7,6 +7,7 @@
 #include "rotinterp/io/read.h"
 #include "rotinterp/io/write.h"
 
+#include <CLI/CLI.hpp>
 #include <fmt/core.h>
 #include <unistd.h>
 

@@ -4,6 +4,7 @@
 #include "rotinterp/io/atomic_file.h"
 #include "rotinterp/io/write.h"
 
+#include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
 #include <cerrno>

@@ -5,11 +5,13 @@
 #include "rotinterp/core/progress.h"
 #include "rotinterp/core/result.h"
 
-#include <CLI/CLI.hpp>
-
 #include <string>
 #include <string_view>
 #include <vector>
+
+namespace CLI {
+class App;
+}
 
 namespace rotinterp::cli {
 

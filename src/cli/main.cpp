@@ -18,9 +18,9 @@ namespace {
 // line and exit 1, its temporary files removed, instead of an abort; anything else
 // uncaught is a bug: named on one line, then an abort.
 [[noreturn]] void on_terminate() {
-  if (const std::exception_ptr e = std::current_exception()) {
+  if (const std::exception_ptr current = std::current_exception()) {
     try {
-      std::rethrow_exception(e);
+      std::rethrow_exception(current);
     } catch (const std::bad_alloc&) {
       static const char line[] = "rotinterp: out of memory\n";
       rotinterp::remove_live_temporaries();

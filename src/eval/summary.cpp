@@ -1,6 +1,6 @@
 #include "rotinterp/eval/summary.h"
 
-#include "rotinterp/eval/metrics.h"
+#include "rotinterp/clip/metrics.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>

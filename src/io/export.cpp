@@ -2,7 +2,7 @@
 
 #include "assimp_iosystem.h"
 #include "assimp_text.h"
-#include "rotinterp/eval/metrics.h"
+#include "rotinterp/clip/metrics.h"
 #include "track_sample.h"
 #include "rotinterp/io/atomic_file.h"
 

@@ -2,8 +2,8 @@
 
 #include "little_endian.h"
 
+#include "rotinterp/clip/metrics.h"
 #include "rotinterp/clip/resample.h"
-#include "rotinterp/eval/metrics.h"
 #include "rotinterp/io/atomic_file.h"
 #include "track_sample.h"
 

@@ -1,9 +1,9 @@
 // resample_clip on the real clips of ../shared/data and through files (read_clip /
 // write_clip), plus the measurement behind the default method.
 #include "rotinterp/clip/bvh_layout.h"
+#include "rotinterp/clip/metrics.h"
 #include "rotinterp/clip/resample.h"
 #include "rotinterp/clip/synth.h"
-#include "rotinterp/eval/metrics.h"
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/io/read.h"
 #include "rotinterp/io/write.h"

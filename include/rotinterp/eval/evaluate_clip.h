@@ -1,4 +1,4 @@
-// Evaluating one clip: decimate, rebuild with each method, measure (eval/metrics.h).
+// Evaluating one clip: decimate, rebuild with each method, measure (clip/metrics.h).
 //
 // The clip's frames, the original's value at each and the key frames for
 // keep_every N are those of clip/frames.h, shared with render and resample. Each
@@ -9,9 +9,9 @@
 
 #include "rotinterp/clip/clip.h"
 #include "rotinterp/clip/frames.h"
+#include "rotinterp/clip/metrics.h"
 #include "rotinterp/core/result.h"
 #include "rotinterp/eval/error_row.h"
-#include "rotinterp/eval/metrics.h"
 
 #include <functional>
 #include <optional>

@@ -1,4 +1,4 @@
-#include "rotinterp/eval/metrics.h"
+#include "rotinterp/clip/metrics.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
-// Known answers for the error metrics of `rotinterp eval` (eval/metrics.h).
-#include "rotinterp/eval/metrics.h"
+// Known answers for the error metrics of `rotinterp eval` (clip/metrics.h).
+#include "rotinterp/clip/metrics.h"
 #include "rotinterp/clip/frames.h"
 #include "rotinterp/interp/interpolator.h"
 

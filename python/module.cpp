@@ -7,6 +7,7 @@
 // calls release the GIL; errors raise ValueError (bad input) or OSError (files)
 // with the library's one-line message.
 #include "rotinterp/clip/metrics.h"
+#include "rotinterp/clip/frames.h"
 #include "rotinterp/clip/resample.h"
 #include "rotinterp/eval/error_row.h"
 #include "rotinterp/eval/evaluate_clip.h"

@@ -1,7 +1,7 @@
 // rotinterp info CLIP [--json] [--anim NAME|INDEX]: what a clip file holds.
 #include "common.h"
 #include "rotinterp/clip/bvh_layout.h"
-#include "rotinterp/clip/resample.h"
+#include "rotinterp/clip/frames.h"
 #include "rotinterp/io/info.h"
 
 #include <CLI/CLI.hpp>

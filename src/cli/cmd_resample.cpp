@@ -1,6 +1,7 @@
 // rotinterp resample IN -o OUT [--fps HZ | --keep-every N] [--method NAME] [--method-for JOINT=NAME ...]
 //                    [--translation linear|cubic] [--range START:END] [--anim NAME|INDEX] [--bvh-order ZXY] [--quiet]
 #include "common.h"
+#include "rotinterp/clip/frames.h"
 #include "rotinterp/clip/resample.h"
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/io/atomic_file.h"

@@ -42,12 +42,19 @@ std::optional<std::size_t> FrameGrid::frame_at(double t) const {
   return static_cast<std::size_t>(it - times.begin());
 }
 
+std::optional<Rate> clip_rate(const Clip& clip) {
+  if (!(clip.frame_time > 0.0)) return std::nullopt;
+  auto r = rate_from_frame_time(clip.frame_time);
+  if (!r) return std::nullopt;
+  return r.value();
+}
+
 FrameGrid frame_grid(const Clip& clip) {
   FrameGrid g;
   g.start = clip.start_time();
   if (clip.frame_time > 0.0) {
     g.frame_time = clip.frame_time;
-    if (const Result<Rate> r = rate_from_frame_time(clip.frame_time)) g.rate = r.value();
+    g.rate = clip_rate(clip);
     const std::size_t n = clip.frame_count();
     const double end = clip.end_time();
     g.times.resize(n);

@@ -131,13 +131,6 @@ Status resample_joint(const Clip& in, std::size_t j, const std::string& method, 
 
 }  // namespace
 
-std::optional<Rate> clip_rate(const Clip& clip) {
-  if (!(clip.frame_time > 0.0)) return std::nullopt;
-  auto r = rate_from_frame_time(clip.frame_time);
-  if (!r) return std::nullopt;
-  return r.value();
-}
-
 Result<Clip> resample_clip(const Clip& in, const ResampleOptions& options) {
   ResampleOptions opt = options;
   if (Status s = in.validate(); !s) return make_error(s.error());
@@ -162,7 +155,7 @@ Result<Clip> resample_clip(const Clip& in, const ResampleOptions& options) {
   std::optional<FrameGrid> grid;
   const double start = in.start_time();
   double duration = in.end_time() - start;
-  if (FrameGrid g = frame_grid(in); g.rate) {
+  if (FrameGrid g = frame_grid(in); g.rate) {  // keys on a grid of known rate
     grid = std::move(g);
     duration = grid->exact_time(grid->size() - 1) - start;
   }

@@ -2,7 +2,7 @@
 
 #include "fbx_encode.h"
 #include "rotinterp/clip/bvh_layout.h"
-#include "rotinterp/clip/resample.h"
+#include "rotinterp/clip/frames.h"
 #include "rotinterp/clip/sampling.h"
 #include "rotinterp/io/euler.h"
 #include "track_sample.h"

@@ -6,6 +6,7 @@
 // skeleton's height, after one similarity transform (Blender turns Y-up files Z-up
 // and scales by the file's unit). One Blender process imports every file.
 #include "client_fixture.h"
+#include "rotinterp/clip/frames.h"
 #include "rotinterp/clip/resample.h"
 #include "rotinterp/io/read.h"
 #include "support/run_cli.h"

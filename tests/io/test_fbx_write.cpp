@@ -4,6 +4,7 @@
 #include "fbx_write.h"
 #include "io_test_util.h"
 #include "rotinterp/clip/bvh_layout.h"
+#include "rotinterp/clip/frames.h"
 #include "rotinterp/clip/resample.h"
 #include "rotinterp/io/read.h"
 #include "rotinterp/io/write.h"

@@ -2,6 +2,7 @@
 // matrices, a .gltf buffer named by its content, and times that read back on the
 // exact grid (60 Hz, where float times jitter by 4e-6 s).
 #include "io_test_util.h"
+#include "rotinterp/clip/frames.h"
 #include "rotinterp/clip/resample.h"
 #include "rotinterp/io/read.h"
 #include "rotinterp/io/write.h"

@@ -2,6 +2,7 @@
 // write_clip), plus the measurement behind the default method.
 #include "rotinterp/clip/bvh_layout.h"
 #include "rotinterp/clip/metrics.h"
+#include "rotinterp/clip/frames.h"
 #include "rotinterp/clip/resample.h"
 #include "rotinterp/clip/synth.h"
 #include "rotinterp/interp/interpolator.h"

@@ -68,8 +68,4 @@ struct ResampleOptions {
 // unknown method (listing the valid names) or joint, a range outside the clip.
 Result<Clip> resample_clip(const Clip& clip, const ResampleOptions& options);
 
-// The exact frame rate of a clip's source (rate_from_frame_time(clip.frame_time)),
-// or nothing for a clip without a frame time.
-std::optional<Rate> clip_rate(const Clip& clip);
-
 }  // namespace rotinterp

@@ -66,7 +66,7 @@ std::optional<Rate> recognize_rate(double hz, double relative_tolerance);
 // decimals was computed, not printed (1/ticks-per-second, a float grid's step): it
 // goes through recognize_rate(1/frame_time, kComputedRateTolerance), then to the
 // simplest nearby rational. This is the one recognizer every command uses
-// (clip_rate in clip/resample.h). Returns an error for frame_time ≤ 0 or not finite.
+// (clip_rate in clip/frames.h). Returns an error for frame_time ≤ 0 or not finite.
 Result<Rate> rate_from_frame_time(double frame_time);
 
 // Number of samples of a grid at `rate` over `duration` seconds, first sample at

@@ -143,10 +143,15 @@ class BfInterpolator final : public detail::SegmentInterpolator<BfInterpolator> 
   // dN[k] = dN/dx for the basis functions of c_{s−1+k}, k = 0…3.
   void basis(std::ptrdiff_t s, double x, double N[4], double dN[4]) const {
     double left[4], right[4], N2[3] = {0, 0, 0};
+    // N depends only on ratios of knot differences: scaled by a power of two near
+    // 1/span (exact, so no change elsewhere) so that on subnormal spans (keys
+    // 1e-310 s apart) N[r]/(right + left) cannot overflow to inf and NaN weights.
+    const double span = tau(s + 1) - tau(s);
+    const int scale = span > 0.0 && std::isfinite(span) ? -std::ilogb(span) : 0;
     N[0] = 1.0;
     for (int j = 1; j <= 3; ++j) {
-      left[j] = x - tau(s + 1 - j);
-      right[j] = tau(s + j) - x;
+      left[j] = std::ldexp(x - tau(s + 1 - j), scale);
+      right[j] = std::ldexp(tau(s + j) - x, scale);
       double saved = 0.0;
       for (int r = 0; r < j; ++r) {
         const double temp = N[r] / (right[r + 1] + left[j - r]);

@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <vector>
 
 namespace rotinterp {
@@ -196,6 +197,26 @@ TEST(BfSpline, KeysADenormalTimeApartGiveFiniteUnitPoints) {
     ASSERT_TRUE(q.coeffs().allFinite()) << s;
     EXPECT_NEAR(q.norm(), 1.0, 1e-12) << s;
   }
+}
+
+TEST(BfSpline, IsTheSameCurveWhenItsTimesAreScaledIntoSubnormals) {
+  // fuzz_interp timeout-c600b3bd: keys 1.3e-321 s apart. The B-spline weights on
+  // subnormal spans overflowed to inf and NaN, the curve there was the averages'
+  // fallback, and the solve crawled (167 Newton steps, 0.37 s). The spline depends
+  // only on ratios of times: times scaled by 2⁻¹⁰⁰⁰ (exact) give the same curve.
+  const Quat half_z(0.0, 0.0, 0.0, -1.0), half_yz(0.0, 0.0, std::sqrt(0.5), std::sqrt(0.5));
+  RotationTrack normal;
+  normal.times = {-1.0, -std::ldexp(1.0, -30), 0.0};
+  normal.keys = {half_z, Quat(-1.0, 0.0, 0.0, 0.0), half_yz};
+  RotationTrack subnormal = normal;
+  for (double& t : subnormal.times) t = std::ldexp(t, -1000);
+  ASSERT_LT(-subnormal.times[1], std::numeric_limits<double>::min());
+  auto a = make_bf(normal), b = make_bf(subnormal);
+  ASSERT_TRUE(a) << a.error();
+  ASSERT_TRUE(b) << b.error();
+  for (double t : {-1.0, -0.5, -1e-3, -1e-6, -std::ldexp(1.0, -29), -std::ldexp(1.5, -30), -std::ldexp(1.0, -30),
+                   -std::ldexp(0.5, -30), -std::ldexp(0.1, -30), 0.0})
+    EXPECT_LT(angular_distance((*a)->evaluate(t), (*b)->evaluate(std::ldexp(t, -1000))), 1e-9) << t;
 }
 
 TEST(BfSpline, KeepsC2AccuracyOnKeyStepsWiderThanItsKnotLimit) {

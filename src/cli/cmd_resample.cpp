@@ -1,10 +1,16 @@
 // rotinterp resample IN -o OUT [--fps HZ | --keep-every N] [--method NAME] [--method-for JOINT=NAME ...]
 //                    [--translation linear|cubic] [--range START:END] [--anim NAME|INDEX] [--bvh-order ZXY] [--quiet]
+// rotinterp resample PATH... -o OUTDIR [the same] [-j N] [--shard I/N] [--skip-existing] [--format EXT]
+//                    [--manifest FILE.csv]: a whole dataset, its layout mirrored under OUTDIR.
 #include "common.h"
 #include "rotinterp/clip/frames.h"
+#include "rotinterp/clip/bvh_layout.h"
 #include "rotinterp/clip/resample.h"
+#include "rotinterp/core/work_queue.h"
+#include "rotinterp/eval/inputs.h"
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/io/atomic_file.h"
+#include "rotinterp/io/dataset.h"
 #include "rotinterp/io/read.h"
 #include "rotinterp/io/write.h"
 
@@ -13,14 +19,18 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <memory>
+#include <mutex>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -29,11 +39,29 @@ namespace rotinterp::cli {
 namespace {
 
 struct ResampleArgs {
-  std::string input, output;
+  std::vector<std::string> inputs;
+  std::string output;
   std::string fps, keep_every, method = kDefaultResampleMethod, translation = "cubic", range, anim, bvh_order = "ZXY";
   std::vector<std::string> method_for;
   bool quiet = false;
   bool fbx_ascii = false;
+  // Folder runs.
+  int jobs = 0;
+  std::string shard, format, manifest;
+  bool skip_existing = false;
+};
+
+// One file's run: a row of the manifest.
+struct FileRun {
+  std::string input;
+  std::filesystem::path output;
+  std::string status = "ok";  // ok, exists (--skip-existing), no-animation, failed
+  std::string message;        // the error line of a failed file
+  std::string frame_time;     // as written in the file (BVH), else empty
+  std::optional<Rate> rate;   // as recognized
+  std::size_t frames = 0, joints = 0, output_frames = 0;
+  double duration = 0.0, seconds = 0.0;
+  std::uintmax_t bytes = 0;  // of the input
 };
 
 // A number of seconds ≥ 0, or nothing for an empty text.
@@ -52,95 +80,261 @@ bool valid_bvh_order(std::string order) {
   return order == "XYZ";
 }
 
-int run_resample(const ResampleArgs& a) {
-  const auto started = std::chrono::steady_clock::now();
+// The options every file of a run shares; an error is a usage error.
+Result<ResampleOptions> resample_options(const ResampleArgs& a) {
   ResampleOptions opt;
-  // Everything that can be checked without the input is checked first (exit 2).
-  if (!a.fps.empty() && !a.keep_every.empty()) return fail_usage("give either --fps or --keep-every, not both");
+  if (!a.fps.empty() && !a.keep_every.empty()) return make_error("give either --fps or --keep-every, not both");
   if (!a.fps.empty()) {
     auto r = parse_rate_option("--fps", a.fps);
-    if (!r) return fail_usage(r.error());
+    if (!r) return make_error(r.error());
     opt.fps = *r;
   }
   if (!a.keep_every.empty()) {
     auto n = parse_whole_option("--keep-every", a.keep_every, 1, kMaxKeepEvery);
-    if (!n) return fail_usage(n.error());
+    if (!n) return make_error(n.error());
     opt.keep_every = static_cast<std::size_t>(*n);
   }
-  if (!find_method(a.method)) return fail_usage("unknown method '" + a.method + "' (valid: " + method_names() + ")");
+  if (!find_method(a.method)) return make_error("unknown method '" + a.method + "' (valid: " + method_names() + ")");
   opt.method = a.method;
   for (const std::string& item : a.method_for) {
     const std::size_t eq = item.find('=');
     if (eq == std::string::npos || eq == 0 || eq + 1 == item.size())
-      return fail_usage("--method-for '" + item + "' must be JOINT=METHOD");
+      return make_error("--method-for '" + item + "' must be JOINT=METHOD");
     const std::string joint = item.substr(0, eq), method = item.substr(eq + 1);
     if (!find_method(method))
-      return fail_usage("unknown method '" + method + "' in --method-for " + item + " (valid: " + method_names() + ")");
+      return make_error("unknown method '" + method + "' in --method-for " + item + " (valid: " + method_names() + ")");
     opt.method_for.emplace_back(joint, method);
   }
   auto translation = parse_translation_interp(a.translation);
-  if (!translation) return fail_usage("--translation: " + translation.error());
+  if (!translation) return make_error("--translation: " + translation.error());
   opt.translation = *translation;
   if (!a.range.empty()) {
     const std::size_t colon = a.range.find(':');
     std::optional<double> s, e;
     if (colon == std::string::npos || !parse_seconds(a.range.substr(0, colon), s) ||
         !parse_seconds(a.range.substr(colon + 1), e))
-      return fail_usage("--range '" + a.range + "' must be START:END in seconds (either may be empty), e.g. 1.5:4");
+      return make_error("--range '" + a.range + "' must be START:END in seconds (either may be empty), e.g. 1.5:4");
     TimeRange r;
     if (s) r.start = *s;
     if (e) r.end = *e;
-    if (!(r.end > r.start)) return fail_usage("--range '" + a.range + "': END must be after START");
+    if (!(r.end > r.start)) return make_error("--range '" + a.range + "': END must be after START");
     opt.range = r;
   }
-  if (!valid_bvh_order(a.bvh_order)) return fail_usage("--bvh-order '" + a.bvh_order + "' must be a permutation of XYZ, e.g. ZXY");
-  if (!can_write_format(a.output))
-    return fail_usage("output '" + a.output + "': unknown format (use .bvh, .fbx, .glb, .gltf or .dae)");
-  protect_input(a.input);
-  if (Status s = check_not_an_input(a.output); !s) return fail(s.error());
+  if (!valid_bvh_order(a.bvh_order)) return make_error("--bvh-order '" + a.bvh_order + "' must be a permutation of XYZ, e.g. ZXY");
+  return opt;
+}
 
-  // Stage names on the progress line (reading and writing long clips take seconds).
-  const bool show = !a.quiet && ::isatty(STDERR_FILENO);
-  auto stage = [show](const std::string& what) {
-    if (show) std::fprintf(stderr, "\r\033[K%s …", what.c_str());
-  };
+// Reads, resamples and writes one file, filling `run`; `stage` names each step.
+Status resample_file(FileRun& run, const ResampleArgs& a, const ResampleOptions& opt,
+                     const std::function<void(const std::string&)>& stage) {
+  const auto started = std::chrono::steady_clock::now();
   ReadOptions read_options;
   read_options.animation = a.anim;
-  stage("reading " + a.input);
-  auto clip = read_clip(a.input, read_options);
-  end_progress(a.quiet);
-  if (!clip) return fail(clip.error());
+  stage("reading " + run.input);
+  auto clip = read_clip(run.input, read_options);
+  if (!clip) return clip.failure();
+  run.frame_time = frame_time_text(*clip);
+  run.rate = clip_rate(*clip);
+  run.frames = clip->frame_count();
+  run.joints = clip->skeleton.joints.size();
+  run.duration = clip->end_time() - clip->start_time();
 
-  opt.progress = make_progress("resample", a.quiet);
   auto out = resample_clip(*clip, opt);
-  end_progress(a.quiet);
-  if (!out) return fail(a.input + ": " + out.error());
+  if (!out) return make_error(run.input + ": " + out.error());
+  run.output_frames = out->frame_count();
 
   WriteOptions write_options;
   write_options.bvh_order = a.bvh_order;
   write_options.fbx_ascii = a.fbx_ascii;
   write_options.on_warning = warn;
-  stage("writing " + a.output);
-  const Status written = write_clip(*out, a.output, write_options);
+  stage("writing " + run.output.string());
+  const Status written = write_clip(*out, run.output, write_options);
+  run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  return written;
+}
+
+int run_single(const ResampleArgs& a, ResampleOptions opt) {
+  const std::string& input = a.inputs.front();
+  protect_input(input);
+  if (Status s = check_not_an_input(a.output); !s) return fail(s.error());
+  // Stage names on the progress line (reading and writing long clips take seconds).
+  const bool show = !a.quiet && ::isatty(STDERR_FILENO);
+  auto stage = [show, &a](const std::string& what) {
+    end_progress(a.quiet);
+    if (show) std::fprintf(stderr, "\r\033[K%s …", what.c_str());
+  };
+  opt.progress = make_progress("resample", a.quiet);
+  FileRun run;
+  run.input = input;
+  run.output = a.output;
+  const Status done = resample_file(run, a, opt, stage);
   end_progress(a.quiet);
-  if (!written) return fail(written.error());
+  if (!done) return fail(done.error());
 
   if (!a.quiet) {
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    const std::optional<Rate> in_rate = clip_rate(*clip);
-    const std::string from = in_rate ? in_rate->to_string() + " Hz" : "unknown rate";
+    const std::string from = run.rate ? run.rate->to_string() + " Hz" : "unknown rate";
     std::string how;
     if (opt.keep_every)
       how = fmt::format("keys every {} frame{}", *opt.keep_every, *opt.keep_every == 1 ? "" : "s");
     else
-      how = fmt::format("{} → {} Hz", from, opt.fps ? opt.fps->to_string() : (in_rate ? in_rate->to_string() : clip_rate(*out) ? clip_rate(*out)->to_string() : "?"));
+      how = fmt::format("{} → {} Hz", from, opt.fps ? opt.fps->to_string() : run.rate ? run.rate->to_string() : "?");
     std::string methods = opt.method;
     if (!opt.method_for.empty()) methods += fmt::format(" (+{} per-joint override{})", opt.method_for.size(),
                                                         opt.method_for.size() == 1 ? "" : "s");
-    fmt::print("{} → {}: {} → {} frames ({}), method {}, translation {}, {:.3f} s\n", a.input, a.output,
-               clip->frame_count(), out->frame_count(), how, methods, translation_interp_name(opt.translation), seconds);
+    fmt::print("{} → {}: {} → {} frames ({}), method {}, translation {}, {:.3f} s\n", input, a.output, run.frames,
+               run.output_frames, how, methods, translation_interp_name(opt.translation), run.seconds);
   }
   return kExitOk;
+}
+
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string q = "\"";
+  for (char c : text) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+
+Status write_manifest(const std::string& path, const std::vector<FileRun>& runs, const ResampleOptions& opt) {
+  return write_file_atomically(path, [&](std::ostream& out) -> Status {
+    out << "input,output,status,frame_time_written,rate_hz,rate,frames,duration_s,joints,output_frames,method,"
+           "seconds,message\n";
+    for (const FileRun& r : runs) {
+      const bool read = r.status == "ok" || (r.status == "failed" && r.frames > 0);
+      out << csv_field(r.input) << ',' << csv_field(r.output.string()) << ',' << r.status << ','
+          << csv_field(r.frame_time) << ',' << (r.rate ? fmt::format("{:.9g}", r.rate->hz()) : "") << ','
+          << (r.rate ? r.rate->to_string() : "") << ',' << (read ? std::to_string(r.frames) : "") << ','
+          << (read ? fmt::format("{:.9g}", r.duration) : "") << ',' << (read ? std::to_string(r.joints) : "") << ','
+          << (r.status == "ok" ? std::to_string(r.output_frames) : "") << ',' << csv_field(opt.method) << ','
+          << (r.status == "ok" ? fmt::format("{:.3f}", r.seconds) : "") << ',' << csv_field(r.message) << '\n';
+    }
+    return Ok{};
+  });
+}
+
+// "1m05s", "42s".
+std::string duration_text(double seconds) {
+  const auto s = static_cast<long long>(std::llround(seconds));
+  return s >= 60 ? fmt::format("{}m{:02}s", s / 60, s % 60) : fmt::format("{}s", s);
+}
+
+int run_folder(const ResampleArgs& a, ResampleOptions opt) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::exists(a.output, ec) && !fs::is_directory(a.output, ec))
+    return fail_usage("output '" + a.output + "' is a file; several inputs or a folder need an output directory");
+  if (!a.format.empty() && !can_write_format(fs::path("x." + a.format)))
+    return fail_usage("--format '" + a.format + "': unknown format (use bvh, fbx, glb, gltf or dae)");
+  if (a.jobs < 0) return fail_usage("-j " + std::to_string(a.jobs) + ": must be ≥ 0 (0 = one per core)");
+  std::vector<fs::path> named(a.inputs.begin(), a.inputs.end());
+  auto found = discover_inputs(named);
+  if (!found) return fail(found.error());
+  std::vector<std::string> files = *found;
+  if (!a.shard.empty()) {
+    auto shard = parse_shard(a.shard);
+    if (!shard) return fail_usage(shard.error());
+    files = shard_of(files, shard->first, shard->second);
+  }
+  auto plan = mirror_outputs(files, named, a.output, a.format);
+  if (!plan) return fail(plan.error());
+  for (const MirroredOutput& m : *plan) protect_input(m.input);
+
+  WorkQueue queue(static_cast<unsigned>(a.jobs));
+  // Joints in parallel only where fewer files than workers are in flight (the last ones).
+  std::atomic<unsigned> in_flight{0};
+  std::atomic<std::size_t> done{0};
+  std::atomic<std::uintmax_t> bytes_done{0};
+  std::uintmax_t bytes_total = 0;
+  for (const MirroredOutput& m : *plan) bytes_total += fs::file_size(m.input, ec) * !ec;
+  const bool show = !a.quiet && ::isatty(STDERR_FILENO);
+  std::mutex progress_mutex;
+  const auto started = std::chrono::steady_clock::now();
+  auto report = [&] {
+    if (!show) return;
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    const double mb = static_cast<double>(bytes_done.load()) / 1e6;
+    const double rate = elapsed > 0 ? mb / elapsed : 0.0;
+    const double left = static_cast<double>(bytes_total - std::min(bytes_total, bytes_done.load())) / 1e6;
+    std::lock_guard<std::mutex> lock(progress_mutex);
+    std::fprintf(stderr, "\r\033[Kresample  %zu/%zu files  %.1f MB/s  ETA %s", done.load(), plan->size(), rate,
+                 rate > 0 ? duration_text(left / rate).c_str() : "?");
+  };
+  auto no_stage = [](const std::string&) {};
+
+  std::vector<std::future<FileRun>> futures;
+  for (const MirroredOutput& m : *plan) {
+    futures.push_back(queue.submit([&, m] {
+      FileRun run;
+      run.input = m.input;
+      run.output = m.output;
+      run.bytes = fs::file_size(m.input, ec) * !ec;
+      if (a.skip_existing && fs::is_regular_file(m.output)) {
+        run.status = "exists";
+      } else if (Status mine = check_not_an_input(m.output); !mine) {
+        run.status = "failed";
+        run.message = mine.error();
+      } else {
+        ResampleOptions file_opt = opt;
+        const unsigned now = ++in_flight;
+        file_opt.threads = std::max(1u, queue.threads() / std::max(1u, now));
+        std::error_code mkdir_error;
+        fs::create_directories(m.output.parent_path(), mkdir_error);
+        Status s = mkdir_error ? Status(make_error(m.output.parent_path().string() + ": " + mkdir_error.message()))
+                               : resample_file(run, a, file_opt, no_stage);
+        --in_flight;
+        if (!s && s.error_kind() == ErrorKind::no_animation && found_in_directory(m.input, named)) {
+          run.status = "no-animation";  // a mesh next to the clips, as eval skips it
+        } else if (!s) {
+          run.status = "failed";
+          run.message = s.error();
+        }
+      }
+      ++done;
+      bytes_done += run.bytes;
+      report();
+      return run;
+    }));
+  }
+  std::vector<FileRun> runs;
+  std::size_t failed = 0, written = 0, existing = 0;
+  for (auto& f : futures) {
+    runs.push_back(f.get());
+    const FileRun& r = runs.back();
+    if (r.status == "failed") {
+      ++failed;
+      if (show) std::fprintf(stderr, "\r\033[K");
+      fail(r.message);
+    }
+    written += r.status == "ok";
+    existing += r.status == "exists";
+  }
+  end_progress(a.quiet);
+  if (!a.manifest.empty())
+    if (Status s = write_manifest(a.manifest, runs, opt); !s) return fail(s.error());
+  if (!a.quiet) {
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    fmt::print("{} file{} → {}: {} written, {} already there, {} failed, {} skipped (no animation); {:.1f} MB in "
+               "{:.2f} s ({:.1f} MB/s), {} worker{}\n",
+               runs.size(), runs.size() == 1 ? "" : "s", a.output, written, existing, failed,
+               runs.size() - written - existing - failed, static_cast<double>(bytes_total) / 1e6, seconds,
+               seconds > 0 ? static_cast<double>(bytes_total) / 1e6 / seconds : 0.0, queue.threads(),
+               queue.threads() == 1 ? "" : "s");
+  }
+  return failed > 0 ? kExitPartial : kExitOk;
+}
+
+int run_resample(const ResampleArgs& a) {
+  // Everything that can be checked without the input is checked first (exit 2).
+  auto opt = resample_options(a);
+  if (!opt) return fail_usage(opt.error());
+  std::error_code ec;
+  const bool one_file = a.inputs.size() == 1 && !std::filesystem::is_directory(a.inputs.front(), ec) &&
+                        !std::filesystem::is_directory(a.output, ec) && a.format.empty();
+  if (!one_file) return run_folder(a, *opt);
+  if (!a.shard.empty() || !a.manifest.empty() || a.skip_existing)
+    return fail_usage("--shard, --manifest and --skip-existing are for folder runs (-o DIR)");
+  if (!can_write_format(a.output))
+    return fail_usage("output '" + a.output + "': unknown format (use .bvh, .fbx, .glb, .gltf or .dae)");
+  return run_single(a, *opt);
 }
 
 }  // namespace
@@ -148,8 +342,13 @@ int run_resample(const ResampleArgs& a) {
 void add_resample_command(CLI::App& app, int& exit_code) {
   auto* sub = app.add_subcommand("resample", "Resample a clip: change its frame rate or rebuild it from sparse keys");
   auto a = std::make_shared<ResampleArgs>();
-  sub->add_option("IN", a->input, "Input clip (BVH, FBX, glTF/GLB, Collada, … — anything assimp reads)")->required();
-  sub->add_option("-o,--output", a->output, "Output file; the format follows the extension: bvh, fbx, glb, gltf, dae")
+  sub->add_option("IN", a->inputs,
+                  "Input clip (BVH, FBX, glTF/GLB, Collada, … — anything assimp reads); several, or folders "
+                  "(searched recursively), with -o DIR")
+      ->required();
+  sub->add_option("-o,--output", a->output,
+                  "Output file; the format follows the extension: bvh, fbx, glb, gltf, dae. For several inputs or "
+                  "a folder: the output directory, the inputs' layout mirrored under it")
       ->required();
   sub->add_option("--fps", a->fps,
                   "Output rate in Hz: a decimal (30, 59.94) or a rational (30000/1001). Frames at start + k/HZ, "
@@ -169,6 +368,15 @@ void add_resample_command(CLI::App& app, int& exit_code) {
                   "Euler order for BVH output of joints without a BVH layout (non-BVH input); default ZXY");
   sub->add_flag("--fbx-ascii", a->fbx_ascii, "FBX output as ASCII FBX 7.4 (default: binary FBX 7.4, which Blender needs)");
   sub->add_flag("-q,--quiet", a->quiet, "No progress and no summary line");
+  sub->add_option("-j,--jobs", a->jobs, "Folder runs: files resampled at once (0 = one per core)")->capture_default_str();
+  sub->add_option("--shard", a->shard, "Folder runs: only shard I of N (I/N) of the sorted inputs, for a cluster");
+  sub->add_flag("--skip-existing", a->skip_existing,
+                "Folder runs: leave outputs that exist (an output is only ever complete), to resume a run");
+  sub->add_option("--format", a->format,
+                  "Folder runs: output format bvh, fbx, glb, gltf or dae (default: the input's own, else bvh)");
+  sub->add_option("--manifest", a->manifest,
+                  "Folder runs: write a CSV row per file (rate as written and as read, frames, duration, joints, "
+                  "output frames, method, time, status)");
   sub->callback([a, &exit_code] { exit_code = run_resample(*a); });
 }
 

@@ -220,14 +220,19 @@ std::string duration_text(double seconds) {
 int run_folder(const ResampleArgs& a, ResampleOptions opt) {
   namespace fs = std::filesystem;
   std::error_code ec;
-  if (fs::exists(a.output, ec) && !fs::is_directory(a.output, ec))
-    return fail_usage("output '" + a.output + "' is a file; several inputs or a folder need an output directory");
+  if (fs::exists(a.output, ec) ? !fs::is_directory(a.output, ec) : can_write_format(a.output))
+    return fail_usage("output '" + a.output + "' is a file name; several inputs or a folder need an output directory");
   if (!a.format.empty() && !can_write_format(fs::path("x." + a.format)))
     return fail_usage("--format '" + a.format + "': unknown format (use bvh, fbx, glb, gltf or dae)");
   if (a.jobs < 0) return fail_usage("-j " + std::to_string(a.jobs) + ": must be ≥ 0 (0 = one per core)");
   std::vector<fs::path> named(a.inputs.begin(), a.inputs.end());
   auto found = discover_inputs(named);
   if (!found) return fail(found.error());
+  if (found->empty()) {
+    std::string where;
+    for (const std::string& p : a.inputs) where += (where.empty() ? "" : ", ") + p;
+    return fail(where + ": no clip files found (looked for every format assimp imports)");
+  }
   std::vector<std::string> files = *found;
   if (!a.shard.empty()) {
     auto shard = parse_shard(a.shard);
@@ -327,8 +332,11 @@ int run_resample(const ResampleArgs& a) {
   auto opt = resample_options(a);
   if (!opt) return fail_usage(opt.error());
   std::error_code ec;
+  // One file in, one out, as always; a folder run when given a folder, several
+  // inputs, --format, or an existing directory (not named like a clip) as output.
+  const bool into_directory = std::filesystem::is_directory(a.output, ec) && !can_write_format(a.output);
   const bool one_file = a.inputs.size() == 1 && !std::filesystem::is_directory(a.inputs.front(), ec) &&
-                        !std::filesystem::is_directory(a.output, ec) && a.format.empty();
+                        !into_directory && a.format.empty();
   if (!one_file) return run_folder(a, *opt);
   if (!a.shard.empty() || !a.manifest.empty() || a.skip_existing)
     return fail_usage("--shard, --manifest and --skip-existing are for folder runs (-o DIR)");

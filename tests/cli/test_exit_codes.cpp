@@ -116,7 +116,8 @@ TEST_F(ExitCodes, ResampleFailuresLeaveNoOutput) {
   const std::string io = "resample @/good.bvh -o @/out.bvh ";
   check({
       {"resample @/missing.bvh -o @/out.bvh --fps 60", 1, {"@/missing.bvh: no such file"}, "@/out.bvh"},
-      {"resample @/adir -o @/out.bvh --fps 60", 1, {"@/adir: is a directory"}, "@/out.bvh"},
+      {"resample @/adir -o @/out.bvh --fps 60", 2, {"'@/out.bvh' is a file name", "need an output directory"}, "@/out.bvh"},
+      {"resample @/adir -o @/out --fps 60", 1, {"@/adir: no clip files found"}, "@/out"},
       {"resample @/empty.bvh -o @/out.bvh --fps 60", 1, {"@/empty.bvh: the file is empty"}, "@/out.bvh"},
       {"resample @/notes.xyz -o @/out.bvh --fps 60", 1, {"@/notes.xyz: "}, "@/out.bvh"},
       {"resample @/bad.bvh -o @/out.bvh --fps 60", 1, {"@/bad.bvh: "}, "@/out.bvh"},

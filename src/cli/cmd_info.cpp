@@ -1,7 +1,12 @@
 // rotinterp info CLIP [--json] [--anim NAME|INDEX]: what a clip file holds.
+// rotinterp info PATH... --summary [--json] [-j N]: a dataset's files, its rate
+// histogram and what looks wrong (rate labels, uneven keys, empty clips, copies).
 #include "common.h"
 #include "rotinterp/clip/bvh_layout.h"
 #include "rotinterp/clip/frames.h"
+#include "rotinterp/core/work_queue.h"
+#include "rotinterp/eval/inputs.h"
+#include "rotinterp/io/dataset.h"
 #include "rotinterp/io/info.h"
 
 #include <CLI/CLI.hpp>
@@ -9,7 +14,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
 #include <cstdio>
+#include <filesystem>
+#include <future>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -19,10 +31,151 @@ namespace rotinterp::cli {
 namespace {
 
 struct InfoArgs {
-  std::string path;
+  std::vector<std::string> paths;
   std::string anim;
   bool json = false;
+  bool summary = false;
+  int jobs = 0;
 };
+
+// One file of a summary.
+struct FileSummary {
+  std::string file, format, error;
+  ErrorKind error_kind = ErrorKind::other;
+  std::size_t animations = 0, frames = 0, joints = 0;
+  std::string frame_time;    // as written (BVH), else empty
+  std::optional<Rate> rate;  // as recognized
+  double duration = 0.0;
+  std::vector<std::string> notes;  // oddities, the rate label, empty clip, copies
+};
+
+FileSummary summarize(const std::string& file, const ReadOptions& options) {
+  FileSummary s;
+  s.file = file;
+  Result<ClipFileInfo> info = inspect_clip(file, options);
+  if (!info) {
+    s.error = info.error();
+    s.error_kind = info.error_kind();
+    return s;
+  }
+  const Clip& clip = info->clip;
+  s.format = info->format;
+  s.animations = info->animations.size();
+  s.frames = clip.frame_count();
+  s.joints = clip.skeleton.joints.size();
+  s.frame_time = frame_time_text(clip);
+  s.rate = clip_rate(clip);
+  s.duration = clip.end_time() - clip.start_time();
+  if (!(s.duration > 0.0)) s.notes.push_back(fmt::format("zero-length clip ({} frame{})", s.frames, s.frames == 1 ? "" : "s"));
+  if (std::string note = rate_label_note(clip); !note.empty()) s.notes.push_back(note);
+  for (const std::string& o : clip_oddities(clip)) s.notes.push_back(o);
+  return s;
+}
+
+std::string rate_key(const FileSummary& s) { return s.rate ? s.rate->to_string() + " Hz" : "no uniform rate"; }
+
+int run_summary(const InfoArgs& args) {
+  if (args.jobs < 0) return fail_usage("-j " + std::to_string(args.jobs) + ": must be ≥ 0 (0 = one per core)");
+  std::vector<std::filesystem::path> named(args.paths.begin(), args.paths.end());
+  auto files = discover_inputs(named);
+  if (!files) return fail(files.error());
+  ReadOptions options;
+  options.animation = args.anim;
+  // Warnings belong to the files' rows, not to stderr.
+  options.on_warning = [](const std::string&) {};
+  WorkQueue queue(static_cast<unsigned>(args.jobs));
+  const ProgressFn progress = make_progress("info", false);
+  std::atomic<std::size_t> done{0};
+  std::vector<std::future<FileSummary>> futures;
+  for (const std::string& f : *files)
+    futures.push_back(queue.submit([&, f] {
+      FileSummary s = summarize(f, options);
+      if (progress) progress(++done, files->size());
+      return s;
+    }));
+  std::vector<FileSummary> rows;
+  for (auto& f : futures) rows.push_back(f.get());
+  end_progress(false);
+  // Meshes found next to the clips are not part of the dataset (as eval skips them).
+  rows.erase(std::remove_if(rows.begin(), rows.end(),
+                            [&](const FileSummary& s) {
+                              return !s.error.empty() && s.error_kind == ErrorKind::no_animation &&
+                                     found_in_directory(s.file, named);
+                            }),
+             rows.end());
+  std::map<std::string, std::size_t> row_of;
+  for (std::size_t i = 0; i < rows.size(); ++i) row_of[rows[i].file] = i;
+  const auto copies = duplicate_files(*files);
+  for (const auto& group : copies)
+    for (const std::string& f : group) {
+      std::string others;
+      for (const std::string& g : group)
+        if (g != f) others += (others.empty() ? "" : ", ") + g;
+      if (row_of.count(f)) rows[row_of[f]].notes.push_back("same bytes as " + others);
+    }
+  std::map<std::string, std::size_t> histogram;
+  std::size_t unreadable = 0, flagged = 0;
+  for (const FileSummary& s : rows) {
+    if (!s.error.empty()) {
+      ++unreadable;
+      continue;
+    }
+    ++histogram[rate_key(s)];
+    flagged += !s.notes.empty();
+  }
+  std::vector<std::pair<std::string, std::size_t>> rates(histogram.begin(), histogram.end());
+  std::stable_sort(rates.begin(), rates.end(), [](const auto& x, const auto& y) { return x.second > y.second; });
+
+  if (args.json) {
+    nlohmann::json out;
+    out["files"] = nlohmann::json::array();
+    for (const FileSummary& s : rows) {
+      nlohmann::json row = {{"file", s.file}};
+      if (!s.error.empty()) {
+        row["error"] = s.error;
+      } else {
+        row.update({{"format", s.format},
+                    {"animations", s.animations},
+                    {"frames", s.frames},
+                    {"frame_time_written", s.frame_time.empty() ? nlohmann::json(nullptr) : nlohmann::json(s.frame_time)},
+                    {"frame_rate", s.rate ? nlohmann::json(s.rate->to_string()) : nlohmann::json(nullptr)},
+                    {"frame_rate_hz", s.rate ? nlohmann::json(s.rate->hz()) : nlohmann::json(nullptr)},
+                    {"duration_s", s.duration},
+                    {"joints", s.joints},
+                    {"notes", s.notes}});
+      }
+      out["files"].push_back(row);
+    }
+    out["rates"] = nlohmann::json::array();
+    for (const auto& [rate, count] : rates) out["rates"].push_back({{"rate", rate}, {"files", count}});
+    out["duplicates"] = copies;
+    out["unreadable"] = unreadable;
+    out["flagged"] = flagged;
+    fmt::print("{}\n", out.dump(2));
+  } else {
+    std::size_t width = 4;
+    for (const FileSummary& s : rows) width = std::max(width, s.file.size());
+    fmt::print("{:<{}}  {:<6} {:>12} {:>10} {:>8} {:>10} {:>6}  {}\n", "file", width, "format", "rate", "frame time",
+               "frames", "duration", "joints", "notes");
+    for (const FileSummary& s : rows) {
+      if (!s.error.empty()) {
+        fmt::print("{:<{}}  unreadable: {}\n", s.file, width, s.error);
+        continue;
+      }
+      std::string notes;
+      for (const std::string& n : s.notes) notes += (notes.empty() ? "" : "; ") + n;
+      fmt::print("{:<{}}  {:<6} {:>12} {:>10} {:>8} {:>9.3f}s {:>6}  {}\n", s.file, width, s.format,
+                 s.rate ? s.rate->to_string() + " Hz" : "none", s.frame_time.empty() ? "-" : s.frame_time, s.frames,
+                 s.duration, s.joints, notes);
+    }
+    fmt::print("\n{} file{}: {} read, {} unreadable, {} with notes, {} group{} of identical files\n", rows.size(),
+               rows.size() == 1 ? "" : "s", rows.size() - unreadable, unreadable, flagged, copies.size(),
+               copies.size() == 1 ? "" : "s");
+    fmt::print("rates:\n");
+    for (const auto& [rate, count] : rates) fmt::print("  {:>16}  {} file{}\n", rate, count, count == 1 ? "" : "s");
+  }
+  return unreadable > 0 ? kExitPartial : kExitOk;
+}
 
 std::string layout_text(const std::vector<Channel>& channels) {
   std::string s;
@@ -31,10 +184,15 @@ std::string layout_text(const std::vector<Channel>& channels) {
 }
 
 int run_info(const InfoArgs& args) {
+  if (args.summary) return run_summary(args);
+  std::error_code ec;
+  if (args.paths.size() != 1 || std::filesystem::is_directory(args.paths.front(), ec))
+    return fail_usage("info describes one clip; for several files or a folder add --summary");
   ReadOptions options;
   options.animation = args.anim;
   options.on_warning = warn;
-  Result<ClipFileInfo> info = inspect_clip(args.path, options);
+  const std::string& path = args.paths.front();
+  Result<ClipFileInfo> info = inspect_clip(path, options);
   if (!info) return fail(info.error());
   const Clip& clip = info->clip;
   const Skeleton& sk = clip.skeleton;
@@ -50,7 +208,7 @@ int run_info(const InfoArgs& args) {
 
   if (args.json) {
     nlohmann::json out;
-    out["file"] = args.path;
+    out["file"] = path;
     out["format"] = info->format;
     out["animations"] = nlohmann::json::array();
     for (std::size_t a = 0; a < info->animations.size(); ++a) {
@@ -92,7 +250,7 @@ int run_info(const InfoArgs& args) {
     return kExitOk;
   }
 
-  fmt::print("file:        {}\n", args.path);
+  fmt::print("file:        {}\n", path);
   fmt::print("format:      {}\n", info->format);
   fmt::print("animations:  {}\n", info->animations.size());
   for (std::size_t a = 0; a < info->animations.size(); ++a) {
@@ -137,9 +295,16 @@ void add_info_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<InfoArgs>();
   auto* sub = app.add_subcommand("info", "Describe a clip file: format, animations, joint tree and channel layout, "
                                          "frames, rate, duration, translation tracks, oddities");
-  sub->add_option("clip", args->path, "Clip file (BVH, FBX, glTF/GLB, Collada, … anything assimp imports)")->required();
+  sub->add_option("clip", args->paths,
+                  "Clip file (BVH, FBX, glTF/GLB, Collada, … anything assimp imports); with --summary, several "
+                  "files and folders (searched recursively)")
+      ->required();
   sub->add_option("--anim", args->anim, "Animation to describe: name or 0-based index (default: the first)");
   sub->add_flag("--json", args->json, "Print JSON instead of text");
+  sub->add_flag("--summary", args->summary,
+                "One row per file (format, rate as read and as written, frames, duration, joints, notes), then the "
+                "rate histogram; flags rate labels that are not their rate, uneven keys, empty clips, identical files");
+  sub->add_option("-j,--jobs", args->jobs, "With --summary: files read at once (0 = one per core)")->capture_default_str();
   sub->callback([args, &exit_code] { exit_code = run_info(*args); });
 }
 

@@ -54,6 +54,13 @@ const typename decltype(Track::keys)::value_type* key_at(const Track& track, dou
   return &track.keys[static_cast<std::size_t>(it - track.times.begin())];
 }
 
+// Whether the output frames are exactly the track's keys (a same-rate resample):
+// then the keys are the output, and no curve is built.
+template <class Track>
+bool frames_are_keys(const Track& track, const std::vector<double>& eval_times) {
+  return track.times == eval_times;
+}
+
 // What to compute, shared by all joints.
 struct Plan {
   std::vector<double> eval_times;  // where the output frames are sampled (source timeline)
@@ -95,6 +102,8 @@ Status resample_joint(const Clip& in, std::size_t j, const std::string& method, 
   rot.keys.resize(plan.eval_times.size());
   if (build_from->keys.size() == 1) {
     std::fill(rot.keys.begin(), rot.keys.end(), build_from->keys.front());
+  } else if (frames_are_keys(*build_from, plan.eval_times)) {
+    rot.keys = build_from->keys;
   } else {
     auto made = make_interpolator(method, *build_from);
     if (!made) return make_error(made.error());
@@ -120,11 +129,15 @@ Status resample_joint(const Clip& in, std::size_t j, const std::string& method, 
       }
       tbuild = &tkeys;
     }
-    const TranslationCurve curve(*tbuild, opt.translation);
     TranslationTrack& tr = out.translations[j].emplace();
     tr.times = plan.out_times;
-    tr.keys.resize(plan.eval_times.size());
-    for (std::size_t k = 0; k < plan.eval_times.size(); ++k) tr.keys[k] = curve.evaluate(plan.eval_times[k]);
+    if (frames_are_keys(*tbuild, plan.eval_times)) {
+      tr.keys = tbuild->keys;
+    } else {
+      const TranslationCurve curve(*tbuild, opt.translation);
+      tr.keys.resize(plan.eval_times.size());
+      for (std::size_t k = 0; k < plan.eval_times.size(); ++k) tr.keys[k] = curve.evaluate(plan.eval_times[k]);
+    }
   }
   return Ok{};
 }

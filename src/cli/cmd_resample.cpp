@@ -271,8 +271,9 @@ int run_folder(const ResampleArgs& a, ResampleOptions opt) {
       FileRun run;
       run.input = m.input;
       run.output = m.output;
-      run.bytes = fs::file_size(m.input, ec) * !ec;
-      if (a.skip_existing && fs::is_regular_file(m.output)) {
+      std::error_code size_error;  // this worker's own
+      run.bytes = fs::file_size(m.input, size_error) * !size_error;
+      if (a.skip_existing && fs::is_regular_file(m.output, size_error)) {
         run.status = "exists";
       } else if (Status mine = check_not_an_input(m.output); !mine) {
         run.status = "failed";

@@ -38,7 +38,9 @@ void snap_times(Track& track, const FrameGrid& grid) {
   std::vector<double> snapped(track.times.size());
   std::optional<std::size_t> previous;
   for (std::size_t k = 0; k < track.times.size(); ++k) {
-    const std::optional<std::size_t> i = grid.frame_at(track.times[k]);
+    // A key per frame is the common case: frame k, without a search, when it is within the snap.
+    const bool own_frame = k < grid.times.size() && std::abs(grid.times[k] - track.times[k]) <= grid.snap;
+    const std::optional<std::size_t> i = own_frame ? std::optional<std::size_t>(k) : grid.frame_at(track.times[k]);
     if (!i || (previous && *i <= *previous)) return;
     snapped[k] = grid.exact_time(*i);
     previous = i;
@@ -103,7 +105,7 @@ Status resample_joint(const Clip& in, std::size_t j, const std::string& method, 
   if (build_from->keys.size() == 1) {
     std::fill(rot.keys.begin(), rot.keys.end(), build_from->keys.front());
   } else if (frames_are_keys(*build_from, plan.eval_times)) {
-    rot.keys = build_from->keys;
+    rot.keys = build_from == &source ? std::move(source.keys) : build_from->keys;
   } else {
     auto made = make_interpolator(method, *build_from);
     if (!made) return make_error(made.error());
@@ -132,7 +134,7 @@ Status resample_joint(const Clip& in, std::size_t j, const std::string& method, 
     TranslationTrack& tr = out.translations[j].emplace();
     tr.times = plan.out_times;
     if (frames_are_keys(*tbuild, plan.eval_times)) {
-      tr.keys = tbuild->keys;
+      tr.keys = tbuild == &tsource ? std::move(tsource.keys) : tbuild->keys;
     } else {
       const TranslationCurve curve(*tbuild, opt.translation);
       tr.keys.resize(plan.eval_times.size());

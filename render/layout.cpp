@@ -45,8 +45,9 @@ PanelLayout panel_layout(int width, int height, bool trail, bool strip, bool bar
   if (bar) {
     const int w = std::clamp(static_cast<int>(std::lround(0.016 * width)), 5, 14);
     const int margin = std::max(4, std::min(width, scene_height) / 40);
-    const int h = static_cast<int>(std::lround(0.55 * scene_height));
-    if (h >= 16) l.bar = Rect{margin, l.title_height + (scene_height - h) / 2, w, h};
+    // Below the two lines of text at the figure's top left (frame and time, the scale).
+    const int h = static_cast<int>(std::lround(0.5 * scene_height));
+    if (h >= 16) l.bar = Rect{margin, l.title_height + static_cast<int>(std::lround(0.32 * scene_height)), w, h};
   }
   if (!trail) return l;
   const int margin = std::max(4, std::min(width, scene_height) / 60);

@@ -543,7 +543,7 @@ struct Renderer::Impl {
     gl.Enable(GL_DEPTH_TEST);
     const int px = std::clamp(bar.height / 9, 9, 16);
     const float x = static_cast<float>(bar.x + bar.width + std::max(2, bar.width / 2));
-    texts.push_back(TextItem{fmt::format("{:g}° (all panels)", panel.colour_scale_deg), x, static_cast<float>(bar.y) - 0.2f * static_cast<float>(px), px});
+    texts.push_back(TextItem{fmt::format("{:g}°", panel.colour_scale_deg), x, static_cast<float>(bar.y) - 0.2f * static_cast<float>(px), px});
     texts.push_back(TextItem{"0°", x, static_cast<float>(bar.y + bar.height) - 0.95f * static_cast<float>(px), px});
   }
 
@@ -584,8 +584,8 @@ struct Renderer::Impl {
     texts.push_back(TextItem{fmt::format("max and mean error, 0-{:g}°", scale), x0 + 2.0f, static_cast<float>(r.y) + 1.0f, px});
   }
 
-  // `panel.joint_label` next to its joint of the pose, with a short leader line,
-  // kept inside the figure.
+  // `panel.joint_label` next to its joint of the pose, with a short leader line
+  // (none when the joint is out of view), kept inside the figure.
   void label_joint(const Panel& panel, const Camera& camera, const Rect& figure, int width, int height) {
     const auto j = static_cast<std::size_t>(panel.label_joint);
     if (panel.label_joint < 0 || j >= panel.pose.position.size() || panel.joint_label.empty()) return;
@@ -594,13 +594,16 @@ struct Renderer::Impl {
     const double px_x = figure.x + (clip.x() / clip.w() + 1.0) * 0.5 * figure.width;
     const double px_y = figure.y + (1.0 - clip.y() / clip.w()) * 0.5 * figure.height;
     if (!std::isfinite(px_x) || !std::isfinite(px_y)) return;
-    const int ph = std::clamp(static_cast<int>(std::lround(0.05 * height)), 9, 18);
+    const int ph = std::clamp(static_cast<int>(std::lround(0.04 * height)), 9, 15);
     const float text_w = text_width(panel.joint_label)(ph);
     const float gap = 1.2f * static_cast<float>(ph);
     float x = static_cast<float>(px_x) + gap, top = static_cast<float>(px_y) - gap - static_cast<float>(ph);
     if (x + text_w > static_cast<float>(figure.x + figure.width) - 2.0f) x = static_cast<float>(px_x) - gap - text_w;
     x = std::clamp(x, static_cast<float>(figure.x) + 2.0f, std::max(static_cast<float>(figure.x) + 2.0f, static_cast<float>(figure.x + figure.width) - text_w - 2.0f));
     top = std::clamp(top, static_cast<float>(figure.y) + 2.0f, static_cast<float>(figure.y + figure.height - ph) - 2.0f);
+    texts.push_back(TextItem{panel.joint_label, x, top, ph});
+    // A leader to the joint where it is in view (a focus view may leave it out).
+    if (px_x < figure.x || px_x > figure.x + figure.width || px_y < figure.y || px_y > figure.y + figure.height) return;
     LineList lines;
     const float ly = top + static_cast<float>(ph);
     const float lx = x < static_cast<float>(px_x) ? x + text_w : x;
@@ -609,7 +612,6 @@ struct Renderer::Impl {
     gl.Viewport(0, 0, width, height);
     draw_lines(lines, pixel_space(width, height));
     gl.Enable(GL_DEPTH_TEST);
-    texts.push_back(TextItem{panel.joint_label, x, top, ph});
   }
 
   Status draw_panel(const Panel& panel, int width, int height) {
@@ -651,10 +653,18 @@ struct Renderer::Impl {
     if (layout.inset.width >= 32) draw_trail(panel, *panel.trail, layout.inset, height);
     if (layout.bar.height > 0) draw_colour_bar(panel, layout.bar, width, height);
     if (layout.strip.height > 0) draw_strip(*panel.strip, layout.strip, width, height);
-    if (!panel.corner.empty()) {
+    {
       const int ph = std::clamp(static_cast<int>(std::lround(0.045 * height)), 9, 18);
       const float pad = static_cast<float>(std::max(3, ph / 3));
-      texts.push_back(TextItem{panel.corner, pad, static_cast<float>(figure.y) + pad, ph});
+      float top = static_cast<float>(figure.y) + pad;
+      if (!panel.corner.empty()) {
+        texts.push_back(TextItem{panel.corner, pad, top, ph});
+        top += 1.2f * static_cast<float>(ph);
+      }
+      if (layout.bar.height > 0) {  // the scale, stated: the same in every panel of the image
+        const int small = std::max(8, ph * 4 / 5);
+        texts.push_back(TextItem{fmt::format("colours 0-{:g}°, all panels", panel.colour_scale_deg), pad, top, small});
+      }
     }
 
     texts.push_back(title_text(panel.title, layout, width, text_width(panel.title)));

@@ -30,7 +30,8 @@ std::vector<Rect> grid_layout(int count, int columns, int width, int height);
 // downwards.
 // With a strip, an error-over-time strip across the bottom (about 0.14 of the
 // height, 18…90 rows) below the scene area; with a colour bar, a narrow vertical
-// bar at the figure's left (its labels right of it), over the figure.
+// bar at the figure's left (its labels right of it), over the figure, from 0.32 to
+// 0.82 of the scene's height (two lines of text fit above it).
 struct PanelLayout {
   int title_height = 0;  // rows at the top
   Rect figure;           // the figure's viewport

@@ -31,18 +31,8 @@ namespace rotinterp::render {
 namespace {
 
 namespace fs = std::filesystem;
+using test::fresh_dir;
 using test::run_cli;
-
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("rotinterp_test_difference_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  return dir;
-}
-
-std::string bytes(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
 
 std::array<int, 3> to_bytes(const Color& c) {
   return {static_cast<int>(std::lround(c[0] * 255)), static_cast<int>(std::lround(c[1] * 255)),
@@ -155,7 +145,83 @@ TEST(ErrorColours, ABoneWhoseErrorIsKnownGetsTheColourMapsColour) {
   }
 }
 
+TEST(ErrorColours, TheWorstJointIsLabelledNextToIt) {
+  auto context = create_context(default_backend());
+  ASSERT_TRUE(context.ok()) << context.error();
+  auto renderer = Renderer::create(std::move(context).value(), one_bone_scene());
+  ASSERT_TRUE(renderer.ok()) << renderer.error();
+  Panel p;
+  p.pose.position = {Vec3(0, 0, 0), Vec3(1, 0, 0)};
+  auto plain = (*renderer)->render({p}, 240, 160);
+  p.label_joint = 1;
+  p.joint_label = "Tip 12.3°";
+  auto labelled = (*renderer)->render({p}, 240, 160);
+  ASSERT_TRUE(plain.ok() && labelled.ok());
+  // Text and leader: light pixels that were not there, all in the half of the
+  // figure where the tip (x = 1, the right) is.
+  int changed = 0, right = 0;
+  for (int y = 0; y < 160; ++y)
+    for (int x = 0; x < 240; ++x)
+      if (const std::uint8_t* before = plain->pixel(x, y);
+          channel_distance(labelled->pixel(x, y), {before[0], before[1], before[2]}) > 40) {
+        ++changed;
+        right += x >= 120;
+      }
+  EXPECT_GT(changed, 40);
+  EXPECT_GT(right, changed * 9 / 10);
+}
+
+TEST(ErrorStrip, DrawsTheCursorAtThePanelsFrame) {
+  auto context = create_context(default_backend());
+  ASSERT_TRUE(context.ok()) << context.error();
+  auto renderer = Renderer::create(std::move(context).value(), one_bone_scene());
+  ASSERT_TRUE(renderer.ok()) << renderer.error();
+  for (std::size_t cursor : {std::size_t{2}, std::size_t{8}}) {
+    auto strip = std::make_shared<ErrorStrip>();
+    for (int i = 0; i <= 10; ++i) {
+      strip->max_deg.push_back(static_cast<float>(i));
+      strip->mean_deg.push_back(static_cast<float>(i) / 2);
+    }
+    strip->scale_deg = 10.0;
+    strip->cursor = cursor;
+    Panel p;
+    p.strip = strip;
+    auto image = (*renderer)->render({p}, 240, 200);
+    ASSERT_TRUE(image.ok()) << image.error();
+    const Rect r = panel_layout(240, 200, false, true).strip;
+    ASSERT_GT(r.height, 0);
+    // The orange cursor's pixels: their mean x is the cursor's place on the time axis.
+    double sum = 0;
+    int count = 0;
+    for (int y = r.y; y < r.y + r.height; ++y)
+      for (int x = r.x; x < r.x + r.width; ++x) {
+        const std::uint8_t* px = image->pixel(x, y);
+        if (px[0] > 180 && px[1] > 100 && px[1] < 190 && px[2] < 90) {
+          sum += x;
+          ++count;
+        }
+      }
+    ASSERT_GT(count, 5) << cursor;
+    const double pad = std::max(3, r.height / 8);
+    const double expected = r.x + pad + (r.width - 2 * pad) * static_cast<double>(cursor) / 10.0;
+    EXPECT_NEAR(sum / count, expected, 2.0) << cursor;
+  }
+}
+
 // ---- the follow camera -----------------------------------------------------------
+
+// One method's panels at `width` × `height`, coloured by method (the figure's
+// pixels are the saturated ones), no strip.
+ComparisonOptions one_method(FrameRange frames, int width, int height) {
+  ComparisonOptions o;
+  o.methods = {"slerp"};
+  o.frames = frames;
+  o.width = width;
+  o.height = height;
+  o.colouring = Colouring::method;
+  o.strip = false;
+  return o;
+}
 
 // The centre x of the saturated (method-coloured) pixels of the first panel, as
 // a fraction of its width; -1 when there are none.
@@ -178,13 +244,7 @@ double figure_centre(const fs::path& png, const Rect& panel) {
 
 TEST(FollowCamera, KeepsTheRootInTheMiddleThirdOfATravellingClip) {
   const Clip clip = test::synthetic_clip(61, 30.0, 1.5);  // 3 units in 2 s; the figure is 1.9 high
-  ComparisonOptions o;
-  o.methods = {"slerp"};
-  o.frames = FrameRange{0, 60, 30};
-  o.width = 240;
-  o.height = 160;
-  o.colouring = Colouring::method;
-  o.strip = false;
+  ComparisonOptions o = one_method(FrameRange{0, 60, 30}, 240, 160);
   const Rect panel{0, 0, 240, 160};
   std::map<CameraMode, std::vector<double>> centres;
   for (CameraMode mode : {CameraMode::automatic, CameraMode::fixed}) {
@@ -207,13 +267,7 @@ TEST(FollowCamera, KeepsTheRootInTheMiddleThirdOfATravellingClip) {
 
 TEST(FollowCamera, IsNotTheDefaultForAClipThatStaysInPlaceAndFocusZoomsOnTheLimb) {
   const Clip clip = test::synthetic_clip();
-  ComparisonOptions o;
-  o.methods = {"slerp"};
-  o.frames = FrameRange{15, 15, 1};
-  o.width = 240;
-  o.height = 160;
-  o.colouring = Colouring::method;
-  o.strip = false;
+  ComparisonOptions o = one_method(FrameRange{15, 15, 1}, 240, 160);
   const fs::path dir = fresh_dir("focus");
   auto whole = render_comparison(clip, dir / "whole", o);
   ASSERT_TRUE(whole.ok()) << whole.error();
@@ -292,11 +346,7 @@ TEST(TrailInset, AHingesArcIsSeenFaceOnNotEdgeOn) {
 
 TEST(TrailInset, ShowsAWindowOfTimeThatFades) {
   const Clip clip = test::synthetic_clip();
-  ComparisonOptions o;
-  o.methods = {"squad"};
-  o.frames = FrameRange{30, 30, 1};
-  o.width = 320;
-  o.height = 200;
+  ComparisonOptions o = one_method(FrameRange{30, 30, 1}, 320, 200);
   o.trail_joint = "LeftShoulder";
   const fs::path dir = fresh_dir("window");
   std::vector<std::vector<std::uint8_t>> insets;
@@ -305,7 +355,7 @@ TEST(TrailInset, ShowsAWindowOfTimeThatFades) {
     auto result = render_comparison(clip, dir / std::to_string(window), o);
     ASSERT_TRUE(result.ok()) << result.error();
     const test::Pixels p = test::read_png(result->files[0]);
-    insets.push_back(test::crop(p, panel_layout(320, 200, true, true, true).inset));
+    insets.push_back(test::crop(p, panel_layout(320, 200, true).inset));
   }
   // 0 draws the whole 2 s clip (one frame drawn); 0.3 s draws frames 21…39 only.
   EXPECT_GT(test::differing_pixels(insets[0], insets[1]), 300u);
@@ -318,15 +368,11 @@ TEST(TrailInset, ShowsAWindowOfTimeThatFades) {
 
 TEST(FrameText, EveryFrameShowsItsNumberAndTimeInACorner) {
   const Clip clip = test::synthetic_clip();
-  ComparisonOptions o;
-  o.methods = {"slerp"};
-  o.frames = FrameRange{14, 16, 2};
-  o.width = 320;
-  o.height = 200;
+  const ComparisonOptions o = one_method(FrameRange{14, 16, 2}, 320, 200);
   const fs::path dir = fresh_dir("time");
   auto result = render_comparison(clip, dir, o);
   ASSERT_TRUE(result.ok()) << result.error();
-  const PanelLayout layout = panel_layout(320, 200, false, true, true);
+  const PanelLayout layout = panel_layout(320, 200, false);
   const Rect corner{0, layout.figure.y, 120, 16};
   const auto a = test::crop(test::read_png(result->files[0]), corner);
   const auto b = test::crop(test::read_png(result->files[1]), corner);
@@ -378,11 +424,11 @@ TEST(Video, GifAndPngsTogetherAndTheSameCommandGivesTheSameBytes) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(probe(dir / "walk.gif", "codec_name,width,height,nb_read_frames"), "gif,160,90,10");
   EXPECT_TRUE(fs::exists(dir / "png" / "frame_000020.png"));
-  const std::string gif = bytes(dir / "walk.gif"), png = bytes(dir / "png" / "frame_000025.png");
+  const std::string gif = test::slurp(dir / "walk.gif"), png = test::slurp(dir / "png" / "frame_000025.png");
   r = run_cli(args);
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_EQ(bytes(dir / "walk.gif"), gif);
-  EXPECT_EQ(bytes(dir / "png" / "frame_000025.png"), png);
+  EXPECT_EQ(test::slurp(dir / "walk.gif"), gif);
+  EXPECT_EQ(test::slurp(dir / "png" / "frame_000025.png"), png);
   fs::remove_all(dir);
 }
 

@@ -400,7 +400,7 @@ std::string probe(const fs::path& video, const std::string& entries) {
 
 const std::string kSample = std::string(ROTINTERP_SOURCE_DIR) + "/samples/walk.bvh";  // 121 frames at 30 Hz
 
-TEST(Video, Mp4HasTheFramesSizeAndRateAskedAndNoPngsAreWritten) {
+TEST(Video, Mp4HasTheFramesSizeAndRateAskedNoPngsAndTheSameBytesEachTime) {
   const fs::path dir = fresh_dir("mp4");
   fs::create_directories(dir);
   const fs::path video = dir / "walk.mp4";
@@ -409,6 +409,10 @@ TEST(Video, Mp4HasTheFramesSizeAndRateAskedAndNoPngsAreWritten) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(probe(video, "width,height,r_frame_rate,nb_read_frames,codec_name"), "h264,320,180,30/1,36");
   EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1) << "only the video";
+  const std::string first = test::slurp(video);
+  r = run_cli("render " + kSample + " --video " + video.string() + " --methods slerp,squad --frames 10:45 --size 320x180 -q");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(test::slurp(video), first) << "the same command gives the same bytes";
   // --video-fps, and every frame of the clip by default.
   r = run_cli("render " + kSample + " --video " + video.string() + " --methods slerp --size 160x90 --video-fps 12 -q");
   ASSERT_EQ(r.exit_code, 0) << r.err;

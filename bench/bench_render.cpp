@@ -4,9 +4,11 @@
 //    reading it back, on each backend;
 //  * BM_DrawAndEncodeFrame: the same plus writing the PNG (atomically), sequentially;
 //  * BM_RenderComparison: the whole pipeline of render_comparison (keys every 10
-//    frames, 3 interpolators, FK, drawing, PNG writing on worker threads) over 48
-//    frames of the synthetic humanoid and of CMU 01_01 (31 joints), reported as
-//    frames per second (items/s), context creation included.
+//    frames, 3 interpolators, FK, error colouring with its colour bar and worst
+//    joint label, the error strip, drawing, then PNG writing on worker threads —
+//    or H.264 encoding through ffmpeg, no PNGs) over 48 frames of the synthetic
+//    humanoid and of CMU 01_01 (31 joints), reported as frames per second
+//    (items/s), context creation (and ffmpeg's start and finish) included.
 #include "rotinterp/clip/clip.h"
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/io/read.h"
@@ -152,8 +154,9 @@ void BM_DrawAndEncodeFrame(benchmark::State& state) {
 }
 BENCHMARK(BM_DrawAndEncodeFrame)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// The whole pipeline over 48 frames: arg 0 = the synthetic humanoid (frames 0…235
-// step 5), arg 1 = the real CMU 01_01 clip (31 joints, frames 100…570 step 10).
+// The whole pipeline over 48 frames: first arg 0 = the synthetic humanoid (frames
+// 0…235 step 5), 1 = the real CMU 01_01 clip (31 joints, frames 100…570 step 10);
+// second arg 0 = PNGs, 1 = an MP4 video only.
 void BM_RenderComparison(benchmark::State& state) {
   if (methods().size() < 3) {
     state.SkipWithError("fewer than 3 interpolation methods are registered");
@@ -176,6 +179,12 @@ void BM_RenderComparison(benchmark::State& state) {
   for (std::size_t m = 0; m < 3; ++m) options.methods.push_back(methods()[m].name);
   options.keep_every = 10;
   const auto dir = std::filesystem::temp_directory_path() / "rotinterp_bench_render";
+  const bool video = state.range(1) == 1;
+  if (video) {
+    std::filesystem::create_directories(dir);
+    options.pngs = false;
+    options.video = dir / "bench.mp4";
+  }
   for (auto _ : state) {
     auto result = render_comparison(clip, dir, options);
     if (!result) {
@@ -185,9 +194,14 @@ void BM_RenderComparison(benchmark::State& state) {
   }
   std::filesystem::remove_all(dir);
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * 48);
-  state.SetLabel(state.range(0) == 0 ? "synthetic humanoid; items/s = frames/s" : "cmu_01_01.bvh; items/s = frames/s");
+  state.SetLabel(std::string(state.range(0) == 0 ? "synthetic humanoid" : "cmu_01_01.bvh") +
+                 (video ? ", mp4" : ", png") + "; items/s = frames/s");
 }
-BENCHMARK(BM_RenderComparison)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
+BENCHMARK(BM_RenderComparison)
+    ->ArgsProduct({{0, 1}, {0, 1}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(3);
 
 }  // namespace
 

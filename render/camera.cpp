@@ -1,5 +1,7 @@
 #include "rotinterp/render/camera.h"
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -121,37 +123,65 @@ Vec3 unit_or_zero(const Vec3& v) {
   return n > 0.0 && std::isfinite(n) ? Vec3(v / n) : Vec3::Zero();
 }
 
+std::optional<TrailPlane> trail_plane(const std::vector<Vec3>& reference) {
+  if (reference.size() < 3) return std::nullopt;
+  Vec3 centroid = Vec3::Zero();
+  for (const Vec3& d : reference) centroid += unit_or_zero(d);
+  centroid /= static_cast<double>(reference.size());
+  Mat3 covariance = Mat3::Zero();
+  for (const Vec3& d : reference) {
+    const Vec3 r = unit_or_zero(d) - centroid;
+    covariance += r * r.transpose();
+  }
+  covariance /= static_cast<double>(reference.size());
+  const Eigen::SelfAdjointEigenSolver<Mat3> eigen(covariance);  // eigenvalues ascending
+  const Vec3 lambda = eigen.eigenvalues();
+  if (eigen.info() != Eigen::Success || !lambda.allFinite()) return std::nullopt;
+  if (lambda(2) < kTrailMinSpread * kTrailMinSpread) return std::nullopt;  // a dot
+  if (lambda(0) > kTrailMaxFlatness * lambda(1)) return std::nullopt;      // fills the sphere
+  if (lambda(1) < kTrailMinBend * lambda(2)) return std::nullopt;           // nearly straight: no face to show
+  Vec3 normal = eigen.eigenvectors().col(0).normalized();
+  if (normal.dot(centroid) < 0.0) normal = -normal;
+  return TrailPlane{normal, centroid};
+}
+
 TrailView trail_view(const std::vector<Vec3>& reference, const std::vector<Vec3>& method, const ViewAngles& scene_view) {
   Vec3 mean = Vec3::Zero();
   for (const Vec3& d : reference) mean += unit_or_zero(d);
   mean /= static_cast<double>(reference.size());
-  Vec3 toward;
-  if (mean.norm() > 0.2) {
+  const double az = scene_view.azimuth_deg * kPi / 180.0;
+  const double el = std::max(scene_view.elevation_deg, 20.0) * kPi / 180.0;
+  const Vec3 scene_back(std::sin(az) * std::cos(el), std::sin(el), std::cos(az) * std::cos(el));
+  Vec3 toward, target = Vec3::Zero();
+  if (const auto plane = trail_plane(reference)) {
+    // A plane through the centre (a great circle) has no outer side: the scene's.
+    const Vec3& n = plane->normal;
+    toward = std::abs(n.dot(mean)) > 1e-3 || n.dot(scene_back) >= 0.0 ? n : Vec3(-n);
+    target = plane->centroid;
+  } else if (mean.norm() > 0.2) {
     toward = mean.normalized();
   } else {
-    const double az = scene_view.azimuth_deg * kPi / 180.0;
-    const double el = std::max(scene_view.elevation_deg, 20.0) * kPi / 180.0;
-    toward = Vec3(std::sin(az) * std::cos(el), std::sin(el), std::cos(az) * std::cos(el));
+    toward = scene_back;
   }
   TrailView view;
   Camera& camera = view.camera;
-  camera.eye = 3.9 * toward;
-  camera.target = Vec3::Zero();
+  camera.eye = target + 3.9 * toward;
+  camera.target = target;
   camera.up = std::abs(toward.y()) < 0.95 ? Vec3::UnitY() : Vec3::UnitZ();
   // Tangent of the angle between the view axis and each sample, seen from the eye.
   double spread = 0.0;
   for (const std::vector<Vec3>* curve : {&reference, &method})
     for (const Vec3& d : *curve) {
-      const Vec3 u = unit_or_zero(d);
-      spread = std::max(spread, (u - u.dot(toward) * toward).norm() / (camera.eye.norm() - std::max(u.dot(toward), 0.0)));
+      const Vec3 r = unit_or_zero(d) - target;
+      spread = std::max(spread, (r - r.dot(toward) * toward).norm() / (3.9 - std::max(r.dot(toward), 0.0)));
     }
   const double max_half = 18.0 * kPi / 180.0;
   const double half = std::clamp(std::atan(1.25 * spread + 0.02), 1.5 * kPi / 180.0, max_half);
   view.zoom = std::tan(half) / std::tan(max_half);
   camera.fov_y = 2.0 * half;
   camera.aspect = 1.0;
-  camera.near_plane = 2.0;
-  camera.far_plane = 6.0;
+  camera.near_plane = 0.8;  // the sphere lies 1.9…7.9 from an eye 3.9 from a target inside it
+  camera.far_plane = 8.0;
   return view;
 }
 

@@ -4,7 +4,10 @@
 #include "rotinterp/core/work_queue.h"
 #include "rotinterp/core/rotation.h"
 #include "rotinterp/interp/interpolator.h"
+#include "rotinterp/clip/metrics.h"
+#include "rotinterp/render/colour_map.h"
 #include "rotinterp/render/layout.h"
+#include "rotinterp/render/video.h"
 
 #include <fmt/format.h>
 
@@ -94,27 +97,42 @@ struct Rebuild {
     forward_kinematics(clip->skeleton, local, translations(f), out);
   }
 
-  FrameError method_pose(std::size_t m, std::size_t f, WorldPose& out) const {
-    std::vector<Quat> local(dense.rotation.size());
+  // Method m's rotations at frame f into `local`, its error (as eval measures it)
+  // returned; with `joint_error`, every joint's error in degrees, and `worst` the
+  // counted joint that errs most (-1 when none is counted).
+  FrameError method_rotations(std::size_t m, std::size_t f, std::vector<Quat>& local,
+                              std::vector<double>* joint_error = nullptr, int* worst = nullptr) const {
+    local.resize(dense.rotation.size());
+    if (joint_error) joint_error->assign(local.size(), 0.0);
+    if (worst) *worst = -1;
     FrameError error;
     std::size_t counted = 0;
     for (std::size_t j = 0; j < local.size(); ++j) {
       local[j] = interpolators[m][j]->evaluate(time(f));
+      const double e = angular_distance(dense.rotation[j][f], local[j]) * 180.0 / kPi;
+      if (joint_error) (*joint_error)[j] = e;
       if (animated[j] || !any_animated) {
-        const double e = angular_distance(dense.rotation[j][f], local[j]) * 180.0 / kPi;
         error.mean += e;
+        if (worst && (*worst < 0 || e > error.max)) *worst = static_cast<int>(j);
         error.max = std::max(error.max, e);
         ++counted;
       }
     }
     if (counted) error.mean /= static_cast<double>(counted);
+    return error;
+  }
+
+  FrameError method_pose(std::size_t m, std::size_t f, WorldPose& out, std::vector<double>* joint_error = nullptr,
+                         int* worst = nullptr) const {
+    std::vector<Quat> local;
+    const FrameError error = method_rotations(m, f, local, joint_error, worst);
     forward_kinematics(clip->skeleton, local, translations(f), out);
     return error;
   }
 
   // Method m's trail of `joint`'s bone direction over frames first…last.
-  std::shared_ptr<const Trail> trail(std::size_t m, int joint, std::size_t first, std::size_t last,
-                                     std::string label) const {
+  std::shared_ptr<Trail> trail(std::size_t m, int joint, std::size_t first, std::size_t last,
+                               std::string label) const {
     const auto j = static_cast<std::size_t>(joint);
     const Vec3& axis = bone_axis[j];
     auto t = std::make_shared<Trail>();
@@ -217,14 +235,26 @@ Result<std::pair<int, int>> parse_size(std::string_view text) {
   return std::pair<int, int>(static_cast<int>(*w), static_cast<int>(*h));
 }
 
+Result<Colouring> parse_colouring(std::string_view name) {
+  if (name == "error") return Colouring::error;
+  if (name == "method") return Colouring::method;
+  return make_error("--colour '" + std::string(name) + "' is not error or method");
+}
+
+Result<CameraMode> parse_camera(std::string_view name) {
+  if (name == "fixed") return CameraMode::fixed;
+  if (name == "follow") return CameraMode::follow;
+  return make_error("--camera '" + std::string(name) + "' is not fixed or follow");
+}
+
 Result<std::vector<FrameError>> comparison_errors(const Clip& clip, const std::string& method, std::size_t keep_every) {
   if (Status s = clip.validate(); !s) return make_error(s.error());
   if (!find_method(method)) return make_error("unknown method '" + method + "' (valid: " + method_names() + ")");
   auto rebuild = Rebuild::build(clip, {method}, std::max<std::size_t>(keep_every, 1));
   if (!rebuild) return make_error(rebuild.error());
   std::vector<FrameError> errors(rebuild->frames());
-  WorldPose pose;
-  for (std::size_t f = 0; f < errors.size(); ++f) errors[f] = rebuild->method_pose(0, f, pose);
+  std::vector<Quat> local;
+  for (std::size_t f = 0; f < errors.size(); ++f) errors[f] = rebuild->method_rotations(0, f, local);
   return errors;
 }
 
@@ -238,6 +268,10 @@ Result<std::vector<std::size_t>> comparison_frames(const Clip& clip, const Compa
       return make_error(fmt::format("--frames {}:{}:{} is outside the clip (frames 0…{})", r.start, r.end, r.step,
                                     count - 1));
     for (std::size_t k = r.start; k <= r.end; k += r.step) frames.push_back(k);
+    return frames;
+  }
+  if (!options.video.empty()) {
+    for (std::size_t k = 0; k < count; ++k) frames.push_back(k);
     return frames;
   }
   constexpr std::size_t kDefaultFrames = 8;
@@ -256,6 +290,124 @@ Result<std::vector<std::size_t>> comparison_frames(const Clip& clip, const Compa
   return frames;
 }
 
+namespace {
+
+// Seconds of the centred moving average a following camera smooths its target
+// with: the root's (steps, sway) and a focus joint's (faster, so shorter).
+constexpr double kFollowSmoothing = 0.5;
+constexpr double kFocusSmoothing = 0.1;
+// The fraction of frames a following view's box (and the error strip's scale)
+// holds entirely: outliers — a reference pose in frame 0, a flip — do not shrink
+// everything else.
+constexpr double kRobustFraction = 0.98;
+
+// The value below which `fraction` of `values` lie (nearest rank); 0 when empty.
+double quantile(std::vector<double> values, double fraction) {
+  if (values.empty()) return 0.0;
+  const auto k = static_cast<std::size_t>(std::ceil(fraction * static_cast<double>(values.size()))) - 1;
+  const auto at = values.begin() + static_cast<std::ptrdiff_t>(std::min(k, values.size() - 1));
+  std::nth_element(values.begin(), at, values.end());
+  return *at;
+}
+// A focus view's box is at least this fraction of the skeleton's height per side.
+constexpr double kFocusMinimum = 0.2;
+// A trail sample at the window's edge keeps this much of its colour.
+constexpr float kTrailEdgeFade = 0.15f;
+
+// Joint `joint` and every joint below it.
+std::vector<bool> subtree(const Skeleton& skeleton, int joint) {
+  std::vector<bool> in(skeleton.joints.size(), false);
+  for (std::size_t j = 0; j < in.size(); ++j)
+    for (int k = static_cast<int>(j); k >= 0; k = skeleton.joints[static_cast<std::size_t>(k)].parent)
+      if (k == joint) {
+        in[j] = true;
+        break;
+      }
+  return in;
+}
+
+// The points of `pose` a view frames: every joint and End Site, or those of
+// `limb` (subtree()) when it is not empty.
+template <typename F>
+void for_each_point(const Skeleton& skeleton, const WorldPose& pose, const std::vector<bool>& limb, F&& f) {
+  for (std::size_t j = 0; j < pose.position.size(); ++j)
+    if (limb.empty() || limb[j]) f(pose.position[j]);
+  if (pose.end_site_position.size() != skeleton.end_sites.size()) return;
+  for (std::size_t e = 0; e < skeleton.end_sites.size(); ++e)
+    if (limb.empty() || limb[static_cast<std::size_t>(skeleton.end_sites[e].parent)]) f(pose.end_site_position[e]);
+}
+
+// What the camera frames over frames first…last (poses[f - first]): one box
+// (fixed), or a box per frame that moves with the followed point, smoothed over
+// `smoothing` seconds (follow). Following the root the box moves horizontally
+// only (the ground stays put); following a focus joint it moves in 3-D.
+struct Views {
+  Bounds fixed;
+  std::vector<Bounds> moving;  // [f - first]; empty when fixed
+};
+
+Views camera_views(const Rebuild& rebuild, const std::vector<WorldPose>& poses, std::size_t first, int followed,
+                   const std::vector<bool>& limb, bool follow, double smoothing, double min_side) {
+  const Skeleton& skeleton = rebuild.clip->skeleton;
+  Views v;
+  for (const WorldPose& pose : poses) for_each_point(skeleton, pose, limb, [&](const Vec3& p) { v.fixed.extend(p); });
+  if (!follow || poses.empty()) return v;
+  const bool focus = !limb.empty();
+  const std::size_t n = poses.size();
+  // The smoothing window in frames, from the mean frame spacing.
+  const double span = rebuild.time(first + n - 1) - rebuild.time(first);
+  const double spacing = n > 1 && span > 0.0 ? span / static_cast<double>(n - 1) : 1.0;
+  const auto half = static_cast<std::size_t>(std::lround(smoothing / spacing));
+  std::vector<Vec3> path(n), prefix(n + 1, Vec3::Zero());
+  for (std::size_t i = 0; i < n; ++i) prefix[i + 1] = prefix[i] + poses[i].position[static_cast<std::size_t>(followed)];
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t lo = i >= half ? i - half : 0, hi = std::min(n - 1, i + half);
+    path[i] = (prefix[hi + 1] - prefix[lo]) / static_cast<double>(hi - lo + 1);
+    if (!focus) path[i].y() = 0.0;
+  }
+  // Each side of the box: where that side of the figure's own box lies, relative
+  // to the path, in all but the most outlying frames.
+  std::vector<double> sides[6];
+  for (std::size_t i = 0; i < n; ++i) {
+    Bounds b;
+    for_each_point(skeleton, poses[i], limb, [&](const Vec3& p) { b.extend(p - path[i]); });
+    if (b.empty()) continue;
+    for (int a = 0; a < 3; ++a) {
+      sides[a].push_back(-b.min(a));
+      sides[3 + a].push_back(b.max(a));
+    }
+  }
+  if (sides[0].empty()) return v;
+  Bounds relative;
+  for (int a = 0; a < 3; ++a) {
+    relative.min(a) = -quantile(sides[a], kRobustFraction);
+    relative.max(a) = quantile(sides[3 + a], kRobustFraction);
+  }
+  const Vec3 grow = (Vec3::Constant(min_side) - relative.size()).cwiseMax(0.0) * 0.5;
+  relative.min -= grow;
+  relative.max += grow;
+  v.moving.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    v.moving[i].extend(relative.min + path[i]);
+    v.moving[i].extend(relative.max + path[i]);
+  }
+  return v;
+}
+
+// Frames per second of the video: the source's rate over the frame step.
+double default_video_fps(const Clip& clip, const Rebuild& rebuild, const std::vector<std::size_t>& frames) {
+  double hz = 0.0;
+  if (auto rate = clip_rate(clip)) hz = rate->hz();
+  const std::size_t n = rebuild.frames();
+  if (!(hz > 0.0) && n > 1 && rebuild.time(n - 1) > rebuild.time(0))
+    hz = static_cast<double>(n - 1) / (rebuild.time(n - 1) - rebuild.time(0));
+  if (!(hz > 0.0)) hz = 30.0;
+  const std::size_t step = frames.size() > 1 ? frames[1] - frames[0] : 1;
+  return std::clamp(hz / static_cast<double>(step), 0.01, 1000.0);
+}
+
+}  // namespace
+
 Result<ComparisonResult> render_comparison(const Clip& clip, const fs::path& out_dir, const ComparisonOptions& options) {
   // ---- validate everything before drawing anything ----
   if (Status s = clip.validate(); !s) return make_error(s.error());
@@ -263,12 +415,28 @@ Result<ComparisonResult> render_comparison(const Clip& clip, const fs::path& out
   for (const std::string& m : options.methods)
     if (!find_method(m)) return make_error("unknown method '" + m + "' (valid: " + method_names() + ")");
   if (options.keep_every < 1) return make_error("--keep-every must be at least 1");
+  if (!options.pngs && options.video.empty()) return make_error("nothing to write: no frame images and no video");
+  if (!options.pngs && options.sheet) return make_error("--sheet needs an output directory");
   const int methods = static_cast<int>(options.methods.size());
   if (Status s = check_image_size(options.width, options.height, methods); !s) return make_error(s.error());
   int trail_joint = -1;
   if (!options.trail_joint.empty()) {
     trail_joint = clip.skeleton.find(options.trail_joint);
     if (trail_joint < 0) return make_error("--trail: no joint '" + options.trail_joint + "' in the clip");
+  }
+  if (!(options.trail_window >= 0.0) || !std::isfinite(options.trail_window))
+    return make_error("--trail-window must be a number of seconds ≥ 0");
+  int focus_joint = -1;
+  if (!options.focus_joint.empty()) {
+    focus_joint = clip.skeleton.find(options.focus_joint);
+    if (focus_joint < 0) return make_error("--focus: no joint '" + options.focus_joint + "' in the clip");
+  }
+  if (!options.video.empty()) {
+    auto format = video_format(options.video);
+    if (!format) return make_error(format.error());
+    if (Status s = check_video_size(*format, options.width, options.height); !s) return make_error(s.error());
+    if (options.video_fps < 0.0 || options.video_fps > 1000.0 || !std::isfinite(options.video_fps))
+      return make_error("--video-fps must be within (0, 1000]");
   }
   auto selected = comparison_frames(clip, options);
   if (!selected) return make_error(selected.error());
@@ -300,27 +468,70 @@ Result<ComparisonResult> render_comparison(const Clip& clip, const fs::path& out
   const Rebuild& rebuild = *built;
   const std::size_t frame_count = rebuild.frames();
 
-  // Trails and camera bounds cover the frames drawn; the whole clip for one frame.
+  // Camera, trails (with no window) and strips cover the frames drawn; the whole
+  // clip for one frame.
   const bool one_frame = frames.front() == frames.back();
   const std::size_t first = one_frame ? 0 : frames.front(), last = one_frame ? frame_count - 1 : frames.back();
-  std::vector<std::shared_ptr<const Trail>> trails(options.methods.size());
-  if (trail_joint >= 0)
-    for (std::size_t m = 0; m < options.methods.size(); ++m)
-      trails[m] = rebuild.trail(m, trail_joint, first, last, options.trail_joint + " bone direction");
+  std::vector<WorldPose> reference(last - first + 1);
+  for (std::size_t f = first; f <= last; ++f) rebuild.reference_pose(f, reference[f - first]);
   Scene scene;
   scene.skeleton = clip.skeleton;
-  {
-    WorldPose pose;
-    for (std::size_t f = first; f <= last; ++f) {
-      rebuild.reference_pose(f, pose);
-      for (const Vec3& p : pose.position) scene.bounds.extend(p);
-      for (const Vec3& p : pose.end_site_position) scene.bounds.extend(p);
+  for (const WorldPose& pose : reference)
+    for_each_point(clip.skeleton, pose, {}, [&](const Vec3& p) { scene.bounds.extend(p); });
+
+  // Follow: as asked, or (automatic) when the root travels farther than the
+  // skeleton is high; a focus joint is followed unless the camera is fixed.
+  const double height = std::max(skeleton_height(rest_pose(clip.skeleton)), 1e-9);
+  bool follow = options.camera == CameraMode::follow;
+  if (options.camera == CameraMode::automatic) {
+    if (focus_joint >= 0) {
+      follow = true;
+    } else {
+      Bounds travel;
+      for (const WorldPose& pose : reference)
+        if (!pose.position.empty()) travel.extend(Vec3(pose.position[0].x(), 0.0, pose.position[0].z()));
+      follow = !travel.empty() && travel.size().norm() > height;
     }
+  }
+  const std::vector<bool> limb = focus_joint >= 0 ? subtree(clip.skeleton, focus_joint) : std::vector<bool>{};
+  const Views views = camera_views(rebuild, reference, first, std::max(focus_joint, 0), limb, follow,
+                                   focus_joint >= 0 ? kFocusSmoothing : kFollowSmoothing,
+                                   focus_joint >= 0 ? kFocusMinimum * height : 0.0);
+  follow = follow && !views.moving.empty();  // nothing to follow: the fixed view
+  const bool own_view = follow || focus_joint >= 0;
+  if (focus_joint >= 0) {  // bones as thick for the limb as for a whole figure in its place
+    const Bounds& limb_box = follow ? views.moving.front() : views.fixed;
+    scene.bone_radius = scene_bone_radius(clip.skeleton, limb_box);
+  }
+
+  // Error strips: every method's error at every frame of the range, one scale.
+  std::vector<std::shared_ptr<ErrorStrip>> strips(options.methods.size());
+  if (options.strip) {
+    std::vector<std::size_t> strip_keys;
+    for (std::size_t k : rebuild.keys)
+      if (k >= first && k <= last) strip_keys.push_back(k - first);
+    std::vector<Quat> local;
+    std::vector<double> maxima;
+    for (std::size_t m = 0; m < strips.size(); ++m) {
+      auto strip = std::make_shared<ErrorStrip>();
+      for (std::size_t f = first; f <= last; ++f) {
+        const FrameError e = rebuild.method_rotations(m, f, local);
+        strip->max_deg.push_back(static_cast<float>(e.max));
+        strip->mean_deg.push_back(static_cast<float>(e.mean));
+        maxima.push_back(e.max);
+      }
+      strip->keys = strip_keys;
+      strips[m] = std::move(strip);
+    }
+    // Spikes above the scale are clipped at the strip's top.
+    for (auto& strip : strips) strip->scale_deg = error_scale(quantile(maxima, kRobustFraction));
   }
 
   std::error_code ec;
-  fs::create_directories(out_dir, ec);
-  if (ec || !fs::is_directory(out_dir)) return make_error(out_dir.string() + ": cannot create the output directory");
+  if (options.pngs) {
+    fs::create_directories(out_dir, ec);
+    if (ec || !fs::is_directory(out_dir)) return make_error(out_dir.string() + ": cannot create the output directory");
+  }
 
   auto context = create_context(backend);
   if (!context) return make_error(context.error());
@@ -329,36 +540,88 @@ Result<ComparisonResult> render_comparison(const Clip& clip, const fs::path& out
 
   ComparisonResult result;
   result.gl = (*renderer)->gl_description();
+  result.followed = follow;
+  std::unique_ptr<VideoWriter> video;
+  if (!options.video.empty()) {
+    result.video_fps = options.video_fps > 0.0 ? options.video_fps : default_video_fps(clip, rebuild, frames);
+    auto opened = VideoWriter::open(options.video, options.width, options.height, result.video_fps);
+    if (!opened) return make_error(opened.error());
+    video = std::move(opened).value();
+  }
   const std::size_t total = frames.size() + (options.sheet ? 1 : 0);
-  PngWriters writers(options.progress, total);
+  PngWriters writers(options.pngs ? options.progress : ProgressFn{}, total);
   bool writing = true;  // no write has failed yet
   std::vector<Panel> sheet(options.sheet ? frames.size() * options.methods.size() : 0);
+  std::vector<std::vector<double>> joint_error(options.methods.size());
   for (std::size_t i = 0; i < frames.size(); ++i) {
     const std::size_t f = frames[i];
-    WorldPose ghost;
-    rebuild.reference_pose(f, ghost);
+    const WorldPose& ghost = reference[f - first];
     const bool is_key = std::binary_search(rebuild.keys.begin(), rebuild.keys.end(), f);
+    // The trail's window of frames around f, and how each fades.
+    std::size_t lo = first, hi = last;
+    if (options.trail_window > 0.0) {
+      lo = f;
+      while (lo > 0 && rebuild.time(f) - rebuild.time(lo - 1) <= options.trail_window) --lo;
+      hi = f;
+      while (hi + 1 < frame_count && rebuild.time(hi + 1) - rebuild.time(f) <= options.trail_window) ++hi;
+    }
+    std::vector<float> fade;
+    if (options.trail_window > 0.0)
+      for (std::size_t k = lo; k <= hi; ++k)
+        fade.push_back(1.0f - (1.0f - kTrailEdgeFade) *
+                                  static_cast<float>(std::min(1.0, std::abs(rebuild.time(k) - rebuild.time(f)) / options.trail_window)));
     std::vector<Panel> panels(options.methods.size());
-    for (std::size_t m = 0; m < options.methods.size(); ++m) {
+    std::vector<FrameError> errors(panels.size());
+    std::vector<int> worst(panels.size(), -1);
+    double frame_max = 0.0;
+    for (std::size_t m = 0; m < panels.size(); ++m) {
+      errors[m] = rebuild.method_pose(m, f, panels[m].pose, &joint_error[m], &worst[m]);
+      frame_max = std::max(frame_max, errors[m].max);
+    }
+    const double scale = error_scale(frame_max);  // one colour scale for every panel of the frame
+    const std::string corner = fmt::format("frame {}   {:.3f} s", f, rebuild.time(f) - rebuild.time(0));
+    for (std::size_t m = 0; m < panels.size(); ++m) {
       Panel& p = panels[m];
-      const FrameError error = rebuild.method_pose(m, f, p.pose);
+      const FrameError& error = errors[m];
       p.title = fmt::format("{}  mean {:.2f}°  max {:.2f}°{}", options.methods[m], error.mean, error.max,
                             is_key ? "  (key)" : "");
       p.color = method_colour(options.methods[m]);
       p.ghost = ghost;
-      if (trails[m]) {
-        auto trail = std::make_shared<Trail>(*trails[m]);
-        trail->current = f - first;
+      p.corner = corner;
+      if (options.colouring == Colouring::error) {
+        p.colour_scale_deg = scale;
+        for (double e : joint_error[m]) p.joint_colors.push_back(error_colour(e, scale));
+        if (worst[m] >= 0 && error.max > 0.0) {
+          p.label_joint = worst[m];
+          p.joint_label = fmt::format("{} {:.1f}°", clip.skeleton.joints[static_cast<std::size_t>(worst[m])].name, error.max);
+        }
+      }
+      if (own_view) p.view = follow ? views.moving[f - first] : views.fixed;
+      if (trail_joint >= 0) {
+        auto trail = rebuild.trail(m, trail_joint, lo, hi, options.trail_joint + " bone direction");
+        trail->current = f - lo;
+        trail->fade = fade;
         p.trail = std::move(trail);
+      }
+      if (strips[m]) {
+        auto strip = std::make_shared<ErrorStrip>(*strips[m]);
+        strip->cursor = f - first;
+        p.strip = std::move(strip);
       }
       if (options.sheet) {
         Panel cell = p;
         cell.title = fmt::format("{} #{}  {:.2f}° / {:.2f}°", options.methods[m], f, error.mean, error.max);
+        cell.corner.clear();
         sheet[m * frames.size() + i] = std::move(cell);
       }
     }
     auto image = (*renderer)->render(panels, options.width, options.height, columns);
     if (!image) return make_error(image.error());
+    if (video) {
+      if (Status s = video->write(*image); !s) return make_error(s.error());
+      if (!options.pngs && options.progress) options.progress(i + 1, frames.size());
+    }
+    if (!options.pngs) continue;
     fs::path path = out_dir / fmt::format("frame_{:06d}.png", f);
     result.files.push_back(path);
     if (!writers.push(std::move(path), std::move(image).value())) {
@@ -373,6 +636,11 @@ Result<ComparisonResult> render_comparison(const Clip& clip, const fs::path& out
     (void)writers.push(result.files.back(), std::move(image).value());
   }
   if (Status s = writers.finish(); !s) return make_error(s.error());
+  if (video) {
+    if (Status s = video->finish(); !s) return make_error(s.error());
+    result.video_frames = video->frames();
+    result.files.push_back(options.video);
+  }
   return result;
 }
 

@@ -25,6 +25,12 @@ Instance make_instance(const Eigen::Matrix4d& model, const Color& color, float a
   return in;
 }
 
+// `color` mixed towards the inset background: f = 1 keeps it, f = 0 is the background.
+Color faded(const Color& color, float f) {
+  return {kInsetBackground[0] + f * (color[0] - kInsetBackground[0]), kInsetBackground[1] + f * (color[1] - kInsetBackground[1]),
+          kInsetBackground[2] + f * (color[2] - kInsetBackground[2])};
+}
+
 bool pose_usable(const WorldPose& pose, const Skeleton& skeleton) {
   return pose.position.size() == skeleton.joints.size() && !pose.position.empty();
 }
@@ -96,41 +102,47 @@ void Batch::cylinder(const Vec3& a, const Vec3& b, double radius, double min_len
 }
 
 void add_pose(const Skeleton& skeleton, const WorldPose& pose, double radius, const Color& color, float alpha,
-              Batch& batch) {
+              Batch& batch, const std::vector<Color>& joint_colors) {
   if (!pose_usable(pose, skeleton)) return;
+  const bool per_joint = joint_colors.size() == skeleton.joints.size();
+  auto colour = [&](std::size_t j) -> const Color& { return per_joint ? joint_colors[j] : color; };
   const double min_length = radius * 1e-3;
   for (std::size_t j = 0; j < skeleton.joints.size(); ++j) {
     const int p = skeleton.joints[j].parent;
-    if (p >= 0) batch.cylinder(pose.position[static_cast<std::size_t>(p)], pose.position[j], radius, min_length, color, alpha);
-    batch.sphere(pose.position[j], radius, color, alpha);
+    const auto turner = p >= 0 ? static_cast<std::size_t>(p) : j;
+    if (p >= 0) batch.cylinder(pose.position[turner], pose.position[j], radius, min_length, colour(turner), alpha);
+    batch.sphere(pose.position[j], radius, colour(turner), alpha);
   }
   if (pose.end_site_position.size() != skeleton.end_sites.size()) return;
   for (std::size_t e = 0; e < skeleton.end_sites.size(); ++e) {
-    const Vec3& a = pose.position[static_cast<std::size_t>(skeleton.end_sites[e].parent)];
+    const auto parent = static_cast<std::size_t>(skeleton.end_sites[e].parent);
     const Vec3& b = pose.end_site_position[e];
-    batch.cylinder(a, b, radius, min_length, color, alpha);
-    batch.sphere(b, radius, color, alpha);
+    batch.cylinder(pose.position[parent], b, radius, min_length, colour(parent), alpha);
+    batch.sphere(b, radius, colour(parent), alpha);
   }
 }
 
 void add_curve(const std::vector<Vec3>& points, std::size_t stride, double radius, const Color& color, float alpha,
-               Batch& batch) {
+               Batch& batch, const std::vector<float>& fade) {
   if (points.empty()) return;
+  const bool fading = fade.size() == points.size();
+  auto f = [&](std::size_t k) { return fading ? std::clamp(fade[k], 0.0f, 1.0f) : 1.0f; };
   std::size_t previous = 0;
-  batch.sphere(unit_or_zero(points[0]), radius, color, alpha);
+  batch.sphere(unit_or_zero(points[0]), radius, faded(color, f(0)), alpha * f(0));
   for (std::size_t i = stride; ; i += stride) {
     const std::size_t k = std::min(i, points.size() - 1);
     if (k == previous) break;
     const Vec3 a = unit_or_zero(points[previous]), b = unit_or_zero(points[k]);
-    batch.cylinder(a, b, radius, 1e-6, color, alpha);
-    batch.sphere(b, radius, color, alpha);
+    const float w = std::max(f(previous), f(k));
+    batch.cylinder(a, b, radius, 1e-6, faded(color, w), alpha * w);
+    batch.sphere(b, radius, faded(color, f(k)), alpha * f(k));
     previous = k;
   }
 }
 
 void panel_figure(const Scene& scene, const Panel& panel, Batch& solid, Batch& translucent) {
   solid.clear();
-  add_pose(scene.skeleton, panel.pose, scene.bone_radius, panel.color, 1.0f, solid);
+  add_pose(scene.skeleton, panel.pose, scene.bone_radius, panel.color, 1.0f, solid, panel.joint_colors);
   translucent.clear();
   add_pose(scene.skeleton, panel.ghost, scene.bone_radius * 1.02, kGhostColor, kGhostAlpha, translucent);
 }
@@ -139,14 +151,17 @@ void trail_figure(const Trail& trail, const Color& color, double zoom, Batch& so
   const std::size_t n = trail.reference.size();
   const std::size_t stride = std::max<std::size_t>(1, (n + kMaxTrailSegments - 1) / kMaxTrailSegments);
   solid.clear();
-  add_curve(trail.method, stride, zoom * kTrailMethodRadius, color, 1.0f, solid);
+  add_curve(trail.method, stride, zoom * kTrailMethodRadius, color, 1.0f, solid, trail.fade);
+  const bool fading = trail.fade.size() == n;
   if (trail.keys.size() <= kMaxKeyMarkers)
     for (std::size_t k : trail.keys)
-      if (k < trail.method.size()) solid.sphere(unit_or_zero(trail.method[k]), zoom * kTrailKeyRadius, kKeyMarker, 1.0f);
+      if (k < trail.method.size())
+        solid.sphere(unit_or_zero(trail.method[k]), zoom * kTrailKeyRadius,
+                     fading ? faded(kKeyMarker, std::clamp(trail.fade[k], 0.0f, 1.0f)) : kKeyMarker, 1.0f);
   if (trail.current < trail.method.size())
     solid.sphere(unit_or_zero(trail.method[trail.current]), zoom * kTrailCurrentRadius, color, 1.0f);
   translucent.clear();
-  add_curve(trail.reference, stride, zoom * kTrailReferenceRadius, kGhostColor, kGhostAlpha, translucent);
+  add_curve(trail.reference, stride, zoom * kTrailReferenceRadius, kGhostColor, kGhostAlpha, translucent, trail.fade);
   if (trail.current < n)
     translucent.sphere(unit_or_zero(trail.reference[trail.current]), zoom * kTrailCurrentRadius * 1.25, kGhostColor,
                        kGhostAlpha);

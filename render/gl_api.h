@@ -53,6 +53,7 @@ namespace rotinterp::render::detail {
   X(PFNGLDELETEPROGRAMPROC, DeleteProgram)                                     \
   X(PFNGLGETUNIFORMLOCATIONPROC, GetUniformLocation)                           \
   X(PFNGLUNIFORM1IPROC, Uniform1i)                                             \
+  X(PFNGLUNIFORM1FPROC, Uniform1f)                                             \
   X(PFNGLUNIFORM2FPROC, Uniform2f)                                             \
   X(PFNGLUNIFORM3FPROC, Uniform3f)                                             \
   X(PFNGLUNIFORM4FPROC, Uniform4f)                                             \

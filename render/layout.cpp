@@ -30,11 +30,25 @@ std::vector<Rect> grid_layout(int count, int columns, int width, int height) {
   return rects;
 }
 
-PanelLayout panel_layout(int width, int height, bool trail) {
+PanelLayout panel_layout(int width, int height, bool trail, bool strip, bool bar) {
   PanelLayout l;
   l.title_height = std::clamp(static_cast<int>(std::lround(0.075 * height)), 14, 40);
+  if (strip) {
+    const int rows = std::clamp(static_cast<int>(std::lround(0.14 * height)), 18, 90);
+    if (height - l.title_height - rows >= 32) {
+      l.strip = Rect{0, height - rows, width, rows};
+      height -= rows;
+    }
+  }
   const int scene_height = height - l.title_height;
   l.figure = Rect{0, l.title_height, width, scene_height};
+  if (bar) {
+    const int w = std::clamp(static_cast<int>(std::lround(0.016 * width)), 5, 14);
+    const int margin = std::max(4, std::min(width, scene_height) / 40);
+    // Below the two lines of text at the figure's top left (frame and time, the scale).
+    const int h = static_cast<int>(std::lround(0.5 * scene_height));
+    if (h >= 16) l.bar = Rect{margin, l.title_height + static_cast<int>(std::lround(0.32 * scene_height)), w, h};
+  }
   if (!trail) return l;
   const int margin = std::max(4, std::min(width, scene_height) / 60);
   if (width * 5 <= scene_height * 6) {

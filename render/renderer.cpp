@@ -2,8 +2,11 @@
 
 #include "font.h"
 #include "gl_api.h"
+#include "rotinterp/render/colour_map.h"
 #include "rotinterp/render/geometry.h"
 #include "rotinterp/render/layout.h"
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -52,6 +55,7 @@ in vec3 v_world;
 in vec4 v_color;
 uniform vec3 u_light;
 uniform vec3 u_eye;
+uniform float u_shade;
 out vec4 o_color;
 void main() {
   vec3 n = normalize(v_normal);
@@ -61,7 +65,10 @@ void main() {
   float hemisphere = 0.5 + 0.5 * n.y;
   vec3 h = normalize(u_light + v);
   float specular = pow(max(dot(n, h), 0.0), 40.0) * 0.25;
-  vec3 rgb = v_color.rgb * (0.28 + 0.17 * hemisphere + 0.62 * diffuse) + vec3(specular);
+  // u_shade < 1 flattens the lighting towards the plain colour (error colours stay
+  // readable against their colour bar).
+  float light = mix(1.0, 0.28 + 0.17 * hemisphere + 0.62 * diffuse, u_shade);
+  vec3 rgb = v_color.rgb * light + vec3(specular * u_shade);
   o_color = vec4(min(rgb, vec3(1.0)), v_color.a);
 }
 )";
@@ -106,8 +113,14 @@ void main() { o_color = vec4(u_color.rgb, u_color.a * texture(u_atlas, v_uv).r);
 // ---- style (all colours linear 0…1) ------------------------------------------
 constexpr float kBackground[3] = {0.155f, 0.165f, 0.185f};
 constexpr float kTitleStrip[3] = {0.095f, 0.100f, 0.115f};
-constexpr float kInsetBackground[3] = {0.120f, 0.128f, 0.145f};
 constexpr float kTitleText[4] = {0.93f, 0.93f, 0.93f, 1.0f};
+constexpr float kStripMax[4] = {0.93f, 0.93f, 0.93f, 1.0f};
+constexpr float kStripMean[4] = {0.55f, 0.58f, 0.64f, 1.0f};
+constexpr float kStripKey[4] = {0.60f, 0.62f, 0.66f, 1.0f};
+constexpr float kStripCursor[4] = {0.98f, 0.62f, 0.20f, 1.0f};
+constexpr float kLeader[4] = {0.93f, 0.93f, 0.93f, 0.9f};
+// Lighting kept on error-coloured bones (1 = the full shading of method colours).
+constexpr float kErrorShade = 0.35f;
 
 // ---- GL meshes: the unit meshes of geometry.h with a buffer of instances ------
 
@@ -118,6 +131,34 @@ struct Mesh {
 
 Eigen::Matrix4f to_float(const Eigen::Matrix4d& m) { return m.cast<float>(); }
 
+// Pixels of a width × height viewport (x right, y down, from its top-left corner)
+// to clip space, for overlays drawn as lines.
+Eigen::Matrix4f pixel_space(int width, int height) {
+  Eigen::Matrix4f m = Eigen::Matrix4f::Identity();
+  m(0, 0) = 2.0f / static_cast<float>(width);
+  m(0, 3) = -1.0f;
+  m(1, 1) = -2.0f / static_cast<float>(height);
+  m(1, 3) = 1.0f;
+  m(2, 2) = 0.0f;
+  return m;
+}
+
+// A line segment between two pixel positions, into a line list.
+void pixel_line(LineList& lines, float x0, float y0, float x1, float y1, const float rgba[4]) {
+  lines.insert(lines.end(), {x0, y0, 0.0f, rgba[0], rgba[1], rgba[2], rgba[3], x1, y1, 0.0f, rgba[0], rgba[1], rgba[2], rgba[3]});
+}
+
+// The ground under a panel's own view: its horizontal extent grown by half on
+// every side (the camera looks down at it, so more ground shows than the box), at
+// the height of the scene's ground.
+Bounds ground_under(const Bounds& view, double ground_y) {
+  const Vec3 grow = 0.5 * view.size();
+  Bounds b;
+  b.extend(Vec3(view.min.x() - grow.x(), ground_y, view.min.z() - grow.z()));
+  b.extend(Vec3(view.max.x() + grow.x(), ground_y, view.max.z() + grow.z()));
+  return b;
+}
+
 }  // namespace
 
 struct Renderer::Impl {
@@ -127,7 +168,7 @@ struct Renderer::Impl {
   int samples = 1;
 
   GLuint mesh_program = 0, line_program = 0, text_program = 0;
-  GLint mesh_view_projection = -1, mesh_light = -1, mesh_eye = -1;
+  GLint mesh_view_projection = -1, mesh_light = -1, mesh_eye = -1, mesh_shade = -1;
   GLint line_view_projection = -1;
   GLint text_viewport = -1, text_color = -1, text_atlas = -1;
   // Two levels of detail: coarse meshes for bones a few pixels thick (most of the
@@ -273,6 +314,7 @@ struct Renderer::Impl {
     mesh_view_projection = gl.GetUniformLocation(mesh_program, "u_view_projection");
     mesh_light = gl.GetUniformLocation(mesh_program, "u_light");
     mesh_eye = gl.GetUniformLocation(mesh_program, "u_eye");
+    mesh_shade = gl.GetUniformLocation(mesh_program, "u_shade");
     line_view_projection = gl.GetUniformLocation(line_program, "u_view_projection");
     text_viewport = gl.GetUniformLocation(text_program, "u_viewport");
     text_color = gl.GetUniformLocation(text_program, "u_color");
@@ -398,6 +440,7 @@ struct Renderer::Impl {
     gl.Uniform3f(mesh_light, static_cast<float>(light.x()), static_cast<float>(light.y()), static_cast<float>(light.z()));
     gl.Uniform3f(mesh_eye, static_cast<float>(camera.eye.x()), static_cast<float>(camera.eye.y()),
                  static_cast<float>(camera.eye.z()));
+    gl.Uniform1f(mesh_shade, 1.0f);
   }
 
   void draw_opaque(const Batch& b) {
@@ -484,8 +527,96 @@ struct Renderer::Impl {
     if (!trail.label.empty()) texts.push_back(inset_label(trail.label, inset, text_width(trail.label)));
   }
 
+  // A vertical viridis bar from 0 (bottom) to the panel's scale (top), one line
+  // per row, labelled in degrees at both ends.
+  void draw_colour_bar(const Panel& panel, const Rect& bar, int width, int height) {
+    LineList lines;
+    for (int row = 0; row < bar.height; ++row) {
+      const Color c = viridis(static_cast<double>(bar.height - 1 - row) / std::max(1, bar.height - 1));
+      const float rgba[4] = {c[0], c[1], c[2], 1.0f};
+      const float y = static_cast<float>(bar.y + row) + 0.5f;
+      pixel_line(lines, static_cast<float>(bar.x), y, static_cast<float>(bar.x + bar.width), y, rgba);
+    }
+    gl.Disable(GL_DEPTH_TEST);
+    gl.Viewport(0, 0, width, height);
+    draw_lines(lines, pixel_space(width, height));
+    gl.Enable(GL_DEPTH_TEST);
+    const int px = std::clamp(bar.height / 9, 9, 16);
+    const float x = static_cast<float>(bar.x + bar.width + std::max(2, bar.width / 2));
+    texts.push_back(TextItem{fmt::format("{:g}°", panel.colour_scale_deg), x, static_cast<float>(bar.y) - 0.2f * static_cast<float>(px), px});
+    texts.push_back(TextItem{"0°", x, static_cast<float>(bar.y + bar.height) - 0.95f * static_cast<float>(px), px});
+  }
+
+  // The error-over-time strip: max (bright) and mean (dim) against frames, keys as
+  // ticks at the bottom, the cursor at the panel's frame, the scale at the top left.
+  void draw_strip(const ErrorStrip& strip, const Rect& r, int width, int height) {
+    gl.Enable(GL_SCISSOR_TEST);
+    scissor(r, height);
+    gl.ClearColor(kTitleStrip[0], kTitleStrip[1], kTitleStrip[2], 1.0f);
+    gl.Clear(GL_COLOR_BUFFER_BIT);
+    gl.Disable(GL_SCISSOR_TEST);
+    const std::size_t n = strip.max_deg.size();
+    if (n == 0) return;
+    const float pad = static_cast<float>(std::max(3, r.height / 8));
+    const float x0 = static_cast<float>(r.x) + pad, x1 = static_cast<float>(r.x + r.width) - pad;
+    const float y0 = static_cast<float>(r.y) + pad, y1 = static_cast<float>(r.y + r.height) - pad;
+    const double scale = strip.scale_deg > 0.0 ? strip.scale_deg : 1.0;
+    auto x_at = [&](std::size_t i) { return n > 1 ? x0 + (x1 - x0) * static_cast<float>(i) / static_cast<float>(n - 1) : 0.5f * (x0 + x1); };
+    auto y_at = [&](float v) {
+      const double f = std::clamp(std::isfinite(v) ? v / scale : 0.0, 0.0, 1.0);
+      return y1 - static_cast<float>(f) * (y1 - y0);
+    };
+    LineList lines;
+    for (std::size_t k : strip.keys)
+      if (k < n) pixel_line(lines, x_at(k), y1, x_at(k), y1 + 0.5f * pad, kStripKey);
+    for (const auto* series : {&strip.mean_deg, &strip.max_deg}) {
+      const float* rgba = series == &strip.max_deg ? kStripMax : kStripMean;
+      if (series->size() != n) continue;
+      for (std::size_t i = 0; i + 1 < n; ++i)
+        pixel_line(lines, x_at(i), y_at((*series)[i]), x_at(i + 1), y_at((*series)[i + 1]), rgba);
+    }
+    if (strip.cursor < n) pixel_line(lines, x_at(strip.cursor), y0 - 0.5f * pad, x_at(strip.cursor), y1 + 0.5f * pad, kStripCursor);
+    gl.Disable(GL_DEPTH_TEST);
+    gl.Viewport(0, 0, width, height);
+    draw_lines(lines, pixel_space(width, height));
+    gl.Enable(GL_DEPTH_TEST);
+    const int px = std::clamp(r.height / 4, 8, 14);
+    texts.push_back(TextItem{fmt::format("max and mean error, 0-{:g}°", scale), x0 + 2.0f, static_cast<float>(r.y) + 1.0f, px});
+  }
+
+  // `panel.joint_label` next to its joint of the pose, with a short leader line
+  // (none when the joint is out of view), kept inside the figure.
+  void label_joint(const Panel& panel, const Camera& camera, const Rect& figure, int width, int height) {
+    const auto j = static_cast<std::size_t>(panel.label_joint);
+    if (panel.label_joint < 0 || j >= panel.pose.position.size() || panel.joint_label.empty()) return;
+    const Eigen::Vector4d clip = camera.projection() * camera.view() * panel.pose.position[j].homogeneous();
+    if (!(clip.w() > 0.0)) return;
+    const double px_x = figure.x + (clip.x() / clip.w() + 1.0) * 0.5 * figure.width;
+    const double px_y = figure.y + (1.0 - clip.y() / clip.w()) * 0.5 * figure.height;
+    if (!std::isfinite(px_x) || !std::isfinite(px_y)) return;
+    const int ph = std::clamp(static_cast<int>(std::lround(0.04 * height)), 9, 15);
+    const float text_w = text_width(panel.joint_label)(ph);
+    const float gap = 1.2f * static_cast<float>(ph);
+    float x = static_cast<float>(px_x) + gap, top = static_cast<float>(px_y) - gap - static_cast<float>(ph);
+    if (x + text_w > static_cast<float>(figure.x + figure.width) - 2.0f) x = static_cast<float>(px_x) - gap - text_w;
+    x = std::clamp(x, static_cast<float>(figure.x) + 2.0f, std::max(static_cast<float>(figure.x) + 2.0f, static_cast<float>(figure.x + figure.width) - text_w - 2.0f));
+    top = std::clamp(top, static_cast<float>(figure.y) + 2.0f, static_cast<float>(figure.y + figure.height - ph) - 2.0f);
+    texts.push_back(TextItem{panel.joint_label, x, top, ph});
+    // A leader to the joint where it is in view (a focus view may leave it out).
+    if (px_x < figure.x || px_x > figure.x + figure.width || px_y < figure.y || px_y > figure.y + figure.height) return;
+    LineList lines;
+    const float ly = top + static_cast<float>(ph);
+    const float lx = x < static_cast<float>(px_x) ? x + text_w : x;
+    pixel_line(lines, static_cast<float>(px_x), static_cast<float>(px_y), lx, ly, kLeader);
+    gl.Disable(GL_DEPTH_TEST);
+    gl.Viewport(0, 0, width, height);
+    draw_lines(lines, pixel_space(width, height));
+    gl.Enable(GL_DEPTH_TEST);
+  }
+
   Status draw_panel(const Panel& panel, int width, int height) {
-    const PanelLayout layout = panel_layout(width, height, panel.trail && !panel.trail->reference.empty());
+    const PanelLayout layout = panel_layout(width, height, panel.trail && !panel.trail->reference.empty(),
+                                            panel.strip != nullptr, panel.colour_scale_deg > 0.0);
     gl.BindFramebuffer(GL_FRAMEBUFFER, msaa_fbo);
     gl.Viewport(0, 0, width, height);
     gl.Disable(GL_SCISSOR_TEST);
@@ -504,13 +635,37 @@ struct Renderer::Impl {
     viewport(figure, height);
     gl.Enable(GL_DEPTH_TEST);
     gl.Enable(GL_MULTISAMPLE);
-    const Camera camera = frame_bounds(scene.bounds, static_cast<double>(figure.width) / figure.height, scene.view);
-    draw_lines(grid, to_float(camera.projection() * camera.view()));
+    const Bounds& box = panel.view ? *panel.view : scene.bounds;
+    const Camera camera = frame_bounds(box, static_cast<double>(figure.width) / figure.height, scene.view);
+    const Eigen::Matrix4f view_projection = to_float(camera.projection() * camera.view());
+    if (panel.view)
+      draw_lines(grid_lines(ground_under(*panel.view, scene.bounds.empty() ? box.min.y() : scene.bounds.min.y())),
+                 view_projection);
+    else
+      draw_lines(grid, view_projection);
     use_mesh_program(camera, scene.bone_radius, figure.height);
     panel_figure(scene, panel, solid, translucent);
+    if (!panel.joint_colors.empty()) gl.Uniform1f(mesh_shade, kErrorShade);
     draw_opaque(solid);
+    gl.Uniform1f(mesh_shade, 1.0f);
     draw_translucent(translucent);
+    label_joint(panel, camera, figure, width, height);
     if (layout.inset.width >= 32) draw_trail(panel, *panel.trail, layout.inset, height);
+    if (layout.bar.height > 0) draw_colour_bar(panel, layout.bar, width, height);
+    if (layout.strip.height > 0) draw_strip(*panel.strip, layout.strip, width, height);
+    {
+      const int ph = std::clamp(static_cast<int>(std::lround(0.045 * height)), 9, 18);
+      const float pad = static_cast<float>(std::max(3, ph / 3));
+      float top = static_cast<float>(figure.y) + pad;
+      if (!panel.corner.empty()) {
+        texts.push_back(TextItem{panel.corner, pad, top, ph});
+        top += 1.2f * static_cast<float>(ph);
+      }
+      if (layout.bar.height > 0) {  // the scale, stated: the same in every panel of the image
+        const int small = std::max(8, ph * 4 / 5);
+        texts.push_back(TextItem{fmt::format("colours 0-{:g}°, all panels", panel.colour_scale_deg), pad, top, small});
+      }
+    }
 
     texts.push_back(title_text(panel.title, layout, width, text_width(panel.title)));
     draw_texts(width, height);

@@ -14,6 +14,7 @@ packages=(
   fonts-dejavu-core        # the font for titles and labels
   libplplot-dev plplot-driver-cairo   # eval plots
   libosmesa6-dev libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri   # offscreen rendering
+  ffmpeg                   # render --video: H.264 MP4 and GIF encoding (run as a program), ffprobe in its tests
   libgtest-dev libgmock-dev libbenchmark-dev   # tests and benchmarks
   libglm-dev               # test-only reference for squad
   python3-dev pybind11-dev python3-numpy   # the Python module (import rotinterp)

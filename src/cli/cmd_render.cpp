@@ -1,4 +1,4 @@
-// rotinterp render IN -o DIR …: comparison frames of several interpolators, drawn
+// rotinterp render IN [-o DIR] [--video FILE] …: comparison frames of several interpolators, drawn
 // offscreen (render/comparison.h does the work). Built only with the renderer.
 #if ROTINTERP_HAVE_RENDER
 #include "common.h"
@@ -8,10 +8,12 @@
 #include "rotinterp/io/read.h"
 #include "rotinterp/render/comparison.h"
 #include "rotinterp/render/context.h"
+#include "rotinterp/render/video.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -44,13 +46,22 @@ struct RenderArgs {
   std::string frames;
   std::string size = "960x540";
   std::string trail;
+  double trail_window = 1.0;
   bool sheet = false;
   std::string backend;
+  std::string anim;
+  std::string colour = "error";
+  std::string camera;
+  std::string focus;
+  bool no_strip = false;
+  std::string video;
+  double video_fps = 0.0;
   bool quiet = false;
 };
 
 int run_render(const RenderArgs& a) {
   render::ComparisonOptions options;
+  if (a.out_dir.empty() && a.video.empty()) return fail_usage("render: give -o DIR (frame PNGs), --video FILE, or both");
   if (a.methods.empty()) {
     for (const MethodInfo& m : methods()) options.methods.push_back(m.name);
   } else {
@@ -84,10 +95,36 @@ int run_render(const RenderArgs& a) {
     options.backend = *backend;
   }
   options.trail_joint = a.trail;
+  if (!(a.trail_window >= 0.0) || !std::isfinite(a.trail_window))
+    return fail_usage("--trail-window must be a number of seconds ≥ 0");
+  options.trail_window = a.trail_window;
   options.sheet = a.sheet;
+  if (a.sheet && a.out_dir.empty()) return fail_usage("--sheet needs -o DIR");
+  auto colouring = render::parse_colouring(a.colour);
+  if (!colouring) return fail_usage(colouring.error());
+  options.colouring = *colouring;
+  if (!a.camera.empty()) {
+    auto camera = render::parse_camera(a.camera);
+    if (!camera) return fail_usage(camera.error());
+    options.camera = *camera;
+  }
+  options.focus_joint = a.focus;
+  options.strip = !a.no_strip;
+  options.pngs = !a.out_dir.empty();
+  if (!a.video.empty()) {
+    auto format = render::video_format(a.video);
+    if (!format) return fail_usage(format.error());
+    if (Status s = render::check_video_size(*format, options.width, options.height); !s) return fail_usage(s.error());
+    if (a.video_fps < 0.0 || a.video_fps > 1000.0 || !std::isfinite(a.video_fps))
+      return fail_usage("--video-fps must be within (0, 1000]");
+    options.video = a.video;
+    options.video_fps = a.video_fps;
+  }
 
   protect_input(a.input);  // no frame written may replace it
-  auto clip = read_clip(a.input);
+  ReadOptions read_options;
+  read_options.animation = a.anim;
+  auto clip = read_clip(a.input, read_options);
   if (!clip) return fail(clip.error());
   if (degenerate(*clip))
     warn(fmt::format("{}: all {} joints lie within 1e-6 units of one point; the frames will show only the grid",
@@ -96,7 +133,14 @@ int run_render(const RenderArgs& a) {
   auto result = render::render_comparison(*clip, a.out_dir, options);
   end_progress(a.quiet);
   if (!result) return fail(a.input + ": " + result.error());
-  if (!a.quiet) fmt::print(stderr, "wrote {} image(s) to {} ({})\n", result->files.size(), a.out_dir, result->gl);
+  if (!a.quiet) {
+    const std::size_t images = result->files.size() - (a.video.empty() ? 0 : 1);
+    const std::string camera = result->followed ? "camera following" : "fixed camera";
+    if (!a.out_dir.empty()) fmt::print(stderr, "wrote {} image(s) to {} ({}, {})\n", images, a.out_dir, camera, result->gl);
+    if (!a.video.empty())
+      fmt::print(stderr, "wrote {} ({} frames at {:g} fps, {}, {})\n", a.video, result->video_frames, result->video_fps,
+                 camera, result->gl);
+  }
   for (const auto& f : result->files) fmt::print("{}\n", f.string());
   return kExitOk;
 }
@@ -108,7 +152,8 @@ void add_render_command(CLI::App& app, int& exit_code) {
   auto* sub = app.add_subcommand(
       "render", "Draw comparison frames offscreen: the clip rebuilt by several interpolators, side by side, as PNGs");
   sub->add_option("input", args->input, "Clip to read (BVH, FBX, glTF, Collada, …)")->required();
-  sub->add_option("-o,--out", args->out_dir, "Output directory (created if missing)")->required();
+  sub->add_option("-o,--out", args->out_dir,
+                  "Output directory for frame_NNNNNN.png (created if missing); optional with --video");
   sub->add_option("--methods", args->methods, "Comma-separated interpolators to compare (default: all)");
   sub->add_option("--keep-every", args->keep_every,
                   "Keep every Nth source frame (and the last) as keys; the methods rebuild the rest")
@@ -119,7 +164,27 @@ void add_render_command(CLI::App& app, int& exit_code) {
   sub->add_option("--size", args->size, "Image size WxH in pixels, at most 8192 per side")->default_val("960x540");
   sub->add_option("--trail", args->trail,
                   "Also draw this joint's bone direction over the frames on a unit sphere (reference vs method)");
+  sub->add_option("--trail-window", args->trail_window,
+                  "Seconds either side of the frame drawn on the trail, fading with distance in time; 0 = all the "
+                  "frames drawn")
+      ->default_val(1.0);
   sub->add_flag("--sheet", args->sheet, "Also write sheet.png: a row per method, a column per frame");
+  sub->add_option("--anim", args->anim, "Animation to read: its name or 0-based index (default: the first)");
+  sub->add_option("--colour", args->colour,
+                  "error: each bone coloured by its joint's angular error (viridis, one scale per frame, shared by "
+                  "the panels); method: one colour per method")
+      ->default_val("error")
+      ->check(CLI::IsMember({"error", "method"}));
+  sub->add_option("--camera", args->camera,
+                  "fixed or follow (default: follow when the root travels farther than the skeleton's height over "
+                  "the frames drawn, or with --focus)")
+      ->check(CLI::IsMember({"fixed", "follow"}));
+  sub->add_option("--focus", args->focus, "Frame this joint and the joints below it (a hand, a foot), following it");
+  sub->add_flag("--no-strip", args->no_strip, "No error-over-time strip under the panels");
+  sub->add_option("--video", args->video,
+                  "Also (or, without -o, only) encode the frames into FILE.mp4 (H.264) or FILE.gif through ffmpeg; "
+                  "default frames: every frame of the clip");
+  sub->add_option("--video-fps", args->video_fps, "Video frame rate (default: the clip's rate over the frame step)");
   sub->add_option("--backend", args->backend, "OpenGL context: osmesa or egl (default: osmesa where present)")
       ->check(CLI::IsMember({"osmesa", "egl"}));
   sub->add_flag("-q,--quiet", args->quiet, "No progress or summary on stderr");

@@ -213,7 +213,7 @@ TEST_F(ExitCodes, RenderFailuresLeaveNoOutput) {
       {io + "--trail NoSuchJoint", 1, {"@/good.bvh: ", "NoSuchJoint"}, "@/r"},
       {io + "--backend vulkan", 2, {"vulkan"}, "@/r"},
       {"render @/good.bvh -o @/afile/r -q", 1, {"@/afile/r: cannot create the output directory"}},
-      {"render @/good.bvh -q", 2, {"--out is required"}},
+      {"render @/good.bvh -q", 2, {"render: give -o DIR (frame PNGs), --video FILE, or both"}},
   });
 }
 

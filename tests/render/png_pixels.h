@@ -1,4 +1,5 @@
-// Reading rendered PNGs back in the renderer tests (stb_image).
+// Reading rendered PNGs back in the renderer tests (stb_image), and the fresh
+// directories they are written to.
 #pragma once
 
 #include "rotinterp/render/layout.h"
@@ -8,9 +9,19 @@
 #include <cstdint>
 #include <filesystem>
 #include <set>
+#include <string>
 #include <vector>
 
+#include <unistd.h>
+
 namespace rotinterp::test {
+
+// A path for a test's output, unique to the test (`tag`) and the process, removed if it exists.
+inline std::filesystem::path fresh_dir(const std::string& tag) {
+  const auto dir = std::filesystem::temp_directory_path() / ("rotinterp_test_render_" + tag + "_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  return dir;
+}
 
 struct Pixels {
   int width = 0, height = 0;

@@ -1,5 +1,6 @@
 // A small synthetic clip for the renderer tests: a 13-joint stick figure (Y up,
-// facing +Z) whose arms swing and whose left elbow bends with known sinusoids.
+// facing +Z) whose arms swing and whose left elbow bends with known sinusoids;
+// with `speed` (units/s) its root travels along +X.
 #pragma once
 
 #include "rotinterp/clip/clip.h"
@@ -9,7 +10,7 @@
 
 namespace rotinterp::test {
 
-inline Clip synthetic_clip(int frames = 61, double rate = 30.0) {
+inline Clip synthetic_clip(int frames = 61, double rate = 30.0, double speed = 0.0) {
   Clip clip;
   clip.name = "synthetic";
   clip.frame_time = 1.0 / rate;
@@ -61,6 +62,14 @@ inline Clip synthetic_clip(int frames = 61, double rate = 30.0) {
       track.keys.push_back(q);
     }
     track.make_sign_continuous();
+  }
+  if (speed != 0.0) {
+    TranslationTrack root;
+    for (int f = 0; f < frames; ++f) {
+      root.times.push_back(f * clip.frame_time);
+      root.keys.push_back(clip.skeleton.joints[0].offset + Vec3(speed * f * clip.frame_time, 0, 0));
+    }
+    clip.translations[0] = root;
   }
   return clip;
 }

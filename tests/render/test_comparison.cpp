@@ -1,6 +1,7 @@
 // render_comparison end to end on the synthetic clip: files, sizes, panels that
 // differ exactly where the methods differ, determinism, the sheet, errors.
 #include "png_pixels.h"
+#include "support/run_cli.h"
 #include "synthetic_clip.h"
 
 #include "rotinterp/render/comparison.h"
@@ -18,17 +19,7 @@ namespace rotinterp::render {
 namespace {
 
 namespace fs = std::filesystem;
-
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("rotinterp_test_render_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  return dir;
-}
-
-std::string bytes(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
+using test::fresh_dir;
 
 // slerp twice and squad: frames 15 and 25 lie halfway between keys (every 10).
 ComparisonOptions three_panel_options() {
@@ -78,7 +69,7 @@ TEST(Comparison, SameOptionsTwiceGiveByteIdenticalFilesOnBothBackends) {
     ASSERT_EQ(first->files.size(), 3u);
     for (std::size_t i = 0; i < first->files.size(); ++i) {
       EXPECT_EQ(first->files[i].filename(), second->files[i].filename());
-      EXPECT_EQ(bytes(first->files[i]), bytes(second->files[i])) << backend_name(backend) << " " << first->files[i];
+      EXPECT_EQ(test::slurp(first->files[i]), test::slurp(second->files[i])) << backend_name(backend) << " " << first->files[i];
     }
     fs::remove_all(one);
     fs::remove_all(two);

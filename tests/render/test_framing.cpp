@@ -109,18 +109,43 @@ TEST(Framing, TrailViewLooksAlongTheReferencesMeanAndSeesEverySample) {
   expect_seen(view, centre);
 }
 
-TEST(Framing, TrailViewOfATrailAroundTheSphereLooksFromTheScenesViewAndSeesAllOfIt) {
-  std::vector<Vec3> ring;
-  for (int i = 0; i < 36; ++i) ring.push_back(Vec3(std::cos(i * kPi / 18), 0, std::sin(i * kPi / 18)));
+TEST(Framing, TrailViewOfATrailThatFillsTheSphereLooksFromTheScenesViewAndSeesAllOfIt) {
+  // A tennis ball's seam: around the whole sphere, in no plane.
+  std::vector<Vec3> seam;
+  for (int i = 0; i < 72; ++i) {
+    const double t = i * kPi / 36, lat = 0.6 * std::sin(2 * t);
+    seam.push_back(Vec3(std::cos(lat) * std::cos(t), std::sin(lat), std::cos(lat) * std::sin(t)));
+  }
+  ASSERT_FALSE(trail_plane(seam).has_value());
   ViewAngles angles;
   angles.azimuth_deg = 30.0;
   angles.elevation_deg = 5.0;  // raised to 20°
-  const TrailView view = trail_view(ring, ring, angles);
+  const TrailView view = trail_view(seam, seam, angles);
   const double az = 30.0 * kPi / 180.0, el = 20.0 * kPi / 180.0;
   const Vec3 toward(std::sin(az) * std::cos(el), std::sin(el), std::cos(az) * std::cos(el));
   EXPECT_LT((view.camera.eye.normalized() - toward).norm(), 1e-12);
   EXPECT_DOUBLE_EQ(view.zoom, 1.0) << "the whole sphere";
   EXPECT_NEAR(view.camera.fov_y, 36.0 * kPi / 180.0, 1e-12);
+}
+
+TEST(Framing, TrailViewOfAPlanarArcLooksAlongItsPlaneNormalAtItsCentroid) {
+  // A hinge: the bone turns 240° about a fixed axis, the bone at 60° to the axis
+  // (a small circle), then at 90° (a great circle, through the sphere's centre).
+  const Vec3 axis = Vec3(1, 2, 0.5).normalized();
+  const Vec3 across = axis.cross(Vec3::UnitZ()).normalized();
+  for (double tilt : {60.0, 90.0}) {
+    const Vec3 bone = std::cos(tilt * kPi / 180) * axis + std::sin(tilt * kPi / 180) * across;
+    std::vector<Vec3> arc;
+    for (int i = 0; i <= 60; ++i) arc.push_back(Eigen::AngleAxisd(4.0 * kPi / 3 * i / 60, axis) * bone);
+    const auto plane = trail_plane(arc);
+    ASSERT_TRUE(plane.has_value()) << tilt;
+    EXPECT_GT(std::abs(plane->normal.dot(axis)), 1.0 - 1e-9) << tilt;
+    const TrailView view = trail_view(arc, arc, ViewAngles{});
+    const Vec3 looking = (view.camera.target - view.camera.eye).normalized();
+    EXPECT_GT(std::abs(looking.dot(axis)), 1.0 - 1e-9) << tilt << ": face on";
+    EXPECT_LT((view.camera.target - plane->centroid).norm(), 1e-12) << tilt;
+    for (const Vec3& p : arc) expect_seen(view, p);
+  }
 }
 
 TEST(Framing, TrailViewOfOneSampleHasTheNarrowestField) {

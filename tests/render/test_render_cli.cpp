@@ -17,15 +17,10 @@ namespace rotinterp::render {
 namespace {
 
 namespace fs = std::filesystem;
+using test::fresh_dir;
 using test::run_cli;
 
 const std::string kClip = std::string(ROTINTERP_SHARED_DATA) + "/bvh/cmu_01_01.bvh";
-
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("rotinterp_test_render_cli_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  return dir;
-}
 
 // Frames 106 and 118 are halfway between keys 100, 112, 124 (every 12th frame).
 struct Args {
@@ -46,7 +41,7 @@ std::string render_args(const fs::path& dir, const Args& a = {}) {
 
 TEST(RenderCli, ASkeletonWhoseJointsAllLieAtOnePointIsWarnedAbout) {
   // Offsets lost (a reader that dropped the nodes holding them) look like this.
-  const fs::path dir = fresh_dir("degenerate");
+  const fs::path dir = fresh_dir("cli_degenerate");
   fs::create_directories(dir);
   const fs::path clip = dir / "point.bvh";
   std::ofstream(clip) << "HIERARCHY\nROOT A\n{\n  OFFSET 0 0 0\n  CHANNELS 3 Zrotation Xrotation Yrotation\n"
@@ -63,7 +58,7 @@ TEST(RenderCli, ASkeletonWhoseJointsAllLieAtOnePointIsWarnedAbout) {
 }
 
 TEST(RenderCli, RealClipGivesFramesOfTheRightSizeWithPanelsThatDifferOnlyBetweenMethods) {
-  const fs::path dir = fresh_dir("real");
+  const fs::path dir = fresh_dir("cli_real");
   const auto r = run_cli(render_args(dir));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.err, "") << "--quiet prints nothing on stderr";
@@ -83,7 +78,7 @@ TEST(RenderCli, RealClipGivesFramesOfTheRightSizeWithPanelsThatDifferOnlyBetween
 
 TEST(RenderCli, SameCommandTwiceGivesByteIdenticalPngsOnEachBackend) {
   for (const char* backend : {"osmesa", "egl"}) {
-    const fs::path one = fresh_dir(std::string("one_") + backend), two = fresh_dir(std::string("two_") + backend);
+    const fs::path one = fresh_dir(std::string("cli_one_") + backend), two = fresh_dir(std::string("cli_two_") + backend);
     const std::string flags = std::string("--trail LeftArm --sheet --backend ") + backend;
     const auto a = run_cli(render_args(one, extra(flags)));
     const auto b = run_cli(render_args(two, extra(flags)));
@@ -100,7 +95,7 @@ TEST(RenderCli, SameCommandTwiceGivesByteIdenticalPngsOnEachBackend) {
 }
 
 TEST(RenderCli, ErrorsGiveOneLineAndExitCode) {
-  const fs::path dir = fresh_dir("errors");
+  const fs::path dir = fresh_dir("cli_errors");
   struct Case {
     std::string args;
     int exit_code;

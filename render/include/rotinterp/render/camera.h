@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 
 #include <limits>
+#include <optional>
 #include <vector>
 
 namespace rotinterp::render {
@@ -76,9 +77,30 @@ struct TrailView {
   double zoom = 1.0;  // tan(half field) / tan(18°): 1 when the whole sphere is seen
 };
 
-// Looks at the sphere from the mean direction of `reference` (unit_or_zero of each
-// sample), so that the curve faces the viewer; from `scene_view`'s azimuth and
-// elevation (at least 20°) where that mean is shorter than 0.2. The field holds
+// The plane that best fits the `reference` samples (unit_or_zero of each; least
+// squares: through their centroid, normal to the covariance's smallest
+// eigenvector), its normal on the side of the centroid — when they lie near a
+// plane: their variance across it (the smallest eigenvalue) at most
+// kTrailMaxFlatness of the middle one. Nothing for a dot (largest standard
+// deviation under kTrailMinSpread), a curve that fills the sphere, or one that
+// hardly bends (the middle eigenvalue under kTrailMinBend of the largest: a
+// circular arc shorter than about 50°, which its mean direction shows straight
+// and whole, as it is on the sphere).
+constexpr double kTrailMaxFlatness = 0.2;
+constexpr double kTrailMinSpread = 0.005;
+constexpr double kTrailMinBend = 0.01;
+struct TrailPlane {
+  Vec3 normal;
+  Vec3 centroid;
+};
+std::optional<TrailPlane> trail_plane(const std::vector<Vec3>& reference);
+
+// Where there is a trail_plane(reference), looks at its centroid along its normal,
+// so that a planar curve (a hinge's arc) is seen face on, not edge on (a plane
+// through the centre is seen from the scene camera's side). Else looks at the
+// sphere's centre from the mean direction of the samples, so that the curve faces
+// the viewer; from `scene_view`'s azimuth and elevation (at least 20°) where that
+// mean is shorter than 0.2. The field holds
 // the sample of either curve farthest from the view axis with a margin: half-angle
 // at most 18° (the whole sphere), at least 1.5°. `reference` is not empty.
 TrailView trail_view(const std::vector<Vec3>& reference, const std::vector<Vec3>& method, const ViewAngles& scene_view);

@@ -37,23 +37,49 @@ Result<FrameRange> parse_frame_range(std::string_view text);
 // "WxH", both positive integers (limits are checked by render()).
 Result<std::pair<int, int>> parse_size(std::string_view text);
 
+// How the rebuilt poses are coloured.
+enum class Colouring {
+  error,   // each bone by its joint's angular error at that frame (viridis, one scale per frame)
+  method,  // one colour per method (its place in methods())
+};
+// Where the camera looks from.
+enum class CameraMode {
+  automatic,  // follow when the root travels farther than the skeleton's height over the frames drawn
+  fixed,      // one view framing every pose of the frames drawn
+  follow,     // a view that follows the smoothed root (or the focus joint)
+};
+Result<Colouring> parse_colouring(std::string_view name);   // "error" or "method"
+Result<CameraMode> parse_camera(std::string_view name);     // "fixed" or "follow"
+
 struct ComparisonOptions {
   std::vector<std::string> methods;   // names in methods(); at least one
   std::size_t keep_every = 10;        // N ≥ 1: keys at frames 0, N, 2N, … and the last
   // Unset: 8 frames spread evenly over the clip, each halfway between two keys
-  // (where interpolation errs most); every frame when there are fewer.
+  // (where interpolation errs most); every frame when there are fewer — or, with
+  // a video, every frame of the clip.
   std::optional<FrameRange> frames;
   int width = 960;                    // pixels, each frame image
   int height = 540;
   std::string trail_joint;            // non-empty: draw this joint's bone-direction trail
+  double trail_window = 1.0;          // seconds either side of the frame shown on the trail; 0: all frames drawn
   bool sheet = false;                 // also write sheet.png: a row per method, a column per frame
+  Colouring colouring = Colouring::error;
+  CameraMode camera = CameraMode::automatic;
+  std::string focus_joint;            // non-empty: the camera follows this joint and frames its limb
+  bool strip = true;                  // an error-over-time strip under each panel
+  bool pngs = true;                   // write frame_NNNNNN.png (and sheet.png) into the output directory
+  std::filesystem::path video;        // non-empty: also encode the frames into this .mp4 or .gif
+  double video_fps = 0.0;             // frames per second of the video; 0: the clip's rate / frame step
   std::optional<Backend> backend;     // unset: default_backend()
-  ProgressFn progress;                // (images written, images in all), from worker threads
+  ProgressFn progress;                // (images done, images in all), from worker threads
 };
 
 struct ComparisonResult {
-  std::vector<std::filesystem::path> files;  // in frame order, then the sheet
+  std::vector<std::filesystem::path> files;  // in frame order, then the sheet, then the video
   std::string gl;                            // renderer and GL version
+  bool followed = false;                     // whether the camera followed
+  std::size_t video_frames = 0;
+  double video_fps = 0.0;
 };
 
 // The angular error of a rebuilt pose at one frame, degrees: mean and max over the
@@ -70,10 +96,16 @@ Result<std::vector<FrameError>> comparison_errors(const Clip& clip, const std::s
 // The frames the options select in `clip` (checked against its frame count).
 Result<std::vector<std::size_t>> comparison_frames(const Clip& clip, const ComparisonOptions& options);
 
-// Renders the comparison into `out_dir` (created if missing): frame_NNNNNN.png per
-// frame (NNNNNN the frame number, zero-padded to 6), and sheet.png with --sheet.
+// Renders the comparison: into `out_dir` (created if missing; unused without
+// pngs) frame_NNNNNN.png per frame (NNNNNN the frame number, zero-padded to 6),
+// and sheet.png with --sheet; the video when asked.
+// Each panel: the title (method, mean and max error, "(key)" on kept keys), the
+// frame number and time at the top left, the rebuilt pose coloured by error
+// (with a colour bar and the worst joint labelled) or by method, the ghost of the
+// original, the trail inset, and the error strip.
 // Errors (one line): unknown method or joint, frames outside the clip, a size
-// outside limits, a backend that is not available, an unwritable directory.
+// outside limits, a backend that is not available, an unwritable directory, a
+// video that cannot be made (format, size, ffmpeg).
 Result<ComparisonResult> render_comparison(const Clip& clip, const std::filesystem::path& out_dir,
                                            const ComparisonOptions& options);
 

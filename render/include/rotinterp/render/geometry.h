@@ -48,14 +48,21 @@ struct Batch {
 
 // Capsule bones joint → parent and End Site → joint, and a sphere at every joint
 // and End Site. Nothing when the pose's positions do not match the skeleton's
-// joints; no End Sites when its End Site positions do not match.
+// joints; no End Sites when its End Site positions do not match. With
+// `joint_colors` (one per joint) the colours are per bone as Panel::joint_colors
+// says, else all `color`.
 void add_pose(const Skeleton& skeleton, const WorldPose& pose, double radius, const Color& color, float alpha,
-              Batch& batch);
+              Batch& batch, const std::vector<Color>& joint_colors = {});
+
+// The colour trails fade to (the trail inset's background).
+constexpr Color kInsetBackground = {0.120f, 0.128f, 0.145f};
 
 // A tube through `points` (every `stride`-th, and the last) put on the unit sphere
-// (unit_or_zero), with a sphere at every point used.
+// (unit_or_zero), with a sphere at every point used. With `fade` (one per point,
+// 0…1) each piece's colour is mixed towards kInsetBackground and its alpha scaled
+// by its end's fade.
 void add_curve(const std::vector<Vec3>& points, std::size_t stride, double radius, const Color& color, float alpha,
-               Batch& batch);
+               Batch& batch, const std::vector<float>& fade = {});
 
 // A panel's figure: its pose into `solid`, its ghost (pale, a little thicker)
 // into `translucent`. Both batches are cleared first.

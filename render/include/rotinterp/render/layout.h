@@ -28,12 +28,18 @@ std::vector<Rect> grid_layout(int count, int columns, int width, int height);
 // overlapping: the inset at the bottom right below the figure in tall panels,
 // at the top right beside it in wide ones. Rects are in the panel's pixels, y
 // downwards.
+// With a strip, an error-over-time strip across the bottom (about 0.14 of the
+// height, 18…90 rows) below the scene area; with a colour bar, a narrow vertical
+// bar at the figure's left (its labels right of it), over the figure, from 0.32 to
+// 0.82 of the scene's height (two lines of text fit above it).
 struct PanelLayout {
   int title_height = 0;  // rows at the top
   Rect figure;           // the figure's viewport
   Rect inset;            // the trail's square; 0 × 0 without a trail
+  Rect strip;            // 0 × 0 without a strip
+  Rect bar;              // 0 × 0 without a colour bar
 };
-PanelLayout panel_layout(int width, int height, bool trail);
+PanelLayout panel_layout(int width, int height, bool trail, bool strip = false, bool bar = false);
 
 // A line of text in a panel.
 struct TextItem {

@@ -16,6 +16,7 @@
 #include <array>
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,20 @@ struct Trail {
   std::vector<Vec3> method;         // same length as reference
   std::vector<std::size_t> keys;    // indices of key samples, marked on the method curve
   std::size_t current = 0;          // index of the panel's frame, marked on both curves
+  // Per sample, 0…1: how strongly it is drawn (1 full colour; less fades it towards
+  // the inset's background, e.g. with the distance in time from `current`). Empty:
+  // every sample at 1. Otherwise the same length as reference.
+  std::vector<float> fade;
+};
+
+// An error-over-time strip under a panel: the method's max and mean error per
+// frame over a range of frames, a cursor at the panel's frame, keys ticked.
+struct ErrorStrip {
+  std::vector<float> max_deg;      // degrees, per frame of the range
+  std::vector<float> mean_deg;     // same length
+  double scale_deg = 1.0;          // the strip's top (shared by the panels of an image)
+  std::size_t cursor = 0;          // index of the panel's frame
+  std::vector<std::size_t> keys;   // indices of key frames
 };
 
 struct Panel {
@@ -40,12 +55,24 @@ struct Panel {
   WorldPose ghost;              // reference pose (positions used); empty = none
   WorldPose pose;               // the pose drawn solid; empty = none
   std::shared_ptr<const Trail> trail;  // optional
+  // One colour per joint (or empty: every bone in `color`): joint j's colour on the
+  // bones its rotation turns (j → each child, j → its End Sites) and on the
+  // spheres at their far ends; the root's sphere in the root's colour.
+  std::vector<Color> joint_colors;
+  double colour_scale_deg = 0.0;   // > 0: a viridis colour bar from 0 to this, labelled in degrees
+  std::string corner;              // a line at the top left of the figure (frame, time)
+  int label_joint = -1;            // ≥ 0: `joint_label` written next to this joint of `pose`
+  std::string joint_label;
+  std::optional<Bounds> view;      // the box this panel's camera frames; unset: the scene's
+  std::shared_ptr<const ErrorStrip> strip;  // optional, under the figure
 };
 
 // What all panels share.
 struct Scene {
   Skeleton skeleton;        // bones: joint → parent, End Site → joint
-  Bounds bounds;            // of every pose drawn: frames the camera, places the grid
+  // Of every pose drawn: frames the camera (unless a panel has its own view) and
+  // places the grid (its height always; its extent around a panel's view when set).
+  Bounds bounds;
   double bone_radius = 0;   // clip units; 0 = automatic (scene_bone_radius)
   ViewAngles view;
 };

@@ -100,7 +100,7 @@ fs::path ExitCodes::dir_;
 TEST_F(ExitCodes, InfoFailuresNameTheFile) {
   check({
       {"info @/missing.bvh", 1, {"@/missing.bvh: no such file"}},
-      {"info @/adir", 1, {"@/adir: is a directory"}},
+      {"info @/adir", 2, {"for several files or a folder add --summary"}},
       {"info @/empty.bvh", 1, {"@/empty.bvh: the file is empty"}},
       {"info @/notes.xyz", 1, {"@/notes.xyz: ", "unknown or unsupported file format"}},
       {"info @/bad.bvh", 1, {"@/bad.bvh: ", "OFFSET of joint 'Hips'"}},

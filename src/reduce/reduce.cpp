@@ -111,6 +111,15 @@ double shell_error(const Quat& r_ref, const Vec3& p_ref, const Quat& r_test, con
   return std::sqrt(worst);
 }
 
+// shell_error where it exceeds `limit`; below, possibly a bound between it and
+// `limit` (|ΔP| + 2d·sin(θ/2), θ the angle between the world rotations, bounds every
+// vertex's displacement): enough to tell within-budget frames, at a third of the cost.
+double shell_error_above(const Quat& r_ref, const Vec3& p_ref, const Quat& r_test, const Vec3& p_test, double d,
+                         double limit) {
+  const double bound = (p_ref - p_test).norm() + 2.0 * d * (r_ref.conjugate() * r_test).vec().norm();
+  return bound <= limit ? bound : shell_error(r_ref, p_ref, r_test, p_test, d);
+}
+
 class Reducer {
  public:
   Reducer(const Clip& clip, const ReduceOptions& o, std::vector<ReduceBudget> budgets)
@@ -238,7 +247,7 @@ class Reducer {
         Quat r;
         Vec3 p;
         test_world(j, f, q, r, p);
-        v = std::max(v, shell_error(ref_rot_[j][f], ref_pos_[j][f], r, p, d) / b.shell);
+        v = std::max(v, shell_error_above(ref_rot_[j][f], ref_pos_[j][f], r, p, d, b.shell) / b.shell);
       }
       return v;
     };
@@ -296,70 +305,96 @@ class Reducer {
       Quat r;
       Vec3 p;
       test_world(j, f, dense_.rotation[j][f], r, p);
-      if (shell_error(ref_rot_[j][f], ref_pos_[j][f], r, p, o_.shell_distance) > kFloorLimit * budget_[j].shell)
+      const double limit = kFloorLimit * budget_[j].shell;
+      if (shell_error_above(ref_rot_[j][f], ref_pos_[j][f], r, p, o_.shell_distance, limit) > limit)
         out.push_back(f);
     }
     return out;
   }
 
-  // Passes, parents first. A joint with frames it cannot meet (floor_frames) passes
-  // them up — to its own translation track, else to the nearest ancestor not keyed
-  // there — and waits, with its subtree, for the next pass; the changed joints'
-  // subtrees are verified again then (insertion only: keys only grow, so it ends).
+  // Passes, parents first (the joints of one depth in parallel: each reads only its
+  // ancestors' rebuilt motion). A joint with frames it cannot meet (floor_frames)
+  // passes them up — to its own translation track, else to the nearest ancestor not
+  // keyed there — and waits, with its subtree, for the next pass; the changed
+  // joints' subtrees are verified again then (insertion only: keys only grow, so it
+  // ends).
   Status run_hierarchical() {
+    std::vector<std::size_t> depth(joints_, 0);
+    std::vector<std::vector<std::size_t>> levels;
+    for (std::size_t j = 0; j < joints_; ++j) {
+      const int p = parent(j);
+      depth[j] = p < 0 ? 0 : depth[static_cast<std::size_t>(p)] + 1;
+      if (levels.size() <= depth[j]) levels.resize(depth[j] + 1);
+      levels[depth[j]].push_back(j);
+    }
     std::vector<char> dirty(joints_, 1), blocked(joints_, 0), translated(joints_, 0), rotated(joints_, 0);
-    std::vector<double> e;
-    std::size_t finished = 0;
+    std::vector<std::vector<std::pair<std::size_t, std::size_t>>> escalate(joints_);  // (joint, frame) to key
+    std::vector<Status> status(joints_, Status(Ok{}));
+    std::atomic<std::size_t> finished{0};
+    auto process = [&](std::size_t j) {
+      std::vector<double> e;
+      escalate[j].clear();
+      status[j] = select_translation(j, !translated[j], e);
+      if (!status[j]) return;
+      translated[j] = 1;
+      for (std::size_t f : floor_frames(j)) {
+        if (clip_.translations[j] && !has(tkeys_[j], f)) {
+          escalate[j].emplace_back(j, f);
+          continue;
+        }
+        for (int a = parent(j); a >= 0; a = parent(static_cast<std::size_t>(a))) {
+          const auto au = static_cast<std::size_t>(a);
+          if (has(rkeys_[au], f) && (!clip_.translations[au] || has(tkeys_[au], f))) continue;
+          escalate[j].emplace_back(au, f);
+          break;
+        }
+      }
+      if (!escalate[j].empty()) {
+        blocked[j] = 1;
+        return;
+      }
+      status[j] = select_rotation(j, !rotated[j], e);
+      rotated[j] = 1;
+      dirty[j] = 0;
+      const std::size_t done = ++finished;
+      if (o_.progress) o_.progress(std::min(done, joints_), joints_);
+    };
+    unsigned threads = o_.threads ? o_.threads : std::max(1u, std::thread::hardware_concurrency());
+    WorkQueue queue(static_cast<unsigned>(std::min<std::size_t>(threads, joints_)));
     for (;;) {
-      std::vector<std::pair<std::size_t, std::size_t>> escalate;  // (joint, frame) to key
       std::fill(blocked.begin(), blocked.end(), 0);
       bool any = false;
-      for (std::size_t j = 0; j < joints_; ++j) {
-        const int p = parent(j);
-        if (p >= 0 && blocked[static_cast<std::size_t>(p)]) {
-          blocked[j] = 1;
-          continue;
-        }
-        if (!dirty[j]) continue;
-        any = true;
-        if (Status s = select_translation(j, !translated[j], e); !s) return s;
-        translated[j] = 1;
-        const std::size_t before = escalate.size();
-        for (std::size_t f : floor_frames(j)) {
-          if (clip_.translations[j] && !has(tkeys_[j], f)) {
-            escalate.emplace_back(j, f);
+      for (const std::vector<std::size_t>& level : levels) {
+        std::vector<std::future<void>> jobs;
+        for (std::size_t j : level) {
+          const int p = parent(j);
+          if (p >= 0 && blocked[static_cast<std::size_t>(p)]) {
+            blocked[j] = 1;
             continue;
           }
-          for (int a = p; a >= 0; a = parent(static_cast<std::size_t>(a))) {
-            const auto au = static_cast<std::size_t>(a);
-            if (has(rkeys_[au], f) && (!clip_.translations[au] || has(tkeys_[au], f))) continue;
-            escalate.emplace_back(au, f);
-            break;
-          }
+          if (!dirty[j]) continue;
+          any = true;
+          jobs.push_back(queue.submit([&process, j] { process(j); }));
         }
-        if (escalate.size() > before) {
-          blocked[j] = 1;
-          continue;
-        }
-        if (Status s = select_rotation(j, !rotated[j], e); !s) return s;
-        rotated[j] = 1;
-        dirty[j] = 0;
-        if (o_.progress) o_.progress(++finished < joints_ ? finished : joints_, joints_);
+        for (auto& f : jobs) f.get();
+        for (std::size_t j : level)
+          if (!status[j]) return make_error("joint '" + clip_.skeleton.joints[j].name + "': " + status[j].error());
       }
       if (!any) return Ok{};
       // Key the escalated frames; verify each changed joint's subtree again.
       std::vector<char> changed(joints_, 0);
-      for (const auto& [a, f] : escalate) {
-        add_key(rkeys_[a], f);
-        if (clip_.translations[a]) add_key(tkeys_[a], f);
-        changed[a] = 1;
-      }
+      for (const auto& list : escalate)
+        for (const auto& [a, f] : list) {
+          add_key(rkeys_[a], f);
+          if (clip_.translations[a]) add_key(tkeys_[a], f);
+          changed[a] = 1;
+        }
+      for (auto& list : escalate) list.clear();
       for (std::size_t k = 0; k < joints_; ++k) {
         const int p = parent(k);
         if (p >= 0 && changed[static_cast<std::size_t>(p)]) changed[k] = 1;
         if (changed[k]) dirty[k] = 1;
       }
-      if (escalate.empty() && std::none_of(dirty.begin(), dirty.end(), [](char d) { return d != 0; })) return Ok{};
     }
   }
 

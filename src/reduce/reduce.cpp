@@ -26,6 +26,12 @@ constexpr std::size_t kWindow = 4;
 // budget is passed up to an ancestor (the joint's own key would leave nothing for
 // the interpolator's round-off at keys, ~1e-9 rad).
 constexpr double kFloorLimit = 1.0 - 1e-6;
+// With a shell budget, a joint also keeps its children's positions (their own
+// translation exact) within this share of the children's budget, so that they keep
+// room for their own keys instead of passing frames back up. Measured on the shared
+// clips at 1 mm at 10 cm (slerp): 2.5 % fewer keys in all than without (0.5: 13 %
+// more, 0.8: 1 % fewer).
+constexpr double kChildShare = 0.9;
 
 // Normalized error (≤ 1: within budget) of the frames [lo, hi] of a curve rebuilt
 // from the sorted key frames `keys` (which span [lo, hi]); out[f − lo].
@@ -124,6 +130,9 @@ class Reducer {
  public:
   Reducer(const Clip& clip, const ReduceOptions& o, std::vector<ReduceBudget> budgets)
       : clip_(clip), o_(o), budget_(std::move(budgets)), dense_(dense_clip(clip)) {
+    children_.resize(clip.skeleton.joints.size());
+    for (std::size_t j = 0; j < clip.skeleton.joints.size(); ++j)
+      if (clip.skeleton.joints[j].parent >= 0) children_[static_cast<std::size_t>(clip.skeleton.joints[j].parent)].push_back(j);
     n_ = dense_.grid.size();
     joints_ = clip.skeleton.joints.size();
     for (const ReduceBudget& b : budget_) shell_ = shell_ || b.shell > 0.0;
@@ -248,6 +257,14 @@ class Reducer {
         Vec3 p;
         test_world(j, f, q, r, p);
         v = std::max(v, shell_error_above(ref_rot_[j][f], ref_pos_[j][f], r, p, d, b.shell) / b.shell);
+        // Headroom for the children: their positions (their own translation exact)
+        // within a share of their budget.
+        for (std::size_t c : children_[j]) {
+          const double limit = kChildShare * budget_[c].shell;
+          if (!(limit > 0.0)) continue;
+          const Vec3 pc = p + r * dense_.translation[c][f];
+          v = std::max(v, (ref_pos_[c][f] - pc).norm() / limit);
+        }
       }
       return v;
     };
@@ -406,6 +423,7 @@ class Reducer {
   bool shell_ = false;
   std::vector<std::vector<std::size_t>> rkeys_, tkeys_;
   std::vector<ReducedJoint> out_;
+  std::vector<std::vector<std::size_t>> children_;
   std::vector<std::vector<Vec3>> test_translation_;
   std::vector<std::vector<Quat>> ref_rot_, test_rot_;
   std::vector<std::vector<Vec3>> ref_pos_, test_pos_;

@@ -28,7 +28,8 @@
 //  3. verification at every frame with the whole track; where a global method
 //     (c2, bf, expmap-c2) moved beyond the checked window, back to 1 (insertion
 //     only).
-// With a shell budget, a frame that a joint cannot meet even keyed itself (its
+// With a shell budget, each joint also holds its children's positions within 90 %
+// of their budget (leaving them room for their own keys), and a frame that a joint cannot meet even keyed itself (its
 // ancestors' rebuilt motion already puts its vertices beyond the budget) becomes a
 // key of its own translation track, else of the nearest ancestor not yet keyed
 // there; that ancestor's subtree is then verified again (insertion only). Keys only

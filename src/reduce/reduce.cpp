@@ -37,12 +37,19 @@ constexpr double kChildShare = 0.9;
 // from the sorted key frames `keys` (which span [lo, hi]); out[f − lo].
 using ErrorFn = std::function<Status(const std::vector<std::size_t>& keys, std::size_t lo, std::size_t hi, double* out)>;
 
-// Step 1 (and 3): insert the worst frame of every key interval over budget until none is.
+// Step 1 (and 3): insert the worst frame of every key interval over budget until none
+// is. After an insertion only the frames between the second neighbours of each new key
+// are measured again (the curve rebuilt from the keys around them, as in step 2), or
+// every frame when those spans cover most of them; "none over budget" is always
+// confirmed over every frame with the whole track.
 Status insert_worst(std::vector<std::size_t>& keys, std::size_t frames, const ErrorFn& err, std::vector<double>& e) {
   e.resize(frames);
-  std::vector<std::size_t> add, merged;
+  std::vector<std::size_t> add, merged, window;
+  std::vector<std::pair<std::size_t, std::size_t>> spans;  // key index ranges to measure again
+  bool full = true;
   for (;;) {
-    if (Status s = err(keys, 0, frames - 1, e.data()); !s) return s;
+    if (full)
+      if (Status s = err(keys, 0, frames - 1, e.data()); !s) return s;
     add.clear();
     for (std::size_t i = 0; i + 1 < keys.size(); ++i) {
       std::size_t worst = 0;
@@ -51,10 +58,30 @@ Status insert_worst(std::vector<std::size_t>& keys, std::size_t frames, const Er
         if (e[f] > w) w = e[f], worst = f;
       if (worst) add.push_back(worst);
     }
-    if (add.empty()) return Ok{};
+    if (add.empty()) {
+      if (full) return Ok{};
+      full = true;  // confirm with the whole track
+      continue;
+    }
     merged.clear();
     std::merge(keys.begin(), keys.end(), add.begin(), add.end(), std::back_inserter(merged));
     keys.swap(merged);
+    spans.clear();
+    std::size_t covered = 0;
+    for (std::size_t f : add) {
+      const auto i = static_cast<std::size_t>(std::lower_bound(keys.begin(), keys.end(), f) - keys.begin());
+      const std::size_t a = i >= 2 ? i - 2 : 0, b = std::min(keys.size() - 1, i + 2);
+      if (!spans.empty() && a <= spans.back().second) spans.back().second = b;
+      else spans.emplace_back(a, b);
+    }
+    for (const auto& [a, b] : spans) covered += keys[b] - keys[a] + 1;
+    full = 2 * covered > frames;
+    if (full) continue;
+    for (const auto& [a, b] : spans) {
+      const std::size_t wa = a >= kWindow - 2 ? a - (kWindow - 2) : 0, wb = std::min(keys.size() - 1, b + kWindow - 2);
+      window.assign(keys.begin() + static_cast<std::ptrdiff_t>(wa), keys.begin() + static_cast<std::ptrdiff_t>(wb + 1));
+      if (Status s = err(window, keys[a], keys[b], e.data() + keys[a]); !s) return s;
+    }
   }
 }
 

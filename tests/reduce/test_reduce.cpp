@@ -254,6 +254,43 @@ TEST(ReduceCli, GltfReplayedWithTheSpecsInterpolationStaysWithinBudget) {
     }
 }
 
+// assimp (the reader most tools use) reads the sparse GLB back with exactly the kept
+// keys of every joint: LINEAR and CUBICSPLINE samplers alike, each channel at its own times.
+TEST(ReduceCli, AssimpReadsTheSparseGlbBackWithTheKeptKeysOfEveryJoint) {
+  const fs::path dir = temp_dir("assimp");
+  for (const std::string method : {"slerp", "gltf-cubic"}) {
+    const fs::path glb = dir / (method + ".glb"), json = dir / (method + ".json");
+    for (const fs::path& out : {glb, json}) {
+      const auto r = run_cli("reduce " + kBandai + " -o " + out.string() + " --method " + method + " --tolerance-deg 0.5 -q");
+      ASSERT_EQ(r.exit_code, 0) << r.err;
+    }
+    auto back = read_clip(glb);
+    ASSERT_TRUE(back) << back.error();
+    const nlohmann::json doc = nlohmann::json::parse(slurp(json));
+    ASSERT_EQ(back->skeleton.joints.size(), doc["joints"].size());
+    for (std::size_t j = 0; j < back->skeleton.joints.size(); ++j) {
+      const auto& want = doc["joints"][j]["rotation"];
+      const RotationTrack& got = back->rotations[j];
+      EXPECT_EQ(back->skeleton.joints[j].name, doc["joints"][j]["name"]);
+      // The reader puts a joint's rotation on the union of its rotation and translation
+      // key times; every kept rotation key is among them, with its value.
+      ASSERT_GE(got.times.size(), want["times"].size()) << method << " " << back->skeleton.joints[j].name;
+      if (!back->translations[j]) {
+        EXPECT_EQ(got.times.size(), want["times"].size()) << method << " " << j;
+      }
+      for (std::size_t k = 0; k < want["times"].size(); ++k) {
+        const double t = want["times"][k].get<double>();
+        const auto at = std::lower_bound(got.times.begin(), got.times.end(), t - 1e-5);
+        ASSERT_TRUE(at != got.times.end() && std::abs(*at - t) < 1e-5) << method << " " << j << " key " << k;
+        const auto& q = want["keys"][k];
+        const Quat w(q[3].get<double>(), q[0].get<double>(), q[1].get<double>(), q[2].get<double>());
+        EXPECT_LT(angular_distance(got.keys[static_cast<std::size_t>(at - got.times.begin())], w), 1e-5)
+            << method << " " << j << " key " << k;
+      }
+    }
+  }
+}
+
 // ---- properties of the selection -----------------------------------------------------
 
 // A chain of `joints` joints along +y, bones `bone` long, each with the motion `make(j)`.

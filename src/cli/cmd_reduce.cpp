@@ -248,11 +248,9 @@ int run_reduce(const ReduceArgs& a) {
   }
   if (!per.empty()) budgets["per_joint"] = per;
 
-  // The runs: --method for the output, then each of --methods not run yet.
-  std::vector<std::string> order;
-  if (!a.output.empty()) order.push_back(a.method);
-  for (const std::string& m : names)
-    if (std::find(order.begin(), order.end(), m) == order.end()) order.push_back(m);
+  // The runs: each of --methods in its order, then --method for the output if not among them.
+  std::vector<std::string> order = names;
+  if (!a.output.empty() && std::find(order.begin(), order.end(), a.method) == order.end()) order.push_back(a.method);
   std::vector<MethodRun> runs;
   for (const std::string& m : order) {
     const auto started = std::chrono::steady_clock::now();
@@ -276,7 +274,7 @@ int run_reduce(const ReduceArgs& a) {
   }
 
   if (!a.output.empty()) {
-    const MethodRun& run = runs.front();
+    const MethodRun& run = *std::find_if(runs.begin(), runs.end(), [&](const MethodRun& r) { return r.method == a.method; });
     Status written = Ok{};
     if (gltf) {
       WriteOptions w;
@@ -318,7 +316,7 @@ int run_reduce(const ReduceArgs& a) {
     }
   }
   if (!a.quiet && !a.output.empty()) {
-    const MethodRun& r = runs.front();
+    const MethodRun& r = *std::find_if(runs.begin(), runs.end(), [&](const MethodRun& x) { return x.method == a.method; });
     fmt::print("{} → {}: method {}, {} frames, {} of {} keys kept ({:.2f} %), max {:.4f}° local{}, {:.3f} s\n", a.input,
                a.output, r.method, r.result.grid.size(), r.result.kept_keys, r.result.source_keys,
                100.0 * static_cast<double>(r.result.kept_keys) / static_cast<double>(std::max<std::size_t>(1, r.result.source_keys)),
@@ -340,7 +338,8 @@ void add_reduce_command(CLI::App& app, int& exit_code) {
   sub->add_option("--tolerance-deg", a->tolerance_deg, "Budget on each joint's local rotation error, degrees (> 0)");
   sub->add_option("--tolerance-mm", a->tolerance_mm,
                   "Budget on the virtual-vertex (shell) error in object space, millimetres, with the ancestors' rebuilt "
-                  "motion; also the translation tracks' budget. Default 1 (at 10 cm) when no --tolerance-deg is given");
+                  "motion; also the translation tracks' budget (1 mm when only --tolerance-deg is given). Default 1 (at 10 cm) "
+                  "when no --tolerance-deg is given");
   sub->add_option("--shell-distance", a->shell_cm, "Virtual-vertex distance from each joint, centimetres (default 10)");
   sub->add_option("--tolerance-for", a->tolerance_for,
                   "Per-joint budget JOINT=DEGdeg, JOINT=MMmm or JOINT=DEGdeg,MMmm (repeatable)");

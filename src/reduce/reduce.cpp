@@ -340,6 +340,27 @@ class Reducer {
     return Ok{};
   }
 
+  // j's shell error at f with its own rotation exact and the ancestors in `exact`
+  // exact too (as if keyed at f); the others rebuilt.
+  double floor_with_exact(std::size_t j, std::size_t f, const std::vector<std::size_t>& exact) const {
+    std::vector<std::size_t> chain;  // j's ancestors, root first
+    for (int a = parent(j); a >= 0; a = parent(static_cast<std::size_t>(a))) chain.insert(chain.begin(), static_cast<std::size_t>(a));
+    Quat r = Quat::Identity();
+    Vec3 p = Vec3::Zero();
+    for (std::size_t k : chain) {
+      const int pk = parent(k);
+      const bool is_exact = std::find(exact.begin(), exact.end(), k) != exact.end();
+      const Quat local = is_exact ? dense_.rotation[k][f]
+                                  : (pk < 0 ? test_rot_[k][f] : Quat(test_rot_[static_cast<std::size_t>(pk)][f].conjugate() * test_rot_[k][f]));
+      const Vec3& t = is_exact ? dense_.translation[k][f] : test_translation(k, f);
+      p += r * t;
+      r = r * local;
+    }
+    p += r * test_translation(j, f);
+    r = r * dense_.rotation[j][f];
+    return shell_error(ref_rot_[j][f], ref_pos_[j][f], r, p, o_.shell_distance);
+  }
+
   // Frames over budget at j even with j's own rotation exact (its translation and
   // its ancestors rebuilt).
   std::vector<std::size_t> floor_frames(std::size_t j) const {
@@ -386,11 +407,15 @@ class Reducer {
           escalate[j].emplace_back(j, f);
           continue;
         }
+        // The nearest ancestors not keyed at f, as many as it takes (a keyed joint is
+        // exact there) to bring f within the limit: one pass instead of one per level.
+        std::vector<std::size_t> exact;
         for (int a = parent(j); a >= 0; a = parent(static_cast<std::size_t>(a))) {
           const auto au = static_cast<std::size_t>(a);
           if (has(rkeys_[au], f) && (!clip_.translations[au] || has(tkeys_[au], f))) continue;
+          exact.push_back(au);
           escalate[j].emplace_back(au, f);
-          break;
+          if (floor_with_exact(j, f, exact) <= kFloorLimit * budget_[j].shell) break;
         }
       }
       if (!escalate[j].empty()) {

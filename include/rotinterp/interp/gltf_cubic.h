@@ -18,7 +18,8 @@
 //    keys is an orthogonal map of R⁴ that carries the tangents along and commutes
 //    with normalization);
 //  * not exact on constant angular velocity: the normalized chord of a Hermite
-//    cubic is not the geodesic (0.01° off at 30° per key, h⁴ in the step).
+//    cubic is not the geodesic (measured on a constant spin: 2e-7° off at 10° per
+//    key, 4e-5° at 30°, 1.3e-3° at 60°).
 // gltf_cubic_keys gives the keys and tangents that a CUBICSPLINE sampler stores, so
 // a writer puts in the file exactly the curve this interpolator evaluates.
 #pragma once

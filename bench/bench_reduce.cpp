@@ -27,7 +27,7 @@
 #include "rotinterp/io/read.h"
 #include "rotinterp/reduce/reduce.h"
 
-#include <sys/resource.h>
+#include "cpu_seconds.h"
 
 #include <assimp/Importer.hpp>
 #include <assimp/config.h>
@@ -48,16 +48,6 @@ using Clock = std::chrono::steady_clock;
 
 namespace {
 
-double cpu_seconds() {
-  double total = 0.0;
-  for (int who : {RUSAGE_SELF, RUSAGE_CHILDREN}) {
-    rusage u{};
-    ::getrusage(who, &u);
-    total += static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
-             1e-6 * static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
-  }
-  return total;
-}
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 struct Input {

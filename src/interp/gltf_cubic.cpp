@@ -9,13 +9,6 @@ namespace rotinterp {
 
 namespace {
 
-// Steffen's limiter on rate vectors (as clamped): p̂·min(|p|, 2|a|, 2|b|), zero unless a·b > 0.
-Vec3 limited(const Vec3& p, const Vec3& a, const Vec3& b) {
-  if (!(a.dot(b) > 0.0)) return Vec3::Zero();
-  const double n = p.norm(), cap = 2.0 * std::min(a.norm(), b.norm());
-  return n > cap ? Vec3(p * (cap / n)) : p;
-}
-
 // dq/dt = ½·ω̃·q for a fixed-frame angular velocity ω.
 Eigen::Vector4d quat_rate(const Vec3& omega, const Quat& q) {
   const Quat w(0.0, 0.5 * omega.x(), 0.5 * omega.y(), 0.5 * omega.z());
@@ -40,7 +33,7 @@ GltfCubicKeys tangents_for(detail::Keys k) {
     m[n - 1] = quat_rate(v[n - 2], k.q[n - 1]);
     for (std::size_t i = 1; i + 1 < n; ++i) {
       const double hp = k.t[i] - k.t[i - 1], hn = k.t[i + 1] - k.t[i];
-      m[i] = quat_rate(limited((hn * v[i - 1] + hp * v[i]) / (hp + hn), v[i - 1], v[i]), k.q[i]);
+      m[i] = quat_rate(detail::steffen_limited((hn * v[i - 1] + hp * v[i]) / (hp + hn), v[i - 1], v[i]), k.q[i]);
     }
   }
   for (Eigen::Vector4d& x : m)

@@ -29,10 +29,11 @@
 //     (c2, bf, expmap-c2) moved beyond the checked window, back to 1 (insertion
 //     only).
 // With a shell budget, each joint also holds its children's positions within 90 %
-// of their budget (leaving them room for their own keys), and a frame that a joint cannot meet even keyed itself (its
-// ancestors' rebuilt motion already puts its vertices beyond the budget) becomes a
-// key of its own translation track, else of the nearest ancestor not yet keyed
-// there; that ancestor's subtree is then verified again (insertion only). Keys only
+// of their budget (leaving them room for their own keys), and a frame that a joint
+// cannot meet even keyed itself (its ancestors' rebuilt motion already puts its vertices beyond the budget) becomes a
+// key of its own translation track, else of the nearest ancestors not yet keyed
+// there — as many of them, nearest first, as it takes to meet the budget at that
+// frame; their subtrees are then verified again (insertion only). Keys only
 // grow in these repairs, so the loop ends; a frame keyed on a joint and all its
 // ancestors is reproduced exactly (to the methods' 1e-9 rad at keys).
 // The result is near-minimal, not minimal (finding the minimum is a search over

@@ -18,7 +18,8 @@
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/io/read.h"
 
-#include <sys/resource.h>
+#include "cpu_seconds.h"
+
 #include <unistd.h>
 
 #include <assimp/Importer.hpp>
@@ -42,20 +43,6 @@ using Clock = std::chrono::steady_clock;
 namespace {
 
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
-
-// CPU seconds of the whole process (all threads) and of its finished children (the
-// reader's assimp imports in the importer process, src/io/import.h): less sensitive than
-// wall time to other work on a shared machine, for the single-threaded ratio.
-double cpu_seconds() {
-  double total = 0.0;
-  for (int who : {RUSAGE_SELF, RUSAGE_CHILDREN}) {
-    rusage u{};
-    ::getrusage(who, &u);
-    total += static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
-             1e-6 * static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
-  }
-  return total;
-}
 
 double import_all(const std::vector<std::string>& files, double& cpu) {
   const auto t0 = Clock::now();

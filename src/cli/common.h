@@ -55,6 +55,7 @@ void add_resample_command(CLI::App& app, int& exit_code);
 void add_synth_command(CLI::App& app, int& exit_code);
 void add_eval_command(CLI::App& app, int& exit_code);
 void add_info_command(CLI::App& app, int& exit_code);
+void add_reduce_command(CLI::App& app, int& exit_code);
 #if ROTINTERP_HAVE_RENDER
 void add_render_command(CLI::App& app, int& exit_code);
 #endif

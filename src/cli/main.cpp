@@ -52,6 +52,7 @@ int main(int argc, char** argv) {
   add_synth_command(app, exit_code);
   add_eval_command(app, exit_code);
   add_info_command(app, exit_code);
+  add_reduce_command(app, exit_code);
 #if ROTINTERP_HAVE_RENDER
   add_render_command(app, exit_code);
 #endif

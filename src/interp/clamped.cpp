@@ -9,13 +9,6 @@ namespace rotinterp {
 
 namespace {
 
-// Steffen's limiter on rate vectors: p̂·min(|p|, 2|a|, 2|b|), zero unless a·b > 0.
-Vec3 limited(const Vec3& p, const Vec3& a, const Vec3& b) {
-  if (!(a.dot(b) > 0.0)) return Vec3::Zero();
-  const double n = p.norm(), cap = 2.0 * std::min(a.norm(), b.norm());
-  return n > cap ? Vec3(p * (cap / n)) : p;
-}
-
 // The body rate at every key (see the header).
 std::vector<Vec3> clamped_rates(const detail::Keys& k, const std::vector<Vec3>& rho) {
   const std::size_t n = rho.size();  // segments, ≥ 1
@@ -26,7 +19,7 @@ std::vector<Vec3> clamped_rates(const detail::Keys& k, const std::vector<Vec3>& 
   for (std::size_t i = 1; i < n; ++i) {
     // ρᵢ₋₁ is the same body vector at key i−1 and at key i (the axis of the step).
     const double hp = dt(i - 1), hn = dt(i);
-    w[i] = limited((hn * v[i - 1] + hp * v[i]) / (hp + hn), v[i - 1], v[i]);
+    w[i] = detail::steffen_limited((hn * v[i - 1] + hp * v[i]) / (hp + hn), v[i - 1], v[i]);
   }
   // End keys: the end segment's mean rate (as c2). Steffen's one-sided parabola
   // would extrapolate an accelerating end past the end secant's speed.

@@ -29,6 +29,14 @@ inline Quat align_pair(const Quat& a, const Quat& b) {
   return b;
 }
 
+// Steffen's limiter on rate vectors (clamped and gltf-cubic): p̂·min(|p|, 2|a|, 2|b|),
+// zero unless a·b > 0 — a hold, a stop, a reversal or a turn of 90° or more.
+inline Vec3 steffen_limited(const Vec3& p, const Vec3& a, const Vec3& b) {
+  if (!(a.dot(b) > 0.0)) return Vec3::Zero();
+  const double n = p.norm(), cap = 2.0 * std::min(a.norm(), b.norm());
+  return n > cap ? Vec3(p * (cap / n)) : p;
+}
+
 // Times and keys of a track after preparation: validated (rules 1–3 of
 // RotationTrack), normalized, signs aligned pairwise with align_pair.
 struct Keys {

@@ -4,6 +4,7 @@
 #include "rotinterp/interp/c2.h"
 #include "rotinterp/interp/clamped.h"
 #include "rotinterp/interp/expmap.h"
+#include "rotinterp/interp/gltf_cubic.h"
 #include "rotinterp/interp/nlerp.h"
 #include "rotinterp/interp/slerp.h"
 #include "rotinterp/interp/squad.h"
@@ -39,6 +40,8 @@ const std::vector<MethodInfo>& methods() {
        }},
       {"clamped", "shape-preserving C1 cubic (Steffen's limiter on SO(3)): holds stay still, no overshoot at stops", 1,
        true, true, true, [](const RotationTrack& t) -> Made { return make_clamped(t); }},
+      {"gltf-cubic", "glTF CUBICSPLINE: Hermite cubic of the quaternion components, normalized (clamped's key rates)", 1,
+       true, false, true, [](const RotationTrack& t) -> Made { return make_gltf_cubic(t); }},
   };
   return all;
 }

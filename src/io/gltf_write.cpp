@@ -4,6 +4,8 @@
 
 #include "rotinterp/clip/metrics.h"
 #include "rotinterp/clip/resample.h"
+#include "rotinterp/clip/translation_curve.h"
+#include "rotinterp/interp/gltf_cubic.h"
 #include "rotinterp/io/atomic_file.h"
 #include "track_sample.h"
 
@@ -68,24 +70,90 @@ struct Document {
   std::string buffer;
 };
 
-Result<Document> build(const Clip& clip) {
-  if (Status s = clip.validate(); !s) return make_error("cannot write an invalid clip: " + s.error());
-  const Skeleton& sk = clip.skeleton;
-  const std::size_t n = sk.joints.size();
-  const std::vector<double> times = all_key_times(clip);
-  // glTF's unit is the metre: translations are converted with the clip's unit scale
-  // (an FBX in centimetres keeps its real size; BVH, which has none, is taken as is).
-  const double metres = 1.0 / metres_in_clip_units(clip, 1.0);
-  Builder b;
-
-  std::size_t start = b.bin.size();
+// A sampler input: the times as floats, with their min and max.
+int time_accessor(Builder& b, const std::vector<double>& times) {
+  const std::size_t start = b.bin.size();
   float lo = INFINITY, hi = -INFINITY;
   for (double t : times) {
     put_float(b.bin, t);
     lo = std::min(lo, static_cast<float>(t));
     hi = std::max(hi, static_cast<float>(t));
   }
-  const int input = b.accessor(start, times.size(), "SCALAR", {{"min", {lo}}, {"max", {hi}}});
+  return b.accessor(start, times.size(), "SCALAR", {{"min", {lo}}, {"max", {hi}}});
+}
+
+void put_vec4(std::string& bin, const Eigen::Vector4d& v) {
+  for (int c = 0; c < 4; ++c) put_float(bin, v[c]);
+}
+
+// The samplers of one joint's own keys (GltfKeys::own_times): (input, output,
+// interpolation) for its rotation and, if any, its translation.
+struct OwnSampler {
+  int input, output;
+  const char* interpolation;
+  const char* path;
+};
+Result<std::vector<OwnSampler>> own_samplers(Builder& b, const Clip& clip, std::size_t j, const GltfKeys& keys, double metres) {
+  std::vector<OwnSampler> out;
+  const RotationTrack& rt = clip.rotations[j];
+  const int rin = time_accessor(b, rt.times);
+  std::size_t start = b.bin.size();
+  if (keys.cubic_rotations) {
+    // Each key as (in-tangent, value, out-tangent); ours are one tangent per key.
+    auto k = gltf_cubic_keys(rt);
+    if (!k) return make_error("joint '" + clip.skeleton.joints[j].name + "': " + k.error());
+    for (std::size_t i = 0; i < k->keys.size(); ++i) {
+      put_vec4(b.bin, k->tangents[i]);
+      put_vec4(b.bin, k->keys[i].coeffs());
+      put_vec4(b.bin, k->tangents[i]);
+    }
+    out.push_back({rin, b.accessor(start, 3 * k->keys.size(), "VEC4"), "CUBICSPLINE", "rotation"});
+  } else {
+    Quat previous = rt.keys.front();
+    for (Quat q : rt.keys) {
+      if (q.dot(previous) < 0) q.coeffs() = -q.coeffs();
+      previous = q;
+      put_vec4(b.bin, q.coeffs());
+    }
+    out.push_back({rin, b.accessor(start, rt.keys.size(), "VEC4"), "LINEAR", "rotation"});
+  }
+  if (const auto& tr = clip.translations[j]) {
+    const int tin = tr->times == rt.times ? rin : time_accessor(b, tr->times);
+    start = b.bin.size();
+    auto put3 = [&](const Vec3& v) {
+      for (int a = 0; a < 3; ++a) put_float(b.bin, v[a] * metres);
+    };
+    if (keys.cubic_translations) {
+      const TranslationCurve curve(*tr, TranslationInterp::cubic);
+      for (std::size_t i = 0; i < tr->keys.size(); ++i) {
+        const Vec3 m = curve.tangents().empty() ? Vec3::Zero() : curve.tangents()[i];
+        put3(m);
+        put3(tr->keys[i]);
+        put3(m);
+      }
+      out.push_back({tin, b.accessor(start, 3 * tr->keys.size(), "VEC3"), "CUBICSPLINE", "translation"});
+    } else {
+      for (const Vec3& v : tr->keys) put3(v);
+      out.push_back({tin, b.accessor(start, tr->keys.size(), "VEC3"), "LINEAR", "translation"});
+    }
+  }
+  return out;
+}
+
+Result<Document> build(const Clip& clip, const GltfKeys& keys) {
+  if (Status s = clip.validate(); !s) return make_error("cannot write an invalid clip: " + s.error());
+  const Skeleton& sk = clip.skeleton;
+  const std::size_t n = sk.joints.size();
+  if ((keys.cubic_rotations || keys.cubic_translations) && !keys.own_times)
+    return make_error("CUBICSPLINE samplers need each track at its own key times");
+  const std::vector<double> times = keys.own_times ? std::vector<double>{} : all_key_times(clip);
+  // glTF's unit is the metre: translations are converted with the clip's unit scale
+  // (an FBX in centimetres keeps its real size; BVH, which has none, is taken as is).
+  const double metres = 1.0 / metres_in_clip_units(clip, 1.0);
+  Builder b;
+
+  const int input = keys.own_times ? -1 : time_accessor(b, times);
+  std::size_t start = 0;
 
   nlohmann::json nodes = nlohmann::json::array(), roots = nlohmann::json::array();
   nlohmann::json samplers = nlohmann::json::array(), channels = nlohmann::json::array();
@@ -104,10 +172,16 @@ Result<Document> build(const Clip& clip) {
     if (!children[j].empty()) node["children"] = children[j];
     nodes.push_back(node);
 
-    auto channel = [&](int output, const char* path) {
-      samplers.push_back({{"input", input}, {"output", output}, {"interpolation", "LINEAR"}});
+    auto channel = [&](int output, const char* path, int in = -1, const char* interpolation = "LINEAR") {
+      samplers.push_back({{"input", in < 0 ? input : in}, {"output", output}, {"interpolation", interpolation}});
       channels.push_back({{"sampler", samplers.size() - 1}, {"target", {{"node", j}, {"path", path}}}});
     };
+    if (keys.own_times) {
+      auto own = own_samplers(b, clip, j, keys, metres);
+      if (!own) return make_error(own.error());
+      for (const OwnSampler& o : *own) channel(o.output, o.path, o.input, o.interpolation);
+      continue;
+    }
     start = b.bin.size();
     // Sign-continuous keys (the clip's tracks are): no reader takes the long way round.
     Quat previous = sample_rotation(clip.rotations[j], times.front());
@@ -151,9 +225,9 @@ Result<Document> build(const Clip& clip) {
 
 }  // namespace
 
-Status write_gltf(const Clip& clip, const std::filesystem::path& path, bool binary) {
+Status write_gltf(const Clip& clip, const std::filesystem::path& path, bool binary, const GltfKeys& keys) {
   const std::string label = path.string();
-  Result<Document> doc = build(clip);
+  Result<Document> doc = build(clip, keys);
   if (!doc) return make_error(label + ": " + doc.error());
   if (binary) {
     std::string json = doc->json.dump();

@@ -8,6 +8,9 @@
 //    the joint has a translation track), LINEAR, keys at every key time of the clip
 //    (the union over all joints), times as the float nearest start + k/rate.
 // Translations are in clip units (glTF means metres; BVH has no unit).
+// With GltfKeys::own, each channel has its own key times (the track's own), and
+// its sampler may be CUBICSPLINE: rotations with gltf-cubic's keys and tangents,
+// translations with the cubic translation curve's — what rotinterp reduce writes.
 #pragma once
 
 #include "rotinterp/clip/clip.h"
@@ -20,6 +23,11 @@ namespace rotinterp {
 // Writes `path`: a .glb, or a .gltf whose buffer goes first, atomically, to
 // `<stem>-<hash of its bytes>.bin` beside it, so that runs writing the same .gltf
 // at once never pair a .gltf with another run's buffer.
-Status write_gltf(const Clip& clip, const std::filesystem::path& path, bool binary);
+struct GltfKeys {
+  bool own_times = false;          // each track at its own key times, not the union
+  bool cubic_rotations = false;    // CUBICSPLINE rotations (gltf-cubic), else LINEAR
+  bool cubic_translations = false; // CUBICSPLINE translations (Steffen cubic), else LINEAR
+};
+Status write_gltf(const Clip& clip, const std::filesystem::path& path, bool binary, const GltfKeys& keys = {});
 
 }  // namespace rotinterp

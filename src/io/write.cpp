@@ -43,7 +43,9 @@ Status write_clip(const Clip& clip, const std::filesystem::path& path, const Wri
       return Ok{};
     });
   }
-  if (ext == ".glb" || ext == ".gltf") return write_gltf(clip, path, ext == ".glb");
+  if (ext == ".glb" || ext == ".gltf")
+    return write_gltf(clip, path, ext == ".glb",
+                      GltfKeys{options.gltf_own_key_times, options.gltf_cubic_rotations, options.gltf_cubic_translations});
   const std::optional<std::string> format = assimp_export_format(ext);
   if (!format)
     return make_error(label + ": cannot write '" + (ext.empty() ? std::string("(no extension)") : ext) +

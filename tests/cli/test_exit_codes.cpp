@@ -97,6 +97,25 @@ class ExitCodes : public ::testing::Test {
 
 fs::path ExitCodes::dir_;
 
+TEST_F(ExitCodes, ReduceFailuresNameTheFileOrOption) {
+  check({
+      {"reduce @/missing.bvh -o @/k.json -q", 1, {"@/missing.bvh: no such file"}, "@/k.json"},
+      {"reduce @/bad.bvh -o @/k.json -q", 1, {"@/bad.bvh: "}, "@/k.json"},
+      {"reduce @/huge.bvh -o @/k.json -q", 1, {"@/huge.bvh: 'Frames: 4000000000'"}, "@/k.json"},
+      {"reduce @/good.bvh -o @/afile/k.json -q", 1, {"@/afile/k.json"}},
+      {"reduce @/good.bvh -o @/k.json --tolerance-deg 0 -q", 2, {"--tolerance-deg '0' must be > 0"}, "@/k.json"},
+      {"reduce @/good.bvh -o @/k.json --tolerance-mm nan -q", 2, {"--tolerance-mm 'nan' is not a finite number"}, "@/k.json"},
+      {"reduce @/good.bvh -o @/k.json --tolerance-deg 1 --tolerance-for nosuch=1deg -q", 2,
+       {"@/good.bvh has no joint named 'nosuch'"}, "@/k.json"},
+      {"reduce @/good.bvh -o @/k.json --tolerance-deg 1 --tolerance-for x=1 -q", 2, {"must be JOINT=DEGdeg"}, "@/k.json"},
+      {"reduce @/good.bvh -o @/k.glb --method squad -q", 2, {"only --method slerp (LINEAR) or gltf-cubic"}, "@/k.glb"},
+      {"reduce @/good.bvh -o @/k.txt -q", 2, {"'@/k.txt': unknown format"}, "@/k.txt"},
+      {"reduce @/good.bvh -o @/k.json --shell-distance 5 -q", 2, {"--shell-distance needs --tolerance-mm"}, "@/k.json"},
+      {"reduce @/good.bvh --methods slerp,nope -q", 2, {"unknown method 'nope'"}},
+      {"reduce @/good.bvh -q", 2, {"give -o OUT"}},
+  });
+}
+
 TEST_F(ExitCodes, InfoFailuresNameTheFile) {
   check({
       {"info @/missing.bvh", 1, {"@/missing.bvh: no such file"}},

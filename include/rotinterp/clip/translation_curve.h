@@ -40,6 +40,9 @@ class TranslationCurve {
   Vec3 evaluate(double t) const;
   // dp/dt (units per second); 0 outside the key range.
   Vec3 derivative(double t) const;
+  // The cubic's Hermite tangent dp/dt at each key (units per second), what a glTF
+  // CUBICSPLINE sampler stores as in- and out-tangent; empty for linear and for one key.
+  const std::vector<Vec3>& tangents() const { return tangents_; }
 
  private:
   std::size_t segment(double t) const;  // i with times[i] ≤ t < times[i+1], clamped

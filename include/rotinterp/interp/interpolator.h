@@ -4,7 +4,7 @@
 // increasing times, unit keys — see clip/clip.h) and evaluated at any time; times
 // outside [t₀, tₙ] (and NaN) are clamped. Every method passes through every key
 // (< 1e-9 rad), returns unit quaternions and never NaN. One method per header:
-// slerp.h, squad.h, expmap.h, nlerp.h, bf.h, c2.h, clamped.h.
+// slerp.h, squad.h, expmap.h, nlerp.h, bf.h, c2.h, clamped.h, gltf_cubic.h.
 #pragma once
 
 #include "rotinterp/clip/clip.h"
@@ -45,7 +45,8 @@ struct MethodInfo {
   std::function<Result<std::unique_ptr<Interpolator>>(const RotationTrack&)> make;
 };
 
-// All methods, in a stable order: slerp, squad, expmap, nlerp, bf, c2, expmap-c2, clamped.
+// All methods, in a stable order: slerp, squad, expmap, nlerp, bf, c2, expmap-c2, clamped,
+// gltf-cubic.
 const std::vector<MethodInfo>& methods();
 // The method called `name`, or nullptr.
 const MethodInfo* find_method(std::string_view name);

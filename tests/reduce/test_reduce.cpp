@@ -1,0 +1,487 @@
+// rotinterp reduce: the budget holds at every source frame — checked here without
+// the selection code, by rebuilding from the keys written to the output file and
+// measuring with the eval metrics (clip/metrics.h), and for glTF by replaying the
+// file's own samplers with the glTF spec's interpolation.
+#include "support/run_cli.h"
+
+#include "rotinterp/clip/frames.h"
+#include "rotinterp/clip/metrics.h"
+#include "rotinterp/clip/synth.h"
+#include "rotinterp/clip/translation_curve.h"
+#include "rotinterp/interp/interpolator.h"
+#include "rotinterp/interp/slerp.h"
+#include "rotinterp/io/read.h"
+#include "rotinterp/reduce/reduce.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace rotinterp {
+namespace {
+
+namespace fs = std::filesystem;
+using test::run_cli;
+using test::slurp;
+
+const std::string kData = ROTINTERP_SHARED_DATA;
+const std::string kCmu = kData + "/bvh/cmu_01_01.bvh";
+const std::string kBandai = kData + "/bvh/NC_bandai1_walk_normal_001.bvh";
+
+constexpr double kDeg = kPi / 180.0;
+
+fs::path temp_dir(const std::string& name) {
+  const fs::path d = fs::temp_directory_path() / ("rotinterp_reduce_" + std::to_string(::getpid()) + "_" + name);
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+// Local rotations and translations per joint and frame, [joint][frame].
+struct Motion {
+  std::vector<std::vector<Quat>> rotation;
+  std::vector<std::vector<Vec3>> translation;
+};
+
+// The largest local angle and shell error of `test` against the source at every frame,
+// measured with the eval metrics: rotation_error and forward kinematics + accumulate_pose_error.
+struct Measured {
+  std::vector<double> angle;  // per joint, rad
+  std::vector<double> shell;  // per joint, clip units
+};
+Measured measure(const Clip& source, const DenseClip& ref, const Motion& test, double shell_distance) {
+  const std::size_t n = source.skeleton.joints.size(), frames = ref.grid.size();
+  Measured m;
+  std::vector<double> scratch;
+  const std::vector<Vec3> axes = bone_axes(source.skeleton);
+  for (std::size_t j = 0; j < n; ++j)
+    m.angle.push_back(rotation_error(ref.rotation[j].data(), test.rotation[j].data(), frames, axes[j], scratch).angle.max);
+  PoseError acc = make_pose_error(source.skeleton);
+  std::vector<Quat> qr(n), qt(n);
+  std::vector<Vec3> tr(n), tt(n);
+  WorldPose wr, wt;
+  for (std::size_t f = 0; f < frames; ++f) {
+    for (std::size_t j = 0; j < n; ++j) {
+      qr[j] = ref.rotation[j][f];
+      tr[j] = ref.translation[j][f];
+      qt[j] = test.rotation[j][f];
+      tt[j] = test.translation[j][f];
+    }
+    forward_kinematics(source.skeleton, qr, tr, wr);
+    forward_kinematics(source.skeleton, qt, tt, wt);
+    accumulate_pose_error(wr, wt, shell_distance, acc);
+  }
+  for (const RunningError& e : acc.joint_shell) m.shell.push_back(e.max);
+  return m;
+}
+
+// Rebuilds a clip from a reduce .json: each joint's written keys through the method.
+Motion rebuild_from_json(const nlohmann::json& doc, const DenseClip& ref, TranslationInterp translation) {
+  Motion m;
+  const std::string method = doc["method"];
+  for (const auto& j : doc["joints"]) {
+    RotationTrack rt;
+    rt.times = j["rotation"]["times"].get<std::vector<double>>();
+    for (const auto& k : j["rotation"]["keys"]) rt.keys.emplace_back(k[3].get<double>(), k[0].get<double>(), k[1].get<double>(), k[2].get<double>());
+    auto curve = make_interpolator(method, rt);
+    EXPECT_TRUE(curve) << (curve ? "" : curve.error());
+    std::vector<Quat> q(ref.grid.size());
+    (*curve)->evaluate(ref.grid.times.data(), q.size(), q.data());
+    m.rotation.push_back(q);
+    const std::size_t idx = m.translation.size();
+    if (j.contains("translation")) {
+      TranslationTrack tt;
+      tt.times = j["translation"]["times"].get<std::vector<double>>();
+      for (const auto& k : j["translation"]["keys"]) tt.keys.emplace_back(k[0].get<double>(), k[1].get<double>(), k[2].get<double>());
+      const TranslationCurve c(tt, translation);
+      std::vector<Vec3> p;
+      for (double t : ref.grid.times) p.push_back(c.evaluate(t));
+      m.translation.push_back(p);
+    } else {
+      m.translation.push_back(ref.translation[idx]);
+    }
+  }
+  return m;
+}
+
+// ---- glTF replay by the spec (glTF 2.0 Appendix C), from the file's own bytes ----
+
+struct Glb {
+  nlohmann::json json;
+  std::string bin;
+};
+Glb read_glb(const fs::path& p) {
+  const std::string bytes = slurp(p);
+  Glb g;
+  std::uint32_t json_len = 0, bin_len = 0;
+  std::memcpy(&json_len, bytes.data() + 12, 4);
+  g.json = nlohmann::json::parse(bytes.substr(20, json_len));
+  std::memcpy(&bin_len, bytes.data() + 20 + json_len, 4);
+  g.bin = bytes.substr(28 + json_len, bin_len);
+  return g;
+}
+std::vector<float> floats(const Glb& g, int accessor) {
+  const auto& a = g.json["accessors"][accessor];
+  const auto& v = g.json["bufferViews"][a["bufferView"].get<int>()];
+  const std::size_t count = a["count"], comps = a["type"] == "SCALAR" ? 1 : a["type"] == "VEC3" ? 3 : 4;
+  std::vector<float> out(count * comps);
+  std::memcpy(out.data(), g.bin.data() + v["byteOffset"].get<std::size_t>(), out.size() * 4);
+  return out;
+}
+
+// One sampler replayed at time t: LINEAR (slerp for rotations, lerp for translations)
+// or CUBICSPLINE (Hermite on components; rotations normalized), clamped outside.
+Eigen::Vector4d replay(const std::vector<float>& in, const std::vector<float>& out, const std::string& interp, int comps,
+                       double t) {
+  const std::size_t n = in.size();
+  const bool cubic = interp == "CUBICSPLINE";
+  auto value = [&](std::size_t k, int which) {  // which: 0 in-tangent, 1 value, 2 out-tangent
+    Eigen::Vector4d v = Eigen::Vector4d::Zero();
+    const std::size_t base = cubic ? (3 * k + static_cast<std::size_t>(which)) * static_cast<std::size_t>(comps) : k * static_cast<std::size_t>(comps);
+    for (int c = 0; c < comps; ++c) v[c] = out[base + static_cast<std::size_t>(c)];
+    return v;
+  };
+  if (t <= in.front()) return value(0, 1);
+  if (t >= in.back()) return value(n - 1, 1);
+  std::size_t k = 0;
+  while (!(t < in[k + 1])) ++k;
+  const double td = double(in[k + 1]) - double(in[k]), s = (t - double(in[k])) / td;
+  Eigen::Vector4d r;
+  if (cubic) {
+    const double s2 = s * s, s3 = s2 * s;
+    r = (2 * s3 - 3 * s2 + 1) * value(k, 1) + td * (s3 - 2 * s2 + s) * value(k, 2) + (-2 * s3 + 3 * s2) * value(k + 1, 1) +
+        td * (s3 - s2) * value(k + 1, 0);
+    if (comps == 4) r.normalize();
+  } else if (comps == 4) {
+    Quat a, b;
+    a.coeffs() = value(k, 1).normalized();
+    b.coeffs() = value(k + 1, 1).normalized();
+    r = slerp(a, b, s).coeffs();  // the spec's slerp: shortest arc
+  } else {
+    r = (1 - s) * value(k, 1) + s * value(k + 1, 1);
+  }
+  return r;
+}
+
+Motion replay_glb(const Glb& g, const Clip& source, const DenseClip& ref, double metres_per_unit) {
+  Motion m{ref.rotation, ref.translation};
+  const auto& anim = g.json["animations"][0];
+  for (const auto& ch : anim["channels"]) {
+    const auto& s = anim["samplers"][ch["sampler"].get<int>()];
+    const std::size_t node = ch["target"]["node"];
+    const std::string path = ch["target"]["path"], interp = s["interpolation"];
+    const std::vector<float> in = floats(g, s["input"]), out = floats(g, s["output"]);
+    EXPECT_EQ(g.json["nodes"][node]["name"], source.skeleton.joints[node].name);
+    for (std::size_t f = 0; f < ref.grid.size(); ++f) {
+      const Eigen::Vector4d v = replay(in, out, interp, path == "rotation" ? 4 : 3, ref.grid.times[f]);
+      if (path == "rotation") m.rotation[node][f].coeffs() = v;
+      else m.translation[node][f] = v.head<3>() / metres_per_unit;
+    }
+  }
+  return m;
+}
+
+double max_of(const std::vector<double>& v) { return *std::max_element(v.begin(), v.end()); }
+
+// ---- the budget holds at every frame, rebuilt from the written keys ----------------
+
+TEST(ReduceCli, EveryMethodKeepsEveryFrameWithinBothBudgetsRebuiltFromTheWrittenJson) {
+  const fs::path dir = temp_dir("json");
+  auto source = read_clip(kBandai);
+  ASSERT_TRUE(source) << source.error();
+  const DenseClip ref = dense_clip(*source);
+  const double unit = 0.01;  // BVH taken as centimetres
+  for (const MethodInfo& method : methods()) {
+    const fs::path out = dir / (method.name + ".json");
+    const auto r = run_cli("reduce " + kBandai + " -o " + out.string() + " --method " + method.name +
+                           " --tolerance-deg 0.5 --tolerance-mm 1 -q");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const nlohmann::json doc = nlohmann::json::parse(slurp(out));
+    const Motion test = rebuild_from_json(doc, ref, TranslationInterp::cubic);
+    const Measured m = measure(*source, ref, test, 0.10 / unit);
+    std::size_t kept = 0;
+    for (std::size_t j = 0; j < m.angle.size(); ++j) {
+      EXPECT_LE(m.angle[j], 0.5 * kDeg * (1 + 1e-9)) << method.name << " " << source->skeleton.joints[j].name;
+      EXPECT_LE(m.shell[j], 0.001 / unit * (1 + 1e-9)) << method.name << " " << source->skeleton.joints[j].name;
+      const auto& frames = doc["joints"][j]["rotation"]["frames"];
+      kept += frames.size();
+      EXPECT_EQ(frames.front(), 0u);
+      EXPECT_EQ(frames.back(), ref.grid.size() - 1);
+      EXPECT_LE(frames.size(), ref.grid.size());
+    }
+    EXPECT_LT(kept, m.angle.size() * ref.grid.size()) << method.name << ": not reduced";
+  }
+}
+
+TEST(ReduceCli, GltfReplayedWithTheSpecsInterpolationStaysWithinBudget) {
+  const fs::path dir = temp_dir("gltf");
+  auto source = read_clip(kBandai);
+  ASSERT_TRUE(source) << source.error();
+  const DenseClip ref = dense_clip(*source);
+  const double unit = 0.01;
+  for (const std::string method : {"slerp", "gltf-cubic"})
+    for (const std::string translation : {"linear", "cubic"}) {
+      const fs::path out = dir / (method + "_" + translation + ".glb");
+      const auto r = run_cli("reduce " + kBandai + " -o " + out.string() + " --method " + method + " --translation " +
+                             translation + " --tolerance-deg 0.5 --tolerance-mm 1 -q");
+      ASSERT_EQ(r.exit_code, 0) << r.err;
+      const Glb g = read_glb(out);
+      for (const auto& s : g.json["animations"][0]["samplers"]) {
+        const bool rotation_cubic = method == "gltf-cubic", translation_cubic = translation == "cubic";
+        const std::string interp = s["interpolation"];
+        EXPECT_TRUE(interp == (rotation_cubic ? "CUBICSPLINE" : "LINEAR") || interp == (translation_cubic ? "CUBICSPLINE" : "LINEAR"));
+      }
+      // The GLB of a BVH holds its numbers as they are (the writer's convention: BVH has no unit).
+      const Motion test = replay_glb(g, *source, ref, 1.0);
+      const Measured m = measure(*source, ref, test, 0.10 / unit);
+      // Float key times and values: the replay differs from the double rebuild by float round-off.
+      for (std::size_t j = 0; j < m.angle.size(); ++j) {
+        EXPECT_LE(m.angle[j], 0.5 * kDeg + 2e-6) << method << " " << translation << " " << source->skeleton.joints[j].name;
+        EXPECT_LE(m.shell[j], 0.001 / unit + 1e-4) << method << " " << translation << " " << source->skeleton.joints[j].name;
+      }
+      // Sparse: fewer keys in the file than frames × channels.
+      std::size_t keys = 0;
+      for (const auto& s : g.json["animations"][0]["samplers"]) keys += g.json["accessors"][s["input"].get<int>()]["count"].get<std::size_t>();
+      EXPECT_LT(keys, g.json["animations"][0]["samplers"].size() * ref.grid.size());
+    }
+}
+
+// assimp (the reader most tools use) reads the sparse GLB back with exactly the kept
+// keys of every joint: LINEAR and CUBICSPLINE samplers alike, each channel at its own times.
+TEST(ReduceCli, AssimpReadsTheSparseGlbBackWithTheKeptKeysOfEveryJoint) {
+  const fs::path dir = temp_dir("assimp");
+  for (const std::string method : {"slerp", "gltf-cubic"}) {
+    const fs::path glb = dir / (method + ".glb"), json = dir / (method + ".json");
+    for (const fs::path& out : {glb, json}) {
+      const auto r = run_cli("reduce " + kBandai + " -o " + out.string() + " --method " + method + " --tolerance-deg 0.5 -q");
+      ASSERT_EQ(r.exit_code, 0) << r.err;
+    }
+    auto back = read_clip(glb);
+    ASSERT_TRUE(back) << back.error();
+    const nlohmann::json doc = nlohmann::json::parse(slurp(json));
+    ASSERT_EQ(back->skeleton.joints.size(), doc["joints"].size());
+    for (std::size_t j = 0; j < back->skeleton.joints.size(); ++j) {
+      const auto& want = doc["joints"][j]["rotation"];
+      const RotationTrack& got = back->rotations[j];
+      EXPECT_EQ(back->skeleton.joints[j].name, doc["joints"][j]["name"]);
+      // The reader puts a joint's rotation on the union of its rotation and translation
+      // key times; every kept rotation key is among them, with its value.
+      ASSERT_GE(got.times.size(), want["times"].size()) << method << " " << back->skeleton.joints[j].name;
+      if (!back->translations[j]) {
+        EXPECT_EQ(got.times.size(), want["times"].size()) << method << " " << j;
+      }
+      for (std::size_t k = 0; k < want["times"].size(); ++k) {
+        const double t = want["times"][k].get<double>();
+        const auto at = std::lower_bound(got.times.begin(), got.times.end(), t - 1e-5);
+        ASSERT_TRUE(at != got.times.end() && std::abs(*at - t) < 1e-5) << method << " " << j << " key " << k;
+        const auto& q = want["keys"][k];
+        const Quat w(q[3].get<double>(), q[0].get<double>(), q[1].get<double>(), q[2].get<double>());
+        EXPECT_LT(angular_distance(got.keys[static_cast<std::size_t>(at - got.times.begin())], w), 1e-5)
+            << method << " " << j << " key " << k;
+      }
+    }
+  }
+}
+
+// ---- properties of the selection -----------------------------------------------------
+
+// A chain of `joints` joints along +y, bones `bone` long, each with the motion `make(j)`.
+SynthMotion chain(std::size_t joints, double bone, const std::function<JointMotion(std::size_t)>& make) {
+  Skeleton sk;
+  std::vector<JointMotion> motion;
+  for (std::size_t j = 0; j < joints; ++j) {
+    Joint joint;
+    joint.name = "j" + std::to_string(j);
+    joint.parent = static_cast<int>(j) - 1;
+    joint.offset = j == 0 ? Vec3::Zero() : Vec3(0, bone, 0);
+    sk.joints.push_back(joint);
+    motion.push_back(make(j));
+  }
+  EndSite end;
+  end.parent = static_cast<int>(joints) - 1;
+  end.offset = Vec3(0, bone, 0);
+  sk.end_sites.push_back(end);
+  return SynthMotion(sk, motion);
+}
+
+TEST(Reduce, SlerpKeepsTwoKeysPerJointOnConstantAngularVelocity) {
+  const SynthMotion motion = chain(4, 30, [](std::size_t j) {
+    JointMotion m;
+    VectorCurve c;
+    c.c1 = Vec3(0.2 + 0.05 * double(j), -0.1, 0.25);  // rad/s about a fixed axis: constant ω, < 90° in 4 s
+    m.factors.push_back(c);
+    m.base = exp(RotVec(0.2 * double(j), 0.1, -0.3));
+    return m;
+  });
+  const Clip clip = motion.sample(4.0, Rate{30, 1}, "constant");
+  ReduceOptions o;
+  o.method = "slerp";
+  o.budget.rotation_deg = 1e-6;
+  o.budget.shell = 1e-6;
+  o.shell_distance = 10;
+  auto r = reduce_clip(clip, o);
+  ASSERT_TRUE(r) << r.error();
+  for (const ReducedJoint& j : r->joints) {
+    EXPECT_EQ(j.rotation_frames, (std::vector<std::size_t>{0, 120}));
+    EXPECT_LE(j.max_rotation_error, 1e-6 * kDeg);
+  }
+}
+
+TEST(Reduce, AHoldCostsAtMostItsTwoEnds) {
+  // Moves for 1 s, holds still from frame 30 to frame 90, moves again.
+  const SynthMotion moving = chain(3, 20, [](std::size_t j) {
+    JointMotion m;
+    VectorCurve c;
+    c.waves.push_back({Vec3(0.6, 0.2 + 0.1 * double(j), -0.4), 2.3, 0.3});
+    c.waves.push_back({Vec3(-0.1, 0.3, 0.2), 5.1, 1.0});
+    m.factors.push_back(c);
+    return m;
+  });
+  Clip clip = moving.sample(4.0, Rate{30, 1}, "hold");
+  for (RotationTrack& t : clip.rotations)
+    for (std::size_t f = 31; f <= 90; ++f) t.keys[f] = t.keys[30];
+  for (const MethodInfo& method : methods()) {
+    if (!method.preserves_holds) continue;
+    ReduceOptions o;
+    o.method = method.name;
+    o.budget.rotation_deg = 0.01;
+    auto r = reduce_clip(clip, o);
+    ASSERT_TRUE(r) << r.error();
+    for (const ReducedJoint& j : r->joints) {
+      for (std::size_t f : j.rotation_frames) EXPECT_TRUE(f <= 30 || f >= 90) << method.name << " keeps frame " << f << " inside the hold";
+      EXPECT_LE(j.max_rotation_error, 0.01 * kDeg * (1 + 1e-9));
+    }
+  }
+}
+
+TEST(Reduce, KeysAreNeverMoreThanTheSourcesAndEveryFrameIsKeptForAZeroLikeBudget) {
+  const SynthMotion motion = chain(2, 10, [](std::size_t) {
+    JointMotion m;
+    VectorCurve c;
+    c.waves.push_back({Vec3(1.0, 0.5, -0.4), 9.0, 0.3});
+    m.factors.push_back(c);
+    return m;
+  });
+  const Clip clip = motion.sample(1.0, Rate{30, 1}, "tight");
+  ReduceOptions o;
+  o.method = "squad";
+  o.budget.rotation_deg = 1e-12;
+  auto r = reduce_clip(clip, o);
+  ASSERT_TRUE(r) << r.error();
+  for (const ReducedJoint& j : r->joints) EXPECT_LE(j.rotation_frames.size(), 31u);
+  EXPECT_LE(r->kept_keys, r->source_keys);
+}
+
+// Per-joint budgets each pass, yet the hand drifts: errors of one sign add up
+// down the chain. The shell budget, measured with the ancestors' rebuilt motion,
+// catches it.
+TEST(Reduce, AHandDriftingBeyondTheShellBudgetIsCaughtThoughEveryJointIsWithinItsOwn) {
+  const SynthMotion motion = chain(5, 30, [](std::size_t) {
+    JointMotion m;
+    VectorCurve c;
+    c.waves.push_back({Vec3(0, 0, 0.5), 3.0, 0.0});  // every joint bends the same way
+    c.waves.push_back({Vec3(0, 0, 0.1), 11.0, 0.5});
+    m.factors.push_back(c);
+    return m;
+  });
+  const Clip clip = motion.sample(3.0, Rate{60, 1}, "arm");
+  const DenseClip ref = dense_clip(clip);
+  auto rebuilt = [&](const ReduceResult& r) {
+    Motion m{ref.rotation, ref.translation};
+    for (std::size_t j = 0; j < r.joints.size(); ++j)
+      m.rotation[j] = *rebuild_rotations("slerp", ref.grid.times, ref.rotation[j], r.joints[j].rotation_frames);
+    return m;
+  };
+  const double shell_distance = 10, shell_budget = 0.1;  // 1 mm at 10 cm in centimetres
+  ReduceOptions local;
+  local.method = "slerp";
+  local.budget.rotation_deg = 0.5;
+  auto per_joint = reduce_clip(clip, local);
+  ASSERT_TRUE(per_joint) << per_joint.error();
+  const Measured loose = measure(clip, ref, rebuilt(*per_joint), shell_distance);
+  EXPECT_LE(max_of(loose.angle), 0.5 * kDeg * (1 + 1e-9));
+  EXPECT_GT(loose.shell.back(), 3 * shell_budget) << "the fixture should drift at the hand";
+
+  ReduceOptions hierarchical = local;
+  hierarchical.budget.shell = shell_budget;
+  hierarchical.shell_distance = shell_distance;
+  auto held = reduce_clip(clip, hierarchical);
+  ASSERT_TRUE(held) << held.error();
+  const Measured tight = measure(clip, ref, rebuilt(*held), shell_distance);
+  EXPECT_LE(max_of(tight.angle), 0.5 * kDeg * (1 + 1e-9));
+  for (std::size_t j = 0; j < tight.shell.size(); ++j) EXPECT_LE(tight.shell[j], shell_budget * (1 + 1e-9)) << j;
+  EXPECT_LE(held->joints.back().max_shell_error, shell_budget * (1 + 1e-9));
+}
+
+TEST(Reduce, APerJointBudgetTightensThatJointOnly) {
+  auto source = read_clip(kCmu);
+  ASSERT_TRUE(source) << source.error();
+  ReduceOptions o;
+  o.budget.rotation_deg = 2;
+  o.budget.translation = 1;
+  o.budget_for.emplace_back("LeftHand", ReduceBudget{0.05, 0, 0});
+  auto r = reduce_clip(*source, o);
+  ASSERT_TRUE(r) << r.error();
+  const auto hand = static_cast<std::size_t>(source->skeleton.find("LeftHand"));
+  EXPECT_LE(r->joints[hand].max_rotation_error, 0.05 * kDeg * (1 + 1e-9));
+  EXPECT_DOUBLE_EQ(r->joints[hand].budget.rotation_deg, 0.05);
+  const auto other = static_cast<std::size_t>(source->skeleton.find("RightHand"));
+  EXPECT_DOUBLE_EQ(r->joints[other].budget.rotation_deg, 2);
+  o.budget_for.emplace_back("NoSuchJoint", ReduceBudget{1, 0, 0});
+  auto bad = reduce_clip(*source, o);
+  ASSERT_FALSE(bad);
+  EXPECT_NE(bad.error().find("NoSuchJoint"), std::string::npos);
+}
+
+// ---- the command line ---------------------------------------------------------------------
+
+TEST(ReduceCli, BadBudgetsAreUsageErrorsAndLeaveThePreviousOutputIntact) {
+  const fs::path dir = temp_dir("usage");
+  const fs::path out = dir / "keys.json";
+  { std::ofstream(out) << "previous"; }
+  for (const std::string args :
+       {"--tolerance-deg 0", "--tolerance-deg -1", "--tolerance-deg nan", "--tolerance-mm inf", "--tolerance-mm abc",
+        "--tolerance-deg 1 --tolerance-for Hips=0deg", "--tolerance-deg 1 --tolerance-for NoSuchJoint=1deg",
+        "--tolerance-deg 1 --tolerance-for Hips=1", "--tolerance-mm 1 --shell-distance 0", "--method nope",
+        "--methods slerp,nope"}) {
+    const auto r = run_cli("reduce " + kBandai + " -o " + out.string() + " " + args);
+    EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": " << r.err;
+    EXPECT_EQ(slurp(out), "previous") << args;
+  }
+  const auto gltf = run_cli("reduce " + kBandai + " -o " + (dir / "x.glb").string() + " --method squad");
+  EXPECT_EQ(gltf.exit_code, 2);
+  EXPECT_NE(gltf.err.find("slerp"), std::string::npos) << gltf.err;
+  EXPECT_FALSE(fs::exists(dir / "x.glb"));
+  const auto missing = run_cli("reduce " + (dir / "none.bvh").string() + " -o " + out.string());
+  EXPECT_EQ(missing.exit_code, 1);
+  EXPECT_EQ(slurp(out), "previous");
+}
+
+TEST(ReduceCli, MethodsTableAndReportListEveryMethod) {
+  const fs::path dir = temp_dir("report");
+  const fs::path report = dir / "report.json";
+  const auto r = run_cli("reduce " + kBandai + " --methods all --tolerance-mm 1 --report " + report.string() + " -q");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json doc = nlohmann::json::parse(slurp(report));
+  ASSERT_EQ(doc["methods"].size(), methods().size());
+  for (std::size_t i = 0; i < methods().size(); ++i) {
+    const auto& m = doc["methods"][i];
+    EXPECT_EQ(m["method"], methods()[i].name);
+    EXPECT_NE(r.out.find(methods()[i].name), std::string::npos);
+    EXPECT_LE(m["max_shell_error_mm"].get<double>(), 1.0 + 1e-9);
+    EXPECT_LT(m["kept_keys"].get<std::size_t>(), m["source_keys"].get<std::size_t>());
+    EXPECT_GT(m["kept_keys"].get<std::size_t>(), 0u);
+  }
+}
+
+}  // namespace
+}  // namespace rotinterp

@@ -136,6 +136,7 @@ int run(const EvalArgs& a) {
   }
   if (!report) return fail(report.error());
   for (const ShortClip& c : report->too_short) {
+    if (quiet) break;
     std::string ns;
     for (int n : c.keep_every) ns += (ns.empty() ? "" : ",") + std::to_string(n);
     std::fprintf(stderr, "rotinterp: note: %s: %zu frames, too few for keep-every %s (needs 2N+1%s); skipped there\n",

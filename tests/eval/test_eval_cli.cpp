@@ -104,6 +104,10 @@ TEST(EvalCli, ShardsMergedEqualASingleRun) {
   EXPECT_EQ(jm["clips_evaluated"], js["clips_evaluated"]);
   EXPECT_EQ(jm["files"], js["files"]);
   EXPECT_EQ(jm["skipped"], js["skipped"]);
+  EXPECT_EQ(jm["clips"], js["clips"]);
+  EXPECT_EQ(jm["too_short"], js["too_short"]);  // two_frames.bvh, from the shard that read it
+  EXPECT_EQ(js["too_short"].size(), 1u);
+  EXPECT_EQ(slurp(merged / "clips.csv"), slurp(single / "clips.csv"));
   EXPECT_TRUE(fs::exists(merged / "error_vs_spacing.png"));
 
   // Merging a shard twice is refused.

@@ -193,7 +193,7 @@ Result<std::vector<std::pair<std::string, Clip>>> read_takes(const std::string& 
 // key, then one column of degrees per joint.
 std::string per_frame_csv(const ClipReference& R, const PerFrameRequest& q, const PerFrameErrors& e) {
   std::string out = "sample,time_s,key";
-  for (const Joint& j : R.skeleton.joints) out += "," + (j.name.find_first_of(",\"") == std::string::npos ? j.name : "\"" + j.name + "\"");
+  for (const Joint& j : R.skeleton.joints) out += "," + csv_field(j.name);
   out += '\n';
   const std::vector<std::size_t> kf = keep_every_indices(R.frames.size(), static_cast<std::size_t>(q.keep_every));
   std::vector<char> key(R.samples, 0);

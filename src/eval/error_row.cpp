@@ -54,16 +54,6 @@ constexpr Measured kMeasured[] = {
     {kContactFramesRef, &ErrorRow::contact_frames_ref}, {kSkateFramesRef, &ErrorRow::skate_frames_ref},
     {kSkateSpeedRef, &ErrorRow::skate_speed_ref}};
 
-std::string quote(std::string_view s) {
-  if (s.find_first_of(",\"\r\n") == std::string_view::npos) return std::string(s);
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"') out += '"';
-    out += c;
-  }
-  return out + "\"";
-}
-
 // Shortest text that reads back as the same double; finite by construction.
 std::string number(double v) { return fmt::format("{}", std::isfinite(v) ? v : 0.0); }
 
@@ -98,8 +88,8 @@ std::string error_csv_header() {
 std::string format_error_row(const ErrorRow& r) {
   double values[kColumnCount] = {};
   for (const Measured& m : kMeasured) values[m.col] = r.*m.field;
-  std::string line = quote(r.clip) + "," + quote(r.method) + "," + std::to_string(r.keep_every) + "," +
-                     quote(r.joint) + "," + std::to_string(r.frames);
+  std::string line = csv_field(r.clip) + "," + csv_field(r.method) + "," + std::to_string(r.keep_every) + "," +
+                     csv_field(r.joint) + "," + std::to_string(r.frames);
   for (int c = kMeanDeg; c < kSamples; ++c) {
     line += ',';
     if (!is_empty_for(r, c)) line += number(values[c]);
@@ -110,6 +100,16 @@ std::string format_error_row(const ErrorRow& r) {
     if (!is_empty_for(r, c)) line += number(values[c]);
   }
   return line;
+}
+
+std::string csv_field(std::string_view s) {
+  if (s.find_first_of(",\"\r\n") == std::string_view::npos) return std::string(s);
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"') out += '"';
+    out += c;
+  }
+  return out + "\"";
 }
 
 Result<std::vector<std::string>> split_csv_line(std::string_view line) {

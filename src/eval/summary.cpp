@@ -285,12 +285,7 @@ std::string clips_csv(const Summary& s) {
       "clip,method,keep_every,frames,joints,keys,motion_deg,samples,mean_deg,rms_deg,p95_deg,max_deg,max_joint,"
       "pos_rms_pct,pos_max_pct,shell_rms_pct,shell_max_pct,feet,contact_frames,skate_ratio,skate_speed_mps,"
       "contact_frames_ref,skate_ratio_ref,skate_speed_ref_mps,extra_skate_ratio,extra_skate_speed_mps\n";
-  auto q = [](const std::string& t) {
-    if (t.find_first_of(",\"\r\n") == std::string::npos) return t;
-    std::string o = "\"";
-    for (char c : t) o += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return o + "\"";
-  };
+  const auto q = csv_field;
   for (const ClipResult& c : s.clip_results) {
     out += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}", q(c.clip), q(c.method), c.keep_every,
                        c.frames, c.joints, c.keys, c.motion_deg, c.samples, c.mean_deg, c.rms_deg, c.p95_deg,

@@ -73,6 +73,10 @@ class ErrorRowParser {
   std::vector<int> column_;  // field index per known column, −1 when absent
 };
 
+// A text field as CSV writes it: quoted (quotes doubled) when it holds a comma, quote
+// or line break.
+std::string csv_field(std::string_view text);
+
 // Splits one CSV line into fields (RFC 4180 quoting). Error on an unterminated quote.
 Result<std::vector<std::string>> split_csv_line(std::string_view line);
 

@@ -129,6 +129,7 @@ int run(const EvalArgs& a) {
       o.per_frame = *q;
     }
     if (a.truth) o.truth_for = synth_truth;
+    keep_freed_memory_for_reuse();
     o.progress = make_progress("eval", quiet);
     o.on_failure = print_failure;
     report = run_eval(o);

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <malloc.h>
 #include <chrono>
 #include <ctime>
 #include <deque>
@@ -320,6 +321,12 @@ std::size_t worker_count(int jobs) {
 }
 
 }  // namespace
+
+void keep_freed_memory_for_reuse() {
+  mallopt(M_MMAP_THRESHOLD, 32 << 20);  // glibc's largest allowed value on 64-bit
+  mallopt(M_TRIM_THRESHOLD, 512 << 20);
+  mallopt(M_TOP_PAD, 16 << 20);
+}
 
 Result<EvalReport> run_eval(const EvalOptions& opt) {
   const auto t0 = std::chrono::steady_clock::now();

@@ -168,7 +168,8 @@ int run(const EvalArgs& a) {
 void add_eval_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<EvalArgs>();
   auto* sub = app.add_subcommand(
-      "eval", "Decimate clips, rebuild them with each method and measure the error: DIR/errors.csv, summary.json, plots");
+      "eval", "Decimate clips, rebuild them with each method and measure the error: DIR/errors.csv, clips.csv, summary.json, "
+      "plots");
   sub->add_option("paths", args->paths, "Clip files or directories (searched recursively for every format assimp reads)");
   sub->add_option("--methods", args->methods, "Comma-separated methods, or 'all'")->capture_default_str();
   sub->add_option("--keep-every", args->keep_every, "Comma-separated key spacings N: keys at every Nth frame and the last")
@@ -196,7 +197,8 @@ void add_eval_command(CLI::App& app, int& exit_code) {
   sub->add_option("--feet", args->feet,
                   "Comma-separated foot joints for foot skating (default: found by name, CMU/Mixamo/Bandai/Blender rigs)");
   sub->add_option("--floor", args->floor_m,
-                  "Floor height (Y up) in metres, converted by each clip's unit (default: the lowest foot height)");
+                  "Floor height (Y up) in metres, converted by each clip's unit (default: the lowest foot height)")
+      ->check(CLI::Range(-1e6, 1e6));
   sub->add_option("--contact-height", args->contact_height_m,
                   "Foot contact: height above the floor below which a foot may touch it, metres")
       ->capture_default_str()->check(CLI::PositiveNumber);

@@ -428,6 +428,8 @@ TEST(EvalCli, PerFrameSeriesAndTableFormats) {
   EXPECT_EQ(run_cli("eval " + clip + " --per-frame " + clip + ",nosuch,4 -o " + out.string()).exit_code, 2);
   EXPECT_EQ(run_cli("eval " + clip + " --per-frame " + clip + " -o " + out.string()).exit_code, 2);
   EXPECT_EQ(run_cli("eval " + clip + " --table html -o " + out.string()).exit_code, 2);
+  EXPECT_EQ(run_cli("eval " + clip + " --floor nan -o " + out.string()).exit_code, 2);
+  EXPECT_EQ(run_cli("eval " + clip + " --contact-speed 0 -o " + out.string()).exit_code, 2);
 }
 
 TEST(EvalCli, BadOptionValuesAreUsageErrors) {

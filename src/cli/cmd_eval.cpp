@@ -11,6 +11,8 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -198,7 +200,13 @@ void add_eval_command(CLI::App& app, int& exit_code) {
                   "Comma-separated foot joints for foot skating (default: found by name, CMU/Mixamo/Bandai/Blender rigs)");
   sub->add_option("--floor", args->floor_m,
                   "Floor height (Y up) in metres, converted by each clip's unit (default: the lowest foot height)")
-      ->check(CLI::Range(-1e6, 1e6));
+      ->check(CLI::Validator(
+          [](std::string& text) {
+            char* end = nullptr;
+            const double v = std::strtod(text.c_str(), &end);
+            return end != text.c_str() && *end == '\0' && std::isfinite(v) ? std::string() : "must be a finite number";
+          },
+          "METRES"));
   sub->add_option("--contact-height", args->contact_height_m,
                   "Foot contact: height above the floor below which a foot may touch it, metres")
       ->capture_default_str()->check(CLI::PositiveNumber);

@@ -156,7 +156,7 @@ void log_labels(PLINT axis, PLFLT value, char* label, PLINT length, PLPointer) {
 void legend(const std::vector<std::string>& names, PLINT position, int columns) {
   const std::size_t n = names.size();
   std::vector<PLINT> opt(n, PL_LEGEND_LINE | PL_LEGEND_SYMBOL), colours(n), lstyle(n), nsym(n, 1);
-  std::vector<PLFLT> widths(n, 2.0), sscale(n, 1.0);
+  std::vector<PLFLT> widths(n, 2.0), sscale(n, 0.8);
   std::vector<const char*> text(n), sym(n);
   for (std::size_t i = 0; i < n; ++i) {
     colours[i] = series_colour(i);
@@ -168,7 +168,7 @@ void legend(const std::vector<std::string>& names, PLINT position, int columns) 
   const PLINT ncol = std::max(1, columns), nrow = static_cast<PLINT>((static_cast<int>(n) + ncol - 1) / ncol);
   PLFLT w = 0, h = 0;
   pllegend(&w, &h, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX | (ncol > 1 ? PL_LEGEND_ROW_MAJOR : 0), position, 0.01,
-           0.01, ncol > 1 ? 0.04 : 0.1, 0, kText, 1, nrow, ncol, static_cast<PLINT>(n), opt.data(), 0.8, 0.85, 1.0,
+           0.01, ncol > 1 ? 0.04 : 0.1, 0, kText, 1, nrow, ncol, static_cast<PLINT>(n), opt.data(), 0.8, 0.75, 1.8,
            0.0, text_colours.data(), text.data(), nullptr, nullptr,
            nullptr, nullptr, colours.data(), lstyle.data(), widths.data(), colours.data(), sscale.data(), nsym.data(),
            sym.data());
@@ -191,8 +191,8 @@ std::string tail(const std::string& text, std::size_t max_chars) {
 }
 
 // Names written vertically under the slots 0 … span − 1 of the x axis.
-void joint_labels(const std::vector<std::string>& names, double span) {
-  plschr(0.0, names.size() > 40 ? 0.5 : 0.65);
+void joint_labels(const std::vector<std::string>& names, double span, double scale = 0.65) {
+  plschr(0.0, names.size() > 40 ? std::min(scale, 0.5) : scale);
   for (std::size_t i = 0; i < names.size(); ++i)
     plmtex("bv", 0.7, (static_cast<double>(i) + 0.5) / span, 1.0, names[i].c_str());
   plschr(0.0, kTextScale);
@@ -257,13 +257,14 @@ Status spacing_plot(const Summary& s) {
   for (int p = 0; p < 3; ++p) {
     std::vector<double> values;
     for (const SummaryEntry& e : s.entries) values.push_back(e.*panels[p].value);
-    const LogRange yr = log_range(values, p == 0 ? 0.9 : 0.0);  // room for the legend in the first
-    const double left = 0.07 + 0.315 * p;
+    LogRange yr = log_range(values, 0.0);
+    if (p == 0) yr.hi = yr.lo + (yr.hi - yr.lo) / 0.55;  // the top 45 % for the legend
+    const double left = 0.08 + 0.31 * p;
     plvpor(left, left + 0.255, 0.12, 0.86);
     plwind(xmin - 0.3 - half, xmax + 0.3 + half, yr.lo, yr.hi);
     log_axes(true);
     plmtex("t", 1.0, 0.5, 0.5, panels[p].title);
-    if (p == 0) plmtex("l", 4.0, 0.5, 0.5, "angle error (degrees, log scale)");
+    if (p == 0) plmtex("l", 5.0, 0.5, 0.5, "angle error (degrees, log scale)");
     for (std::size_t mi = 0; mi < methods.size(); ++mi) {
       std::vector<double> x, y;
       for (const SummaryEntry& e : s.entries)
@@ -354,7 +355,7 @@ Status clips_plot(const Summary& s) {
     if (c.keep_every == largest[c.clip]) values.push_back(c.rms_deg);
   const LogRange yr = log_range(values, 1.2);
   const double xmax = std::max<double>(1, static_cast<double>(clips.size()) - 1);
-  plvpor(0.08, 0.97, 0.36, 0.86);
+  plvpor(0.08, 0.97, 0.40, 0.86);
   plwind(-0.5, xmax + 0.5, yr.lo, yr.hi);
   plcol0(kGrid);
   plbox("", 0, 0, "g", 1.0, 0);
@@ -362,7 +363,7 @@ Status clips_plot(const Summary& s) {
   plslabelfunc(log_labels, nullptr);
   plbox("bct", 1.0, 1, "bcnstlov", 1.0, 0);
   plslabelfunc(nullptr, nullptr);
-  plmtex("l", 4.0, 0.5, 0.5, "clip RMS angle error (degrees, log scale)");
+  plmtex("l", 5.0, 0.5, 0.5, "clip RMS angle error (degrees, log scale)");
   plmtex("t", 2.6, 0.5, 0.5, "RMS error of each clip at the largest spacing it was evaluated at (N in the label)");
   plschr(0.0, 0.7);
   plmtex("t", 1.2, 0.5, 0.5, "open markers on the bottom edge: 0 to round-off (below 1e-9°: a still clip, or one every method reproduces)");
@@ -378,8 +379,8 @@ Status clips_plot(const Summary& s) {
   const std::size_t slash = common == 0 ? std::string::npos : clips.front().rfind('/', common - 1);
   common = slash == std::string::npos ? 0 : slash + 1;
   std::vector<std::string> labels;
-  for (const std::string& c : clips) labels.push_back(fmt::format("{} (N={})", tail(c.substr(common), 36), largest[c]));
-  joint_labels(labels, xmax + 1.0);
+  for (const std::string& c : clips) labels.push_back(fmt::format("{} (N={})", tail(c.substr(common), 30), largest[c]));
+  joint_labels(labels, xmax + 1.0, 0.55);
   const double dx = std::min(0.8 / static_cast<double>(std::max<std::size_t>(methods.size(), 1)), 0.12);
   for (std::size_t mi = 0; mi < methods.size(); ++mi) {
     std::vector<double> x, y;

@@ -308,7 +308,7 @@ Status worst_clip_plot(const Summary& s) {
   for (const auto& l : largest) shown.push_back(joints[l.second]);
   joints = std::move(shown);
   const double xmax = std::max<double>(1, static_cast<double>(joints.size()) - 1);
-  plvpor(0.08, 0.97, 0.26, 0.86);
+  plvpor(0.08, 0.97, 0.32, 0.86);
   plwind(-0.5, xmax + 0.5, 0, ymax * 1.25);  // headroom for the legend inside the frame
   plcol0(kGrid);
   plbox("", 0, 0, "g", 0, 0);
@@ -326,7 +326,9 @@ Status worst_clip_plot(const Summary& s) {
                                                                                      : "those with the largest error");
   plmtex("t", 1.2, 0.5, 0.5, (tail(s.worst_clip, 80) + shown_note).c_str());
   plschr(0.0, kTextScale);
-  joint_labels(joints, xmax + 1.0);
+  std::vector<std::string> labels;
+  for (const std::string& j : joints) labels.push_back(tail(j, 24));
+  joint_labels(labels, xmax + 1.0);
   const double dx = std::min(0.8 / static_cast<double>(std::max<std::size_t>(methods.size(), 1)), 0.12);
   for (std::size_t mi = 0; mi < methods.size(); ++mi) {
     std::vector<double> x, y;

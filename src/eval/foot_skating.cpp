@@ -22,9 +22,11 @@ FootName classify(const std::string& name) {
   std::string lower;
   for (char c : n) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   FootName f;
-  if (lower.find("end") != std::string::npos || lower.find("index") != std::string::npos ||
-      lower.find("thumb") != std::string::npos || lower.find("finger") != std::string::npos)
-    return f;  // a leaf marker or a hand
+  // Leaf markers, hands, and the controls and helpers of animation rigs (Maya's
+  // LeftFootCtrl, LeftToeRoll, lf_toe_ik, lf_toe_pivot), which do not move as the foot does.
+  for (const char* not_a_foot : {"end", "nub", "index", "thumb", "finger", "ctrl", "control", "ik", "pole", "pivot",
+                                 "snap", "roll", "target", "helper", "wiggle", "locator"})
+    if (lower.find(not_a_foot) != std::string::npos) return f;
   std::string part;
   if (lower.find("toe") != std::string::npos || lower.find("ball") != std::string::npos)
     f.level = 2, part = lower.find("toe") != std::string::npos ? "toe" : "ball";
@@ -37,21 +39,20 @@ FootName classify(const std::string& name) {
   } else if (lower.find("right") != std::string::npos) {
     f.side = Side::right;
   } else {
-    // A single l/r letter before or after the part, separated or not: l_foot, lfoot, foot.l, foot_l, footl.
-    const std::size_t at = lower.find(part);
-    const std::string before = lower.substr(0, at), after = lower.substr(at + part.size());
-    auto letter = [](const std::string& s, bool first) -> char {
-      std::string a;
-      for (char c : s)
-        if (std::isalpha(static_cast<unsigned char>(c))) a += c;
-      if (a.empty()) return 0;
-      return first ? a.front() : a.back();
-    };
-    for (char c : {letter(before, false), letter(after, true), letter(after, false)}) {
-      if (c == 'l') f.side = Side::left;
-      if (c == 'r') f.side = Side::right;
-      if (f.side != Side::none) break;
+    // A lone l or r between separators (l_foot, foot.l, L_FootToe, toes_r), or glued
+    // to the front of the part (lfoot, rtoe).
+    std::string token;
+    for (std::size_t i = 0; i <= lower.size() && f.side == Side::none; ++i) {
+      if (i < lower.size() && std::isalpha(static_cast<unsigned char>(lower[i]))) {
+        token += lower[i];
+        continue;
+      }
+      if (token == "l") f.side = Side::left;
+      if (token == "r") f.side = Side::right;
+      token.clear();
     }
+    if (f.side == Side::none && lower.size() > part.size() && lower.compare(1, part.size(), part) == 0)
+      f.side = lower[0] == 'l' ? Side::left : lower[0] == 'r' ? Side::right : Side::none;
   }
   if (f.side == Side::none) f.level = 0;
   return f;
@@ -60,13 +61,20 @@ FootName classify(const std::string& name) {
 }  // namespace
 
 std::vector<std::size_t> find_feet(const Skeleton& skeleton) {
+  // Depth in the joint tree: a foot bone ends a leg chain, while IK targets and
+  // controls of the same name (a Marine's L_TOE beside its L_FootToe) hang near the root.
+  std::vector<int> depth(skeleton.joints.size(), 0);
+  for (std::size_t j = 0; j < skeleton.joints.size(); ++j)
+    if (skeleton.joints[j].parent >= 0) depth[j] = depth[static_cast<std::size_t>(skeleton.joints[j].parent)] + 1;
   std::vector<std::size_t> feet;
   for (Side side : {Side::left, Side::right}) {
-    int best_level = 0;
+    int best_level = 0, best_depth = -1;
     std::size_t best = 0;
     for (std::size_t j = 0; j < skeleton.joints.size(); ++j) {
       const FootName f = classify(skeleton.joints[j].name);
-      if (f.side == side && f.level > best_level) best_level = f.level, best = j;
+      if (f.side != side || f.level == 0) continue;
+      if (f.level > best_level || (f.level == best_level && depth[j] > best_depth))
+        best_level = f.level, best_depth = depth[j], best = j;
     }
     if (best_level > 0) feet.push_back(best);
   }

@@ -10,19 +10,20 @@
 namespace rotinterp {
 namespace {
 
-Skeleton chain(const std::vector<std::string>& names) {
+// Every joint a child of the first, or of the joint before it when `nested`.
+Skeleton chain(const std::vector<std::string>& names, bool nested = false) {
   Skeleton s;
   for (std::size_t i = 0; i < names.size(); ++i) {
     Joint j;
     j.name = names[i];
-    j.parent = i == 0 ? -1 : 0;
+    j.parent = i == 0 ? -1 : nested ? static_cast<int>(i) - 1 : 0;
     s.joints.push_back(j);
   }
   return s;
 }
 
-std::vector<std::string> feet_of(const std::vector<std::string>& names) {
-  const Skeleton s = chain(names);
+std::vector<std::string> feet_of(const std::vector<std::string>& names, bool nested = false) {
+  const Skeleton s = chain(names, nested);
   std::vector<std::string> out;
   for (std::size_t j : find_feet(s)) out.push_back(s.joints[j].name);
   return out;
@@ -44,6 +45,14 @@ TEST(FootSkating, FeetOfCommonRigsAreFoundByNameToesFirst) {
   // Blender (Rigify-style) and l_/r_ prefixes; a rig with feet but no toes
   EXPECT_EQ(feet_of({"root", "foot.L", "toe.L", "foot.R", "toe.R"}), (V{"toe.L", "toe.R"}));
   EXPECT_EQ(feet_of({"pelvis", "l_foot", "r_foot"}), (V{"l_foot", "r_foot"}));
+  // A Maya rig's controls beside its bones (kenney character), IK helpers only (an Xbox avatar)
+  EXPECT_EQ(feet_of({"Hips", "LeftFootCtrl", "LeftFootIK", "LeftToeRoll", "LeftFootRollCtrl", "LeftFoot", "LeftToes",
+                     "LeftToes_end", "RightFootCtrl", "RightToeRoll", "RightFoot", "RightToes"}),
+            (V{"LeftToes", "RightToes"}));
+  EXPECT_TRUE(feet_of({"root", "lf_toe_ik", "lf_toe_pivot", "rt_toe_pivot_snapper", "LF_Leg_IK__MotionFootLeft"}).empty());
+  // IK targets named like feet near the root, the foot bones at the end of the legs (DigitalRune's marine)
+  EXPECT_EQ(feet_of({"Root", "L_TOE", "R_TOE", "Spine", "L_Thigh", "L_Ankle", "L_FootBall", "L_FootToe"}, true),
+            (V{"L_FootToe", "R_TOE"}));
   // No feet: a box chain, an arm, fingers
   EXPECT_TRUE(feet_of({"pCube1", "pCube2", "pCube3"}).empty());
   EXPECT_TRUE(feet_of({"Shoulder", "LeftHandIndex1", "LeftHandThumb1"}).empty());

@@ -43,8 +43,10 @@ struct FootContactOptions {
 // The foot joints of `skeleton`, found by the names of common rigs: CMU (LeftToeBase,
 // LeftFoot), Mixamo (mixamorig:LeftToeBase), Bandai Namco (LeftToes, LeftFoot),
 // Blender (toe.L, foot.L), and L/R, Left/Right, l_/_l variants. Per side the toe-level
-// joint (ToeBase, Toe, Toes, Ball) when there is one, else the foot/ankle. Empty
-// when no side is found (no feet: a box chain, an arm).
+// joint (ToeBase, Toe, Toes, Ball) when there is one, else the foot/ankle, the
+// deepest in the joint tree where several match (a bone, not an IK target); never a
+// rig's control or helper (…Ctrl, …IK, …Roll, …Pivot, …_end). Empty when no side is
+// found (no feet: a box chain, an arm, a rig of controls only).
 std::vector<std::size_t> find_feet(const Skeleton& skeleton);
 
 // The joints named in `names`; an error names one that is not in the skeleton.

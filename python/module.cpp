@@ -480,7 +480,8 @@ py::dict evaluate(const py::object& inputs, const std::optional<std::vector<std:
     rows.insert(rows.end(), std::make_move_iterator(part.begin()), std::make_move_iterator(part.end()));
   }
   // Columns, named and ordered as in errors.csv (error_row.h). End Site rows have no
-  // rotation or smoothness values: NaN there, as pandas reads the CSV's empty cells.
+  // rotation or smoothness values, rows of joints that are not feet no foot-contact
+  // values: NaN there, as pandas reads the CSV's empty cells.
   const std::size_t n = rows.size();
   py::list clip, method, joint, kind;
   py::array_t<long long> keep(n), frames(n), samples(n);
@@ -497,7 +498,8 @@ py::dict evaluate(const py::object& inputs, const std::optional<std::vector<std:
     frames.mutable_at(i) = static_cast<long long>(r.frames);
     samples.mutable_at(i) = static_cast<long long>(r.samples);
     for (std::size_t c = 0; c < measured.size(); ++c)
-      values[c].mutable_at(i) = r.end_site && measured[c].joint_only ? std::nan("") : r.*measured[c].field;
+      values[c].mutable_at(i) =
+          (r.end_site && measured[c].joint_only) || (!r.foot && measured[c].foot_only) ? std::nan("") : r.*measured[c].field;
   }
   py::module_ np = py::module_::import("numpy");
   std::map<std::string, py::object> by_name = {

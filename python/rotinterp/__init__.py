@@ -77,7 +77,9 @@ def evaluate(inputs, methods=None, keep_every=(2, 4, 8, 16), subframe=0, shell_d
     ``errors.csv`` as columns: a dict of numpy arrays that ``pandas.DataFrame`` takes as
     it is. inputs: a path, a Clip, or a list of them (a path's text is its clip id, as in
     the CSV; a Clip's id is its name). methods: names (default all). End Site rows have
-    NaN in the rotation-only columns (empty cells in the CSV). Releases the GIL."""
+    NaN in the rotation-only columns (empty cells in the CSV), rows of joints that are not
+    feet NaN in the foot-contact columns; spacings N a clip has fewer than 2N + 1 frames for
+    give no rows. Releases the GIL."""
     return _rotinterp.evaluate(inputs, None if methods is None else list(methods), list(keep_every), subframe,
                                shell_distance)
 

@@ -11,9 +11,12 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -35,7 +38,30 @@ struct EvalArgs {
   bool no_plots = false;
   bool truth = false;
   bool quiet = false;
+  std::string anim;
+  long long min_frames = 0;
+  std::string feet;
+  double contact_height_m = kDefaultContactHeightMetres;
+  double contact_speed_mps = kDefaultContactSpeedMps;
+  std::optional<double> floor_m;
+  std::string per_frame;
+  std::string table = "text";
 };
+
+// --per-frame CLIP,METHOD,N (the clip id may itself hold commas: the last two fields are split off).
+Result<PerFrameRequest> parse_per_frame(const std::string& text) {
+  const std::size_t b = text.rfind(','), a = b == std::string::npos || b == 0 ? std::string::npos : text.rfind(',', b - 1);
+  if (a == std::string::npos || a == 0) return make_error("--per-frame: expected CLIP,METHOD,N, got '" + text + "'");
+  PerFrameRequest q;
+  q.clip = text.substr(0, a);
+  q.method = text.substr(a + 1, b - a - 1);
+  if (!find_method(q.method))
+    return make_error("--per-frame: unknown method '" + q.method + "' (valid: " + method_names() + ")");
+  auto n = parse_whole_option("--per-frame", text.substr(b + 1), 1, kMaxKeepEvery);
+  if (!n) return make_error(n.error());
+  q.keep_every = static_cast<int>(*n);
+  return q;
+}
 
 int run(const EvalArgs& a) {
   const bool quiet = a.quiet;
@@ -46,8 +72,14 @@ int run(const EvalArgs& a) {
   for (const std::string& p : a.paths) protect_input(p);
   for (const std::string& d : a.merge)
     for (const char* name : {kErrorsCsvName, kSummaryJsonName}) protect_input(std::filesystem::path(d) / name);
-  for (const char* name : {kErrorsCsvName, kSummaryJsonName, kSpacingPlotName, kWorstClipPlotName})
+  std::vector<std::string> outputs = plot_file_names();
+  for (const char* name : {kErrorsCsvName, kSummaryJsonName, kClipsCsvName, kPerFrameCsvName}) outputs.push_back(name);
+  for (const std::string& name : outputs)
     if (Status s = check_not_an_input(std::filesystem::path(a.output) / name); !s) return fail(s.error());
+  TableFormat table = TableFormat::text;
+  if (a.table == "md") table = TableFormat::markdown;
+  else if (a.table == "latex") table = TableFormat::latex;
+  else if (a.table != "text") return fail_usage("--table: expected md, latex or text, got '" + a.table + "'");
   if (!a.merge.empty()) {
     if (!a.paths.empty()) return fail_usage("eval --merge takes directories after --merge, not input paths");
     std::vector<std::filesystem::path> dirs(a.merge.begin(), a.merge.end());
@@ -87,20 +119,40 @@ int run(const EvalArgs& a) {
       o.shard_count = s->second;
     }
     o.plots = !a.no_plots;
+    o.animation = a.anim;
+    o.clip.min_frames = static_cast<std::size_t>(a.min_frames);
+    o.clip.feet.feet = split_comma_list(a.feet);
+    o.clip.feet.contact_height_m = a.contact_height_m;
+    o.clip.feet.contact_speed_mps = a.contact_speed_mps;
+    o.clip.feet.floor_m = a.floor_m;
+    if (!a.per_frame.empty()) {
+      auto q = parse_per_frame(a.per_frame);
+      if (!q) return fail_usage(q.error());
+      o.per_frame = *q;
+    }
     if (a.truth) o.truth_for = synth_truth;
+    keep_freed_memory_for_reuse();
     o.progress = make_progress("eval", quiet);
     o.on_failure = print_failure;
     report = run_eval(o);
     end_progress(quiet);
   }
   if (!report) return fail(report.error());
+  for (const ShortClip& c : report->too_short) {
+    if (quiet) break;
+    std::string ns;
+    for (int n : c.keep_every) ns += (ns.empty() ? "" : ",") + std::to_string(n);
+    std::fprintf(stderr, "rotinterp: note: %s: %zu frames, too few for keep-every %s (needs 2N+1%s); skipped there\n",
+                 c.clip.c_str(), c.frames, ns.c_str(), a.min_frames > 0 ? " and --min-frames" : "");
+  }
   if (!quiet) {
     if (!report->skipped.empty())
       std::fprintf(stderr, "rotinterp: note: %zu file(s) found in directories hold no animation and were skipped "
                    "(listed in %s/%s)\n", report->skipped.size(), a.output.c_str(), kSummaryJsonName);
-    fmt::print("{}", format_summary_table(report->summary));
-    fmt::print("wrote {}/{}, {}/{}{}\n", a.output, kErrorsCsvName, a.output, kSummaryJsonName,
-               a.no_plots || report->summary.clips == 0 ? "" : ", and PNG plots");
+    fmt::print("{}", format_summary_table(report->summary, table));
+    if (table == TableFormat::text)
+      fmt::print("wrote {}/{}, {}/{}, {}/{}{}\n", a.output, kErrorsCsvName, a.output, kClipsCsvName, a.output,
+                 kSummaryJsonName, a.no_plots || report->summary.clips == 0 ? "" : ", and plots (PNG, SVG)");
   }
   if (!report->failures.empty()) {
     std::vector<std::string> bad;
@@ -118,7 +170,8 @@ int run(const EvalArgs& a) {
 void add_eval_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<EvalArgs>();
   auto* sub = app.add_subcommand(
-      "eval", "Decimate clips, rebuild them with each method and measure the error: DIR/errors.csv, summary.json, plots");
+      "eval", "Decimate clips, rebuild them with each method and measure the error: DIR/errors.csv, clips.csv, summary.json, "
+      "plots");
   sub->add_option("paths", args->paths, "Clip files or directories (searched recursively for every format assimp reads)");
   sub->add_option("--methods", args->methods, "Comma-separated methods, or 'all'")->capture_default_str();
   sub->add_option("--keep-every", args->keep_every, "Comma-separated key spacings N: keys at every Nth frame and the last")
@@ -137,7 +190,35 @@ void add_eval_command(CLI::App& app, int& exit_code) {
   sub->add_flag("--truth", args->truth,
                 "Compare with the analytic motion of synth clips (CLIP.synth, from rotinterp synth) at every "
                 "frame and subframe; a clip without one fails");
-  sub->add_flag("--no-plots", args->no_plots, "Skip the PNG plots");
+  sub->add_option("--anim", args->anim,
+                  "Takes to evaluate: a name or 0-based index, or 'all'; a file of several takes gives one clip per "
+                  "take, named FILE#TAKE (default: the first take)");
+  sub->add_option("--min-frames", args->min_frames,
+                  "Skip clips with fewer frames (listed); spacings N need at least 2N+1 frames in any case")
+      ->capture_default_str()->check(CLI::Range(0LL, 1000000000LL));
+  sub->add_option("--feet", args->feet,
+                  "Comma-separated foot joints for foot skating (default: found by name, CMU/Mixamo/Bandai/Blender rigs)");
+  sub->add_option("--floor", args->floor_m,
+                  "Floor height (Y up) in metres, converted by each clip's unit (default: the lowest foot height)")
+      ->check(CLI::Validator(
+          [](std::string& text) {
+            char* end = nullptr;
+            const double v = std::strtod(text.c_str(), &end);
+            return end != text.c_str() && *end == '\0' && std::isfinite(v) ? std::string() : "must be a finite number";
+          },
+          "METRES"));
+  sub->add_option("--contact-height", args->contact_height_m,
+                  "Foot contact: height above the floor below which a foot may touch it, metres")
+      ->capture_default_str()->check(CLI::PositiveNumber);
+  sub->add_option("--contact-speed", args->contact_speed_mps,
+                  "Foot skating: horizontal speed of a foot in contact above which it slides, m/s")
+      ->capture_default_str()->check(CLI::PositiveNumber);
+  sub->add_option("--per-frame", args->per_frame,
+                  "Also write DIR/per_frame.csv: the angle error of every joint at every sample, for CLIP,METHOD,N "
+                  "(CLIP as in errors.csv)");
+  sub->add_option("--table", args->table, "The results table on stdout: text, md (Markdown) or latex")
+      ->capture_default_str();
+  sub->add_flag("--no-plots", args->no_plots, "Skip the plots");
   sub->add_flag("-q,--quiet", args->quiet, "No progress and no table on stdout");
   sub->callback([args, &exit_code] { exit_code = run(*args); });
 }

@@ -4,10 +4,14 @@
 #include "rotinterp/eval/inputs.h"
 #include "rotinterp/eval/plots.h"
 #include "rotinterp/io/atomic_file.h"
+#include "rotinterp/io/info.h"
 #include "rotinterp/io/read.h"
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <atomic>
+#include <malloc.h>
 #include <chrono>
 #include <ctime>
 #include <deque>
@@ -34,8 +38,12 @@ std::string utc_now() {
   return buf;
 }
 
-RunOptions run_options(const ClipEvalOptions& o, bool truth) {
-  return {o.methods, o.keep_every, o.subframe, o.shell_distance_m, truth};
+RunOptions run_options(const EvalOptions& e) {
+  const ClipEvalOptions& o = e.clip;
+  return {o.methods,          o.keep_every,           o.subframe,
+          o.shell_distance_m, static_cast<bool>(e.truth_for), e.animation,
+          o.min_frames,       o.feet.feet,            o.feet.contact_height_m,
+          o.feet.contact_speed_mps, o.feet.floor_m};
 }
 
 // errors.csv into an unnamed temporary, one clip's rows at a time; committed with
@@ -65,29 +73,36 @@ class CsvWriter {
 // errors.csv as a unit: an interrupt before the end leaves the previous run's files
 // (all of them), after it this run's. Plots of an earlier run that this one does
 // not draw are removed, so no file in DIR is older than the others.
-Status write_outputs(const fs::path& dir, const RunRecord& record, const Summary& summary, bool plots, CsvWriter& csv) {
-  const std::string text = summary_json(record, summary);
+Status write_outputs(const fs::path& dir, const RunRecord& record, const Summary& summary, bool plots, CsvWriter& csv,
+                     const std::string& per_frame = {}) {
   if (!csv.good()) return make_error(csv.failure());
-  AtomicOutput json_out(dir / kSummaryJsonName, TempKind::unnamed);
-  if (Status s = write_to(json_out,
-                          [&](std::ostream& os) -> Status {
-                            os << text;
-                            return Ok{};
-                          });
-      !s)
-    return s;
+  std::vector<std::unique_ptr<AtomicOutput>> texts;
+  auto text_file = [&](const char* name, const std::string& text) -> Status {
+    texts.push_back(std::make_unique<AtomicOutput>(dir / name, TempKind::unnamed));
+    return write_to(*texts.back(), [&](std::ostream& os) -> Status {
+      os << text;
+      return Ok{};
+    });
+  };
+  if (Status s = text_file(kSummaryJsonName, summary_json(record, summary)); !s) return s;
+  if (Status s = text_file(kClipsCsvName, clips_csv(summary)); !s) return s;
+  if (!per_frame.empty())
+    if (Status s = text_file(kPerFrameCsvName, per_frame); !s) return s;
   std::vector<std::unique_ptr<AtomicOutput>> plot_outputs;
   const bool draw = plots && summary.clips > 0;
   if (draw)
     if (Status s = draw_plots(summary, dir, plot_outputs); !s) return s;
-  std::vector<AtomicOutput*> all = {&csv.output(), &json_out};
+  std::vector<AtomicOutput*> all = {&csv.output()};
+  for (auto& t : texts) all.push_back(t.get());
   for (auto& p : plot_outputs) all.push_back(p.get());
   if (Status s = commit_together(all); !s) return s;
-  if (!draw)
-    for (const char* name : {kSpacingPlotName, kWorstClipPlotName}) {
-      std::error_code ec;
-      fs::remove(dir / name, ec);
-    }
+  std::vector<std::string> stale;
+  if (!draw) stale = plot_file_names();
+  if (per_frame.empty()) stale.push_back(kPerFrameCsvName);
+  for (const std::string& name : stale) {
+    std::error_code ec;
+    fs::remove(dir / name, ec);
+  }
   return Ok{};
 }
 
@@ -98,24 +113,29 @@ Status make_dir(const fs::path& dir) {
   return Ok{};
 }
 
-// One clip's outcome: its rows (methods in order) and its failures.
+// One file's outcome: the rows of each of its takes (methods in order), its
+// failures, and its takes evaluated at fewer spacings than asked.
 struct Outcome {
-  std::vector<ErrorRow> rows;
+  std::vector<std::vector<ErrorRow>> takes;
   std::vector<EvalFailure> failures;
-  bool skipped = false;  // no animation in a file found in a directory
+  std::vector<ShortClip> too_short;
+  std::string per_frame;  // per_frame.csv, when the requested clip is here
+  bool skipped = false;   // no animation in a file found in a directory
 };
 
-// One (clip, method) task's result.
+// One (file, method) task's result: rows per take.
 struct MethodOutcome {
-  std::vector<ErrorRow> rows;
+  std::vector<std::vector<ErrorRow>> takes;
   std::optional<EvalFailure> failure;
 };
 
-// A clip in flight: read and prepared once, by the first of its method tasks to
-// run, then shared by the others.
+// A file in flight: read and its takes prepared once, by the first of its method
+// tasks to run, then shared by the others.
 struct ClipSlot {
   std::once_flag prepared;
-  std::shared_ptr<const ClipReference> reference;
+  std::vector<std::shared_ptr<const ClipReference>> takes;
+  std::vector<ShortClip> too_short;
+  std::string per_frame;
   std::optional<EvalFailure> load_failure;
   bool skipped = false;
 };
@@ -142,48 +162,111 @@ Result<std::vector<std::string>> files_of_shard(const EvalOptions& opt) {
   return shard_of(*all, opt.shard_index, opt.shard_count);
 }
 
-// Reads a clip and prepares its reference, into its slot.
-void prepare_clip(const std::string& file, const EvalOptions& opt, ClipSlot& slot) {
-  auto clip = read_clip(file);
-  if (!clip) {
-    // A mesh found next to the clips is not an error. The reader's error kind
-    // says so: no second look at a file that may crash its importer.
-    if (found_in_directory(file, opt.inputs) && clip.error_kind() == ErrorKind::no_animation)
-      slot.skipped = true;
-    else
-      slot.load_failure = EvalFailure{file, clip.error()};
-    return;
-  }
-  ClipEvalOptions copt = opt.clip;
-  if (opt.truth_for) {
-    auto truth = opt.truth_for(file, *clip);
-    if (!truth) {
-      slot.load_failure = EvalFailure{file, truth.error()};
-      return;
+// The takes of `file` that `animation` selects (EvalOptions::animation), each with
+// its clip id, in the order of their ids.
+Result<std::vector<std::pair<std::string, Clip>>> read_takes(const std::string& file, const std::string& animation) {
+  ReadOptions ro;
+  ro.animation = animation == "all" ? "" : animation;
+  auto info = inspect_clip(file, ro);
+  if (!info) return info.failure();
+  const std::vector<AnimationSummary>& anims = info->animations;
+  auto id_of = [&](std::size_t a) {
+    if (anims.size() <= 1) return file;
+    const std::string& name = anims[a].name;
+    const bool unique = std::count_if(anims.begin(), anims.end(), [&](const auto& x) { return x.name == name; }) == 1;
+    return file + "#" + (name.empty() || !unique ? std::to_string(a) : name);
+  };
+  std::vector<std::pair<std::string, Clip>> takes;
+  takes.emplace_back(id_of(info->selected), std::move(info->clip));
+  if (animation == "all")
+    for (std::size_t a = 0; a < anims.size(); ++a) {
+      if (a == info->selected) continue;
+      ro.animation = std::to_string(a);
+      auto clip = read_clip(file, ro);
+      if (!clip) return make_error(id_of(a) + ": " + clip.error());
+      takes.emplace_back(id_of(a), std::move(*clip));
     }
-    copt.truth = std::move(*truth);
-  }
-  auto ref = prepare_reference(*clip, file, copt);
-  if (!ref)
-    slot.load_failure = EvalFailure{file, ref.error()};
-  else
-    slot.reference = std::make_shared<const ClipReference>(std::move(*ref));
+  std::sort(takes.begin(), takes.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  return takes;
 }
 
-// A clip's outcome from its slot and its methods' results.
-Outcome clip_outcome(const ClipSlot& slot, std::vector<MethodOutcome> methods) {
+// The per-frame error series of `R` as CSV: sample, time, whether the sample is a
+// key, then one column of degrees per joint.
+std::string per_frame_csv(const ClipReference& R, const PerFrameRequest& q, const PerFrameErrors& e) {
+  std::string out = "sample,time_s,key";
+  for (const Joint& j : R.skeleton.joints) out += "," + csv_field(j.name);
+  out += '\n';
+  const std::vector<std::size_t> kf = keep_every_indices(R.frames.size(), static_cast<std::size_t>(q.keep_every));
+  std::vector<char> key(R.samples, 0);
+  for (std::size_t k : kf) key[k * R.per_frame] = 1;
+  for (std::size_t m = 0; m < R.samples; ++m) {
+    out += fmt::format("{},{},{}", m, e.times[m], int(key[m]));
+    for (const auto& joint : e.angle) out += fmt::format(",{}", joint[m]);
+    out += '\n';
+  }
+  return out;
+}
+
+// Reads a file's takes and prepares their references, into its slot.
+void prepare_clip(const std::string& file, const EvalOptions& opt, ClipSlot& slot) {
+  auto takes = read_takes(file, opt.animation);
+  if (!takes) {
+    // A mesh found next to the clips is not an error. The reader's error kind
+    // says so: no second look at a file that may crash its importer.
+    if (found_in_directory(file, opt.inputs) && takes.error_kind() == ErrorKind::no_animation)
+      slot.skipped = true;
+    else
+      slot.load_failure = EvalFailure{file, takes.error()};
+    return;
+  }
+  for (auto& [id, clip] : *takes) {
+    ClipEvalOptions copt = opt.clip;
+    if (opt.truth_for) {
+      auto truth = opt.truth_for(file, clip);
+      if (!truth) {
+        slot.load_failure = EvalFailure{file, truth.error()};
+        return;
+      }
+      copt.truth = std::move(*truth);
+    }
+    auto ref = prepare_reference(clip, id, copt);
+    if (!ref) {
+      slot.load_failure = EvalFailure{file, ref.error()};
+      return;
+    }
+    if (auto skip = skipped_spacings(ref->frames.size(), opt.clip); !skip.empty())
+      slot.too_short.push_back({id, ref->frames.size(), std::move(skip)});
+    if (opt.per_frame && opt.per_frame->clip == id) {
+      auto e = per_frame_errors(*ref, opt.per_frame->method, opt.per_frame->keep_every);
+      if (!e) {
+        slot.load_failure = EvalFailure{file, e.error()};
+        return;
+      }
+      slot.per_frame = per_frame_csv(*ref, *opt.per_frame, *e);
+    }
+    slot.takes.push_back(std::make_shared<const ClipReference>(std::move(*ref)));
+  }
+}
+
+// A file's outcome from its slot and its methods' results.
+Outcome clip_outcome(ClipSlot& slot, std::vector<MethodOutcome> methods) {
   Outcome o;
   o.skipped = slot.skipped;
   if (slot.load_failure) {
     o.failures.push_back(*slot.load_failure);
     return o;
   }
+  o.too_short = std::move(slot.too_short);
+  o.per_frame = std::move(slot.per_frame);
   for (MethodOutcome& m : methods)
     if (m.failure) o.failures.push_back(std::move(*m.failure));
-  // Every method is compared on the same clips: a clip where one fails is skipped whole.
-  if (o.failures.empty())
+  // Every method is compared on the same clips: a file where one fails is skipped whole.
+  if (!o.failures.empty()) return o;
+  o.takes.resize(slot.takes.size());
+  for (std::size_t t = 0; t < slot.takes.size(); ++t)
     for (MethodOutcome& m : methods)
-      o.rows.insert(o.rows.end(), std::make_move_iterator(m.rows.begin()), std::make_move_iterator(m.rows.end()));
+      o.takes[t].insert(o.takes[t].end(), std::make_move_iterator(m.takes[t].begin()),
+                        std::make_move_iterator(m.takes[t].end()));
   return o;
 }
 
@@ -210,12 +293,14 @@ void evaluate_in_order(const std::vector<std::string>& files, const EvalOptions&
           MethodOutcome out;
           if (stop) return out;
           std::call_once(slot->prepared, prepare_clip, std::cref(files[i]), std::cref(opt), std::ref(*slot));
-          if (!slot->reference) return out;
-          auto rows = evaluate_method(*slot->reference, opt.clip.methods[m], opt.clip);
-          if (rows)
-            out.rows = std::move(*rows);
-          else
-            out.failure = EvalFailure{files[i], rows.error()};
+          for (const auto& take : slot->takes) {
+            auto rows = evaluate_method(*take, opt.clip.methods[m], opt.clip);
+            if (!rows) {
+              out.failure = EvalFailure{files[i], rows.error()};
+              break;
+            }
+            out.takes.push_back(std::move(*rows));
+          }
           return out;
         }));
       in_flight.push_back(std::move(c));
@@ -237,6 +322,12 @@ std::size_t worker_count(int jobs) {
 
 }  // namespace
 
+void keep_freed_memory_for_reuse() {
+  mallopt(M_MMAP_THRESHOLD, 32 << 20);  // glibc's largest allowed value on 64-bit
+  mallopt(M_TRIM_THRESHOLD, 512 << 20);
+  mallopt(M_TOP_PAD, 16 << 20);
+}
+
 Result<EvalReport> run_eval(const EvalOptions& opt) {
   const auto t0 = std::chrono::steady_clock::now();
   const std::string started = utc_now();
@@ -254,20 +345,27 @@ Result<EvalReport> run_eval(const EvalOptions& opt) {
   if (!csv.good()) return make_error(csv.failure());
   SummaryBuilder builder;
   const std::size_t jobs = worker_count(opt.jobs);
+  std::string per_frame;
   evaluate_in_order(files, opt, jobs, [&](std::size_t i, Outcome o) {
     if (o.skipped) report.skipped.push_back(files[i]);
     for (EvalFailure& f : o.failures) {
       if (opt.on_failure) opt.on_failure(f);
       report.failures.push_back(std::move(f));
     }
-    if (!o.rows.empty()) {
-      csv.add_clip(o.rows, builder);
-      ++report.clips_evaluated;
-    }
+    for (ShortClip& c : o.too_short) report.too_short.push_back(std::move(c));
+    if (!o.per_frame.empty()) per_frame = std::move(o.per_frame);
+    for (const std::vector<ErrorRow>& rows : o.takes)
+      if (!rows.empty()) {
+        csv.add_clip(rows, builder);
+        ++report.clips_evaluated;
+      }
     if (opt.progress) opt.progress(i + 1, files.size());
     return csv.good();
   });
   if (!csv.good()) return make_error(csv.failure());
+  if (opt.per_frame && per_frame.empty())
+    return make_error("--per-frame: no clip '" + opt.per_frame->clip + "' was read (the clip id as in errors.csv: "
+                      "the file's path as found, file#take for a take of a file of several)");
 
   report.summary = builder.finish();
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -275,7 +373,7 @@ Result<EvalReport> run_eval(const EvalOptions& opt) {
   record.version = ROTINTERP_VERSION;
   for (const fs::path& p : opt.inputs) record.inputs.push_back(p.string());
   record.files = files.size();
-  record.options = run_options(opt.clip, static_cast<bool>(opt.truth_for));
+  record.options = run_options(opt);
   record.shard_index = opt.shard_index;
   record.shard_count = opt.shard_count;
   record.jobs = jobs;
@@ -283,7 +381,8 @@ Result<EvalReport> run_eval(const EvalOptions& opt) {
   record.seconds = report.seconds;
   record.failed = report.failures;
   record.skipped = report.skipped;
-  if (Status s = write_outputs(opt.output_dir, record, report.summary, opt.plots, csv); !s)
+  record.too_short = report.too_short;
+  if (Status s = write_outputs(opt.output_dir, record, report.summary, opt.plots, csv, per_frame); !s)
     return make_error(s.error());
   return report;
 }
@@ -362,6 +461,7 @@ Result<EvalReport> merge_eval(const std::vector<fs::path>& dirs, const fs::path&
       if (std::find(merged.inputs.begin(), merged.inputs.end(), p) == merged.inputs.end()) merged.inputs.push_back(p);
     report.skipped.insert(report.skipped.end(), shard->skipped.begin(), shard->skipped.end());
     report.failures.insert(report.failures.end(), shard->failed.begin(), shard->failed.end());
+    report.too_short.insert(report.too_short.end(), shard->too_short.begin(), shard->too_short.end());
     report.files += shard->files;
     merged.seconds += shard->seconds;
     merged.version = shard->version;
@@ -369,6 +469,8 @@ Result<EvalReport> merge_eval(const std::vector<fs::path>& dirs, const fs::path&
   std::stable_sort(report.failures.begin(), report.failures.end(),
                    [](const EvalFailure& a, const EvalFailure& b) { return a.file < b.file; });
   std::sort(report.skipped.begin(), report.skipped.end());
+  std::stable_sort(report.too_short.begin(), report.too_short.end(),
+                   [](const ShortClip& a, const ShortClip& b) { return a.clip < b.clip; });
 
   std::vector<std::unique_ptr<ShardReader>> readers;
   for (const fs::path& d : dirs) {
@@ -405,6 +507,7 @@ Result<EvalReport> merge_eval(const std::vector<fs::path>& dirs, const fs::path&
   merged.merge_seconds = report.seconds;
   merged.failed = report.failures;
   merged.skipped = report.skipped;
+  merged.too_short = report.too_short;
   if (Status s = write_outputs(out_dir, merged, report.summary, plots, csv); !s) return make_error(s.error());
   return report;
 }

@@ -14,18 +14,25 @@ namespace {
 enum Col {
   kClip, kMethod, kKeepEvery, kJoint, kFrames, kMeanDeg, kRmsDeg, kP95Deg, kMaxDeg, kSwingRmsDeg, kTwistRmsDeg,
   kPosRms, kPosMax, kPosRmsPct, kPosMaxPct, kShellRms, kShellMax, kAccRms, kAccRmsRef, kVelJumpMax, kAccJumpMax,
-  kSamples, kHeight, kKind, kColumnCount
+  kSamples, kHeight, kKind, kKeys, kMotionDeg, kContactFrames, kSkateFrames, kSkateSpeed, kContactFramesRef,
+  kSkateFramesRef, kSkateSpeedRef, kColumnCount
 };
 
 constexpr const char* kColumnNames[kColumnCount] = {
     "clip", "method", "keep_every", "joint", "frames", "mean_deg", "rms_deg", "p95_deg", "max_deg",
     "swing_rms_deg", "twist_rms_deg", "pos_rms", "pos_max", "pos_rms_pct", "pos_max_pct", "shell_rms",
     "shell_max", "acc_rms_dps2", "acc_rms_ref_dps2", "vel_jump_max_dps", "acc_jump_max_dps2", "samples",
-    "height", "kind"};
+    "height", "kind", "keys", "motion_deg", "contact_frames", "skate_frames", "skate_speed_mps",
+    "contact_frames_ref", "skate_frames_ref", "skate_speed_ref_mps"};
 
 bool is_joint_only(int c) {
-  return (c >= kMeanDeg && c <= kTwistRmsDeg) || (c >= kShellRms && c <= kAccJumpMax);
+  return (c >= kMeanDeg && c <= kTwistRmsDeg) || (c >= kShellRms && c <= kAccJumpMax) || c == kKeys ||
+         c == kMotionDeg;
 }
+// Foot-contact columns: filled on the rows of foot joints only.
+bool is_foot_only(int c) { return c >= kContactFrames && c <= kSkateSpeedRef; }
+// Whether row `r` leaves column `c` empty.
+bool is_empty_for(const ErrorRow& r, int c) { return (r.end_site && is_joint_only(c)) || (!r.foot && is_foot_only(c)); }
 
 // The measured columns and the ErrorRow fields they hold.
 struct Measured {
@@ -41,17 +48,11 @@ constexpr Measured kMeasured[] = {
     {kShellRms, &ErrorRow::shell_rms},       {kShellMax, &ErrorRow::shell_max},
     {kAccRms, &ErrorRow::acc_rms},           {kAccRmsRef, &ErrorRow::acc_rms_ref},
     {kVelJumpMax, &ErrorRow::vel_jump_max},  {kAccJumpMax, &ErrorRow::acc_jump_max},
-    {kHeight, &ErrorRow::height}};
-
-std::string quote(std::string_view s) {
-  if (s.find_first_of(",\"\r\n") == std::string_view::npos) return std::string(s);
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"') out += '"';
-    out += c;
-  }
-  return out + "\"";
-}
+    {kHeight, &ErrorRow::height},            {kKeys, &ErrorRow::keys},
+    {kMotionDeg, &ErrorRow::motion_deg},     {kContactFrames, &ErrorRow::contact_frames},
+    {kSkateFrames, &ErrorRow::skate_frames}, {kSkateSpeed, &ErrorRow::skate_speed},
+    {kContactFramesRef, &ErrorRow::contact_frames_ref}, {kSkateFramesRef, &ErrorRow::skate_frames_ref},
+    {kSkateSpeedRef, &ErrorRow::skate_speed_ref}};
 
 // Shortest text that reads back as the same double; finite by construction.
 std::string number(double v) { return fmt::format("{}", std::isfinite(v) ? v : 0.0); }
@@ -71,7 +72,8 @@ Result<double> to_double(const std::string& s, const char* column) {
 const std::vector<ErrorValueColumn>& error_value_columns() {
   static const std::vector<ErrorValueColumn> columns = [] {
     std::vector<ErrorValueColumn> v;
-    for (const Measured& m : kMeasured) v.push_back({kColumnNames[m.col], m.field, is_joint_only(m.col)});
+    for (const Measured& m : kMeasured)
+      v.push_back({kColumnNames[m.col], m.field, is_joint_only(m.col), is_foot_only(m.col)});
     return v;
   }();
   return columns;
@@ -86,14 +88,28 @@ std::string error_csv_header() {
 std::string format_error_row(const ErrorRow& r) {
   double values[kColumnCount] = {};
   for (const Measured& m : kMeasured) values[m.col] = r.*m.field;
-  std::string line = quote(r.clip) + "," + quote(r.method) + "," + std::to_string(r.keep_every) + "," +
-                     quote(r.joint) + "," + std::to_string(r.frames);
+  std::string line = csv_field(r.clip) + "," + csv_field(r.method) + "," + std::to_string(r.keep_every) + "," +
+                     csv_field(r.joint) + "," + std::to_string(r.frames);
   for (int c = kMeanDeg; c < kSamples; ++c) {
     line += ',';
-    if (!(r.end_site && is_joint_only(c))) line += number(values[c]);
+    if (!is_empty_for(r, c)) line += number(values[c]);
   }
   line += "," + std::to_string(r.samples) + "," + number(r.height) + "," + (r.end_site ? "end_site" : "joint");
+  for (int c = kKind + 1; c < kColumnCount; ++c) {
+    line += ',';
+    if (!is_empty_for(r, c)) line += number(values[c]);
+  }
   return line;
+}
+
+std::string csv_field(std::string_view s) {
+  if (s.find_first_of(",\"\r\n") == std::string_view::npos) return std::string(s);
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"') out += '"';
+    out += c;
+  }
+  return out + "\"";
 }
 
 Result<std::vector<std::string>> split_csv_line(std::string_view line) {
@@ -153,8 +169,9 @@ Result<ErrorRow> ErrorRowParser::parse(std::string_view line) const {
   const std::string& kind = field(kKind);
   if (kind != "joint" && kind != "end_site") return make_error("kind is '" + kind + "', not joint or end_site");
   r.end_site = kind == "end_site";
+  r.foot = !r.end_site && !field(kContactFrames).empty();
   for (const Measured& m : kMeasured) {
-    if (r.end_site && is_joint_only(m.col)) continue;
+    if (is_empty_for(r, m.col)) continue;
     auto v = to_double(field(m.col), kColumnNames[m.col]);
     if (!v) return make_error(v.error());
     r.*m.field = *v;

@@ -22,6 +22,13 @@ constexpr double kSubframeSnap = 1e-9;
 
 }  // namespace
 
+std::vector<int> skipped_spacings(std::size_t frames, const ClipEvalOptions& options) {
+  std::vector<int> out;
+  for (int n : options.keep_every)
+    if (frames < options.min_frames || frames < 2 * static_cast<std::size_t>(std::max(n, 1)) + 1) out.push_back(n);
+  return out;
+}
+
 double sample_time(const ClipReference& R, std::size_t m) {
   const std::size_t per = R.per_frame, k = m / per, i = m % per;
   return i == 0 ? R.frames[k]
@@ -249,6 +256,39 @@ Result<ClipReference> prepare_reference(const Clip& clip, const std::string& cli
   if (!(R.height > 0.0)) R.height = 1.0;
   R.shell_distance = metres_in_clip_units(clip, options.shell_distance_m);
   R.bone_axis = bone_axes(skel);
+
+  // ---- the source's keys and range of motion, per joint ----
+  R.keys.assign(nj, 0.0);
+  R.motion_deg.assign(nj, 0.0);
+  for (std::size_t j = 0; j < nj; ++j) {
+    R.keys[j] = static_cast<double>(clip.rotations[j].keys.size());
+    for (std::size_t k = 1; k < nf; ++k)
+      R.motion_deg[j] = std::max(R.motion_deg[j], angular_distance(R.original[j][0], R.original[j][k]) * kRadToDeg);
+  }
+
+  // ---- foot contact of the reference, at its frames ----
+  if (options.feet.feet.empty()) {
+    R.feet = find_feet(skel);
+  } else {
+    auto feet = feet_by_name(skel, options.feet.feet);
+    if (!feet) return make_error(clip_id + ": " + feet.error());
+    R.feet = std::move(*feet);
+  }
+  R.metres_per_unit = metres_per_unit(clip, R.height, R.unit_estimated);
+  if (options.feet.floor_m) {
+    R.floor = *options.feet.floor_m / R.metres_per_unit;
+  } else if (!R.feet.empty() && nf > 0) {
+    R.floor = INFINITY;
+    for (std::size_t f : R.feet)
+      for (std::size_t k = 0; k < nf; ++k) R.floor = std::min(R.floor, R.world[k].position[f].y());
+  }
+  {
+    std::vector<Vec3> at(nf);
+    for (std::size_t f : R.feet) {
+      for (std::size_t k = 0; k < nf; ++k) at[k] = R.world[k].position[f];
+      R.foot_ref.push_back(foot_contact(at.data(), R.frames.data(), nf, R.floor, R.metres_per_unit, options.feet));
+    }
+  }
   R.reference_acc_rms.assign(nj, 0.0);
   if (per == 1) {
     for (std::size_t j = 0; j < nj; ++j)
@@ -294,7 +334,11 @@ Result<std::vector<ErrorRow>> evaluate_method(const ClipReference& R, const std:
   std::vector<Vec3> local_t(nj);
   WorldPose test_world;
   Block block;
+  const std::vector<int> skipped = skipped_spacings(nf, options);
+  const std::size_t nfeet = R.feet.size();
+  std::vector<std::vector<Vec3>> feet_at(nfeet, std::vector<Vec3>(nf));  // [foot][frame], rebuilt
   for (int keep : options.keep_every) {
+    if (std::find(skipped.begin(), skipped.end(), keep) != skipped.end()) continue;
     const std::vector<std::size_t> kf = keep_every_indices(nf, static_cast<std::size_t>(keep));
     std::vector<RotationTrack> tracks(nj);
     std::vector<std::unique_ptr<Interpolator>> curves(nj);
@@ -347,12 +391,17 @@ Result<std::vector<ErrorRow>> evaluate_method(const ClipReference& R, const std:
           local_t[j] = block.translation(R, j)[m];
           equal = equal && local_r[j].coeffs() == block.rotation(R, j)[m].coeffs();
         }
+        const bool frame = (m0 + m) % R.per_frame == 0;
         if (equal) {
           accumulate_equal_poses(pose);
+          if (frame)
+            for (std::size_t f = 0; f < nfeet; ++f) feet_at[f][(m0 + m) / R.per_frame] = block.world(R, m).position[R.feet[f]];
           continue;
         }
         forward_kinematics(skel, local_r, local_t, test_world);
         accumulate_pose_error(block.world(R, m), test_world, R.shell_distance, pose);
+        if (frame)
+          for (std::size_t f = 0; f < nfeet; ++f) feet_at[f][(m0 + m) / R.per_frame] = test_world.position[R.feet[f]];
       }
     }
     for (std::size_t j = 0; j < nj; ++j) {
@@ -409,7 +458,22 @@ Result<std::vector<ErrorRow>> evaluate_method(const ClipReference& R, const std:
       r.vel_jump_max = jumps.velocity * kRadToDeg;
       r.acc_jump_max = jumps.acceleration * kRadToDeg;
       r.height = R.height;
+      r.keys = R.keys[j];
+      r.motion_deg = R.motion_deg[j];
       rows.push_back(std::move(r));
+    }
+    ErrorRow* const joint_rows = rows.data() + rows.size() - nj;
+    for (std::size_t f = 0; f < nfeet; ++f) {
+      const FootContact c = foot_contact(feet_at[f].data(), R.frames.data(), nf, R.floor, R.metres_per_unit, options.feet);
+      const FootContact& ref = R.foot_ref[f];
+      ErrorRow& r = joint_rows[R.feet[f]];
+      r.foot = true;
+      r.contact_frames = static_cast<double>(c.contact);
+      r.skate_frames = static_cast<double>(c.skating);
+      r.skate_speed = c.mean_speed();
+      r.contact_frames_ref = static_cast<double>(ref.contact);
+      r.skate_frames_ref = static_cast<double>(ref.skating);
+      r.skate_speed_ref = ref.mean_speed();
     }
     for (std::size_t e = 0; e < ne; ++e) {
       ErrorRow r;
@@ -430,6 +494,32 @@ Result<std::vector<ErrorRow>> evaluate_method(const ClipReference& R, const std:
     }
   }
   return rows;
+}
+
+Result<PerFrameErrors> per_frame_errors(const ClipReference& R, const std::string& method, int keep) {
+  const std::size_t nj = R.skeleton.joints.size(), nf = R.frames.size(), ns = R.samples;
+  const std::vector<std::size_t> kf = keep_every_indices(nf, static_cast<std::size_t>(std::max(keep, 1)));
+  PerFrameErrors out;
+  out.angle.assign(nj, std::vector<double>(ns));
+  out.times.resize(ns);
+  for (std::size_t m = 0; m < ns; ++m) out.times[m] = sample_time(R, m);
+  std::vector<Quat> test;
+  Block block;
+  for (std::size_t j = 0; j < nj; ++j) {
+    auto curve = make_interpolator(method, decimated_track(R.frames, R.original[j], kf));
+    if (!curve)
+      return make_error(R.clip_id + ": joint '" + R.skeleton.joints[j].name + "', method " + method + ": " + curve.error());
+    const std::size_t bs = block_samples(R);
+    for (std::size_t m0 = 0; m0 < ns; m0 += bs) {
+      const std::size_t n = std::min(bs, ns - m0);
+      block.fill(R, m0, n, false, j);
+      test.resize(n);
+      (*curve)->evaluate(block.times().data(), n, test.data());
+      const Quat* ref = block.rotation(R, j);
+      for (std::size_t m = 0; m < n; ++m) out.angle[j][m0 + m] = angular_distance(ref[m], test[m]) * kRadToDeg;
+    }
+  }
+  return out;
 }
 
 Result<std::vector<ErrorRow>> evaluate_clip(const Clip& clip, const std::string& clip_id,

@@ -24,10 +24,92 @@ constexpr int kText = 1, kGrid = 2, kFirstSeries = 3;
 constexpr int kPalette[][3] = {{0, 114, 178}, {213, 94, 0}, {0, 158, 115}, {204, 121, 167},
                                {230, 159, 0}, {86, 180, 233}, {120, 120, 120}, {0, 0, 0}};
 constexpr int kPaletteSize = sizeof(kPalette) / sizeof(kPalette[0]);
-// Smallest angle drawn on a log axis (degrees); exact zeros are drawn there.
-constexpr double kLogFloorDeg = 1e-6;
+// Angles below this (degrees) are zero to round-off: drawn as zeros on a log axis
+// (a method that reproduces a still clip gives 1e-14°, which would stretch the axis
+// over fifteen decades).
+constexpr double kZeroDeg = 1e-9;
 
 int series_colour(std::size_t i) { return kFirstSeries + static_cast<int>(i % kPaletteSize); }
+// Per method: a filled marker, its open form (for zeros on a log axis), a dash pattern.
+constexpr const char* kMarker[] = {"●", "■", "▲", "◆", "▼", "★", "✚", "✖"};
+constexpr const char* kOpenMarker[] = {"○", "□", "△", "◇", "▽", "☆", "✚", "✖"};
+constexpr int kMarkers = sizeof(kMarker) / sizeof(kMarker[0]);
+const char* marker(std::size_t i, bool open = false) { return (open ? kOpenMarker : kMarker)[i % kMarkers]; }
+int dash(std::size_t i) { return 1 + static_cast<int>(i % 8); }  // PLplot's eight line styles
+// Character heights relative to PLplot's default: text, and the markers.
+constexpr double kTextScale = 0.8, kMarkerScale = 0.6;
+
+// The y range of a log₁₀ axis over the positive values (decades, `headroom` decades
+// above for a legend inside the frame); `any` false when none is positive.
+struct LogRange {
+  bool log = false;
+  bool any = false;
+  double lo = 0, hi = 1;
+};
+LogRange log_range(const std::vector<double>& values, double headroom) {
+  LogRange r;
+  r.log = true;
+  double lo = INFINITY, hi = -INFINITY;
+  for (double v : values)
+    if (v > kZeroDeg && std::isfinite(v)) lo = std::min(lo, std::log10(v)), hi = std::max(hi, std::log10(v));
+  r.any = std::isfinite(lo);
+  if (!r.any) lo = 0, hi = 1;
+  r.lo = std::floor(lo);
+  r.hi = std::max(std::ceil(hi), r.lo + 1) + headroom;
+  return r;
+}
+
+// Offset of method `i` of `n` around its x value, `dx` apart.
+double offset(std::size_t i, std::size_t n, double dx) {
+  return (static_cast<double>(i) - 0.5 * static_cast<double>(n - 1)) * dx;
+}
+
+// One method's points (and, with `lines`, their line in its dash pattern). On a log
+// axis a zero (below kZeroDeg) is an open marker on the bottom edge and breaks the line.
+void draw_series(std::size_t mi, const std::vector<double>& x, const std::vector<double>& y, const LogRange& yr,
+                 bool lines) {
+  plcol0(series_colour(mi));
+  plwidth(2.0);
+  pllsty(dash(mi));
+  std::vector<PLFLT> px, py;
+  auto flush = [&] {
+    if (lines && px.size() > 1) plline(static_cast<PLINT>(px.size()), px.data(), py.data());
+    plschr(0.0, kMarkerScale);
+    if (!px.empty()) plstring(static_cast<PLINT>(px.size()), px.data(), py.data(), marker(mi));
+    plschr(0.0, kTextScale);
+    px.clear(), py.clear();
+  };
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (!yr.log) {
+      px.push_back(x[i]), py.push_back(y[i]);
+      continue;
+    }
+    if (y[i] > kZeroDeg && std::isfinite(y[i])) {
+      px.push_back(x[i]), py.push_back(std::log10(y[i]));
+      continue;
+    }
+    flush();
+    PLFLT zx = x[i], zy = yr.lo;
+    plschr(0.0, kMarkerScale);
+    plstring(1, &zx, &zy, marker(mi, true));
+    plschr(0.0, kTextScale);
+  }
+  flush();
+  pllsty(1);
+  plwidth(1.0);
+}
+
+void log_labels(PLINT axis, PLFLT value, char* label, PLINT length, PLPointer);
+
+// Grid and axes of a plot with log₂ x and log₁₀ y.
+void log_axes(bool log_x) {
+  plcol0(kGrid);
+  plbox("g", 1.0, 0, "g", 1.0, 0);
+  plcol0(kText);
+  plslabelfunc(log_labels, nullptr);
+  plbox(log_x ? "bcnto" : "bcnt", 1.0, 0, "bcnstlov", 1.0, 0);
+  plslabelfunc(nullptr, nullptr);
+}
 
 // PLplot writes the PNG through a stdio stream of ours (plsfile) whose writes go
 // to an AtomicOutput, so each one is checked (PLplot and cairo ignore failed
@@ -49,9 +131,9 @@ int sink_close(void* cookie) {
   return 0;
 }
 
-// Opens a pngcairo page of w × h pixels writing to `file`.
-void begin_page(FILE* file, int w, int h) {
-  plsdev("pngcairo");
+// Opens a page of w × h pixels on `device` (pngcairo, svgcairo) writing to `file`.
+void begin_page(FILE* file, const char* device, int w, int h) {
+  plsdev(device);
   plsfile(file);
   plspage(0.0, 0.0, w, h, 0, 0);
   plscmap0n(kFirstSeries + kPaletteSize);
@@ -61,7 +143,7 @@ void begin_page(FILE* file, int w, int h) {
   for (int i = 0; i < kPaletteSize; ++i) plscol0(kFirstSeries + i, kPalette[i][0], kPalette[i][1], kPalette[i][2]);
   plinit();
   pladv(0);
-  plschr(0.0, 1.1);
+  plschr(0.0, kTextScale);
 }
 
 // x axis labels 2ᵏ for a log₂ axis; y axis labels 10ᵏ for a log₁₀ axis.
@@ -70,29 +152,34 @@ void log_labels(PLINT axis, PLFLT value, char* label, PLINT length, PLPointer) {
   std::snprintf(label, static_cast<std::size_t>(length), "%g", v);
 }
 
-void legend(const std::vector<std::string>& names, const std::vector<int>& styles, bool symbols) {
+// The methods' legend, inside the frame at `position` (PL_POSITION_*), in `columns` columns.
+void legend(const std::vector<std::string>& names, PLINT position, int columns) {
   const std::size_t n = names.size();
-  std::vector<PLINT> opt(n, PL_LEGEND_LINE | (symbols ? PL_LEGEND_SYMBOL : 0)), colours(n), lstyle(n), nsym(n, 1);
-  std::vector<PLFLT> widths(n, 2.0), sscale(n, 1.0);
-  std::vector<const char*> text(n), sym(n, "#(728)");
+  std::vector<PLINT> opt(n, PL_LEGEND_LINE | PL_LEGEND_SYMBOL), colours(n), lstyle(n), nsym(n, 1);
+  std::vector<PLFLT> widths(n, 2.0), sscale(n, 0.8);
+  std::vector<const char*> text(n), sym(n);
   for (std::size_t i = 0; i < n; ++i) {
     colours[i] = series_colour(i);
-    lstyle[i] = styles[i];
+    lstyle[i] = dash(i);
     text[i] = names[i].c_str();
+    sym[i] = marker(i);
   }
   std::vector<PLINT> text_colours(n, kText);
+  const PLINT ncol = std::max(1, columns), nrow = static_cast<PLINT>((static_cast<int>(n) + ncol - 1) / ncol);
   PLFLT w = 0, h = 0;
-  pllegend(&w, &h, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX, PL_POSITION_RIGHT | PL_POSITION_OUTSIDE, 0.02, 0.0,
-           0.08, 0, kText, 1, static_cast<PLINT>(n), 1, static_cast<PLINT>(n), opt.data(), 1.0, 0.9, 2.0, 0.0,
-           text_colours.data(), text.data(), nullptr, nullptr, nullptr, nullptr, colours.data(), lstyle.data(),
-           widths.data(), colours.data(), sscale.data(), nsym.data(), sym.data());
+  pllegend(&w, &h, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX | (ncol > 1 ? PL_LEGEND_ROW_MAJOR : 0), position, 0.01,
+           0.01, ncol > 1 ? 0.04 : 0.1, 0, kText, 1, nrow, ncol, static_cast<PLINT>(n), opt.data(), 0.8, 0.75, 1.8,
+           0.0, text_colours.data(), text.data(), nullptr, nullptr,
+           nullptr, nullptr, colours.data(), lstyle.data(), widths.data(), colours.data(), sscale.data(), nsym.data(),
+           sym.data());
 }
 
-// Right edge of the plot viewport that leaves room for the legend's longest name.
-double viewport_right(const std::vector<std::string>& names) {
-  std::size_t longest = 0;
-  for (const std::string& n : names) longest = std::max(longest, n.size());
-  return std::clamp(0.88 - 0.0115 * static_cast<double>(longest), 0.55, 0.82);
+// The methods in order of first appearance.
+std::vector<std::string> method_names(const Summary& s) {
+  std::vector<std::string> methods;
+  for (const SummaryEntry& e : s.entries)
+    if (std::find(methods.begin(), methods.end(), e.method) == methods.end()) methods.push_back(e.method);
+  return methods;
 }
 
 // `text` cut to its last `max_chars` characters (UTF-8 safe), with a leading ellipsis.
@@ -103,12 +190,20 @@ std::string tail(const std::string& text, std::size_t max_chars) {
   return "…" + text.substr(start);
 }
 
+// Names written vertically under the slots 0 … span − 1 of the x axis.
+void joint_labels(const std::vector<std::string>& names, double span, double scale = 0.65) {
+  plschr(0.0, names.size() > 40 ? std::min(scale, 0.5) : scale);
+  for (std::size_t i = 0; i < names.size(); ++i)
+    plmtex("bv", 0.7, (static_cast<double>(i) + 0.5) / span, 1.0, names[i].c_str());
+  plschr(0.0, kTextScale);
+}
+
 // A page drawn into `out` (finished, not committed, by end()).
 class Page {
  public:
-  Page(AtomicOutput& out, int w, int h) : sink_{&out} {
+  Page(AtomicOutput& out, const char* device, int w, int h) : sink_{&out} {
     file_ = fopencookie(&sink_, "w", cookie_io_functions_t{nullptr, sink_write, nullptr, sink_close});
-    if (file_) begin_page(file_, w, h);
+    if (file_) begin_page(file_, device, w, h);
   }
   Page(const Page&) = delete;
   Page& operator=(const Page&) = delete;
@@ -138,58 +233,54 @@ class Page {
   bool ended_ = false;
 };
 
-Status spacing_plot(const Summary& s, AtomicOutput& out) {
-  std::vector<std::string> methods;
-  for (const SummaryEntry& e : s.entries)
-    if (std::find(methods.begin(), methods.end(), e.method) == methods.end()) methods.push_back(e.method);
-  double xmin = INFINITY, xmax = -INFINITY, ymin = INFINITY, ymax = -INFINITY;
+Status spacing_plot(const Summary& s) {
+  const std::vector<std::string> methods = method_names(s);
+  struct Panel {
+    const char* title;
+    double SummaryEntry::*value;
+  };
+  const Panel panels[] = {{"RMS, all samples", &SummaryEntry::rms_deg},
+                          {"median over clips of the clip RMS", &SummaryEntry::clip_rms_median_deg},
+                          {"max", &SummaryEntry::max_deg}};
+  double xmin = INFINITY, xmax = -INFINITY;
   for (const SummaryEntry& e : s.entries) {
     const double x = std::log2(std::max(1, e.keep_every));
     xmin = std::min(xmin, x), xmax = std::max(xmax, x);
-    for (double v : {e.rms_deg, e.max_deg}) {
-      const double y = std::log10(std::max(v, kLogFloorDeg));
-      ymin = std::min(ymin, y), ymax = std::max(ymax, y);
-    }
   }
-  if (!std::isfinite(xmin)) xmin = 0, xmax = 1, ymin = 0, ymax = 1;
-  ymin = std::floor(ymin), ymax = std::ceil(ymax);
-  if (ymax <= ymin) ymax = ymin + 1;
-
-  Page page(out, 1200, 800);
-  plvpor(0.12, viewport_right(methods), 0.11, 0.90);
-  plwind(xmin - 0.25, xmax + 0.25, ymin, ymax);
-  plcol0(kGrid);
-  plbox("g", 1.0, 0, "g", 1.0, 0);
-  plcol0(kText);
-  plslabelfunc(log_labels, nullptr);
-  plbox("bcnto", 1.0, 0, "bcnstlov", 1.0, 0);
-  plslabelfunc(nullptr, nullptr);
-  pllab("keys every N frames (N, log scale)", "angle error (degrees, log scale)", "");
-  plmtex("t", 2.0, 0.5, 0.5,
-         fmt::format("Angular error vs key spacing — {} clip{}; solid RMS, dashed max", s.clips, s.clips == 1 ? "" : "s")
-             .c_str());
-  for (std::size_t mi = 0; mi < methods.size(); ++mi) {
-    for (int which = 0; which < 2; ++which) {
-      std::vector<PLFLT> x, y;
-      for (const SummaryEntry& e : s.entries) {
-        if (e.method != methods[mi]) continue;
-        x.push_back(std::log2(std::max(1, e.keep_every)));
-        y.push_back(std::log10(std::max(which == 0 ? e.rms_deg : e.max_deg, kLogFloorDeg)));
-      }
-      plcol0(series_colour(mi));
-      plwidth(2.0);
-      pllsty(which == 0 ? 1 : 2);
-      plline(static_cast<PLINT>(x.size()), x.data(), y.data());
-      plstring(static_cast<PLINT>(x.size()), x.data(), y.data(), "#(728)");
+  if (!std::isfinite(xmin)) xmin = 0, xmax = 1;
+  const double dx = 0.05;  // sideways offset between methods, log₂ units
+  const double half = dx * 0.5 * static_cast<double>(methods.size());
+  plvpor(0.07, 0.955, 0.12, 0.86);
+  plmtex("t", 3.2, 0.5, 0.5,
+         fmt::format("Angular error vs key spacing — {} clip{}", s.clips, s.clips == 1 ? "" : "s").c_str());
+  plmtex("b", 3.2, 0.5, 0.5, "keys every N frames (log scale)");
+  for (int p = 0; p < 3; ++p) {
+    std::vector<double> values;
+    for (const SummaryEntry& e : s.entries) values.push_back(e.*panels[p].value);
+    LogRange yr = log_range(values, 0.0);
+    if (p == 0) yr.hi = yr.lo + (yr.hi - yr.lo) / 0.55;  // the top 45 % for the legend
+    const double left = 0.08 + 0.31 * p;
+    plvpor(left, left + 0.255, 0.12, 0.86);
+    plwind(xmin - 0.3 - half, xmax + 0.3 + half, yr.lo, yr.hi);
+    log_axes(true);
+    plmtex("t", 1.0, 0.5, 0.5, panels[p].title);
+    if (p == 0) plmtex("l", 5.0, 0.5, 0.5, "angle error (degrees, log scale)");
+    for (std::size_t mi = 0; mi < methods.size(); ++mi) {
+      std::vector<double> x, y;
+      for (const SummaryEntry& e : s.entries)
+        if (e.method == methods[mi]) {
+          x.push_back(std::log2(std::max(1, e.keep_every)) + offset(mi, methods.size(), dx));
+          y.push_back(e.*panels[p].value);
+        }
+      draw_series(mi, x, y, yr, true);
     }
+    if (!yr.any) plmtex("t", -4.0, 0.5, 0.5, "all zero");
+    if (p == 0) legend(methods, PL_POSITION_INSIDE | PL_POSITION_TOP | PL_POSITION_LEFT, 1);
   }
-  pllsty(1);
-  plwidth(1.0);
-  legend(methods, std::vector<int>(methods.size(), 1), true);
-  return page.end();
+  return Ok{};
 }
 
-Status worst_clip_plot(const Summary& s, AtomicOutput& out) {
+Status worst_clip_plot(const Summary& s) {
   std::vector<std::string> methods, joints;
   std::map<std::pair<std::string, std::string>, double> rms;
   double ymax = 0;
@@ -200,11 +291,25 @@ Status worst_clip_plot(const Summary& s, AtomicOutput& out) {
     ymax = std::max(ymax, r.rms_deg);
   }
   if (!(ymax > 0)) ymax = 1;
+  // Joints with an error in some method, at most kMaxJoints of them (the largest), in skeleton order.
+  std::vector<std::pair<double, std::size_t>> largest;
+  for (std::size_t i = 0; i < joints.size(); ++i) {
+    double most = 0;
+    for (const std::string& m : methods)
+      if (auto it = rms.find({m, joints[i]}); it != rms.end()) most = std::max(most, it->second);
+    if (most > kZeroDeg) largest.push_back({most, i});
+  }
+  constexpr std::size_t kMaxJoints = 60;
+  const std::size_t all_joints = joints.size();
+  std::stable_sort(largest.begin(), largest.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  if (largest.size() > kMaxJoints) largest.resize(kMaxJoints);
+  std::sort(largest.begin(), largest.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
+  std::vector<std::string> shown;
+  for (const auto& l : largest) shown.push_back(joints[l.second]);
+  joints = std::move(shown);
   const double xmax = std::max<double>(1, static_cast<double>(joints.size()) - 1);
-
-  Page page(out, 1400, 850);
-  plvpor(0.09, viewport_right(methods), 0.26, 0.86);
-  plwind(-0.5, xmax + 0.5, 0, ymax * 1.08);
+  plvpor(0.08, 0.97, 0.32, 0.86);
+  plwind(-0.5, xmax + 0.5, 0, ymax * 1.25);  // headroom for the legend inside the frame
   plcol0(kGrid);
   plbox("", 0, 0, "g", 0, 0);
   plcol0(kText);
@@ -212,39 +317,121 @@ Status worst_clip_plot(const Summary& s, AtomicOutput& out) {
   plmtex("l", 3.5, 0.5, 0.5, "RMS angle error (degrees)");
   plmtex("t", 2.6, 0.5, 0.5,
          fmt::format("Per-joint RMS error of the worst clip, keys every {} frames", s.worst_keep_every).c_str());
-  plschr(0.0, 0.9);
-  plmtex("t", 1.2, 0.5, 0.5, tail(s.worst_clip, 64).c_str());
-  plschr(0.0, joints.size() > 40 ? 0.65 : 0.85);
-  const double span = xmax + 1.0;
-  for (std::size_t i = 0; i < joints.size(); ++i)
-    plmtex("bv", 0.7, (static_cast<double>(i) + 0.5) / span, 1.0, joints[i].c_str());
-  plschr(0.0, 1.1);
+  plschr(0.0, 0.7);
+  const std::string shown_note =
+      joints.size() == all_joints
+          ? std::string()
+          : fmt::format(" — {} of its {} joints: {}", joints.size(), all_joints,
+                        all_joints - joints.size() > 0 && joints.size() < kMaxJoints ? "the others have no error"
+                                                                                     : "those with the largest error");
+  plmtex("t", 1.2, 0.5, 0.5, (tail(s.worst_clip, 80) + shown_note).c_str());
+  plschr(0.0, kTextScale);
+  std::vector<std::string> labels;
+  for (const std::string& j : joints) labels.push_back(tail(j, 24));
+  joint_labels(labels, xmax + 1.0);
+  const double dx = std::min(0.8 / static_cast<double>(std::max<std::size_t>(methods.size(), 1)), 0.12);
   for (std::size_t mi = 0; mi < methods.size(); ++mi) {
-    std::vector<PLFLT> x, y;
+    std::vector<double> x, y;
     for (std::size_t i = 0; i < joints.size(); ++i) {
       auto it = rms.find({methods[mi], joints[i]});
       if (it == rms.end()) continue;
-      x.push_back(static_cast<double>(i));
+      x.push_back(static_cast<double>(i) + offset(mi, methods.size(), dx));
       y.push_back(it->second);
     }
-    plcol0(series_colour(mi));
-    plwidth(2.0);
-    plline(static_cast<PLINT>(x.size()), x.data(), y.data());
-    plstring(static_cast<PLINT>(x.size()), x.data(), y.data(), "#(728)");
+    draw_series(mi, x, y, LogRange{}, joints.size() <= 40);
   }
-  plwidth(1.0);
-  legend(methods, std::vector<int>(methods.size(), 1), true);
-  return page.end();
+  legend(methods, PL_POSITION_INSIDE | PL_POSITION_TOP, 4);
+  return Ok{};
+}
+
+Status clips_plot(const Summary& s) {
+  // Each clip at the largest spacing it was evaluated at.
+  std::vector<std::string> methods = method_names(s), clips;
+  std::map<std::string, int> largest;
+  for (const ClipResult& c : s.clip_results) {
+    if (!largest.count(c.clip)) clips.push_back(c.clip);
+    largest[c.clip] = std::max(largest[c.clip], c.keep_every);
+  }
+  std::vector<double> values;
+  for (const ClipResult& c : s.clip_results)
+    if (c.keep_every == largest[c.clip]) values.push_back(c.rms_deg);
+  const LogRange yr = log_range(values, 1.2);
+  const double xmax = std::max<double>(1, static_cast<double>(clips.size()) - 1);
+  plvpor(0.08, 0.97, 0.40, 0.86);
+  plwind(-0.5, xmax + 0.5, yr.lo, yr.hi);
+  plcol0(kGrid);
+  plbox("", 0, 0, "g", 1.0, 0);
+  plcol0(kText);
+  plslabelfunc(log_labels, nullptr);
+  plbox("bct", 1.0, 1, "bcnstlov", 1.0, 0);
+  plslabelfunc(nullptr, nullptr);
+  plmtex("l", 5.0, 0.5, 0.5, "clip RMS angle error (degrees, log scale)");
+  plmtex("t", 2.6, 0.5, 0.5, "RMS error of each clip at the largest spacing it was evaluated at (N in the label)");
+  plschr(0.0, 0.7);
+  plmtex("t", 1.2, 0.5, 0.5, "open markers on the bottom edge: 0 to round-off (below 1e-9°: a still clip, or one every method reproduces)");
+  plschr(0.0, kTextScale);
+  // Labels without the directory all clips share.
+  std::size_t common = clips.empty() ? 0 : clips.front().size();
+  for (const std::string& c : clips) {
+    std::size_t k = 0;
+    while (k < common && k < c.size() && c[k] == clips.front()[k]) ++k;
+    common = k;
+  }
+  if (clips.size() == 1) common = clips.front().size();
+  const std::size_t slash = common == 0 ? std::string::npos : clips.front().rfind('/', common - 1);
+  common = slash == std::string::npos ? 0 : slash + 1;
+  std::vector<std::string> labels;
+  for (const std::string& c : clips) labels.push_back(fmt::format("{} (N={})", tail(c.substr(common), 30), largest[c]));
+  joint_labels(labels, xmax + 1.0, 0.55);
+  const double dx = std::min(0.8 / static_cast<double>(std::max<std::size_t>(methods.size(), 1)), 0.12);
+  for (std::size_t mi = 0; mi < methods.size(); ++mi) {
+    std::vector<double> x, y;
+    for (std::size_t i = 0; i < clips.size(); ++i)
+      for (const ClipResult& c : s.clip_results)
+        if (c.clip == clips[i] && c.method == methods[mi] && c.keep_every == largest[c.clip]) {
+          x.push_back(static_cast<double>(i) + offset(mi, methods.size(), dx));
+          y.push_back(c.rms_deg);
+        }
+    draw_series(mi, x, y, yr, false);
+  }
+  legend(methods, PL_POSITION_INSIDE | PL_POSITION_TOP, 4);
+  return Ok{};
+}
+
+struct PlotKind {
+  const char* png_name;
+  int width, height;
+  Status (*draw)(const Summary&);
+};
+constexpr PlotKind kPlots[] = {{kSpacingPlotName, 1500, 700, spacing_plot},
+                               {kWorstClipPlotName, 1400, 850, worst_clip_plot},
+                               {kClipsPlotName, 1400, 1000, clips_plot}};
+
+std::string svg_name(const char* png_name) {
+  const std::string n = png_name;
+  return n.substr(0, n.size() - 4) + ".svg";
 }
 
 }  // namespace
 
+std::vector<std::string> plot_file_names() {
+  std::vector<std::string> names;
+  for (const PlotKind& k : kPlots) names.push_back(k.png_name), names.push_back(svg_name(k.png_name));
+  return names;
+}
+
 Status draw_plots(const Summary& summary, const std::filesystem::path& dir,
                   std::vector<std::unique_ptr<AtomicOutput>>& outputs) {
-  outputs.push_back(std::make_unique<AtomicOutput>(dir / kSpacingPlotName, TempKind::unnamed));
-  if (Status st = spacing_plot(summary, *outputs.back()); !st) return st;
-  outputs.push_back(std::make_unique<AtomicOutput>(dir / kWorstClipPlotName, TempKind::unnamed));
-  return worst_clip_plot(summary, *outputs.back());
+  for (const PlotKind& k : kPlots)
+    for (const char* device : {"pngcairo", "svgcairo"}) {
+      const bool png = device[0] == 'p';
+      outputs.push_back(std::make_unique<AtomicOutput>(dir / (png ? std::string(k.png_name) : svg_name(k.png_name)),
+                                                       TempKind::unnamed));
+      Page page(*outputs.back(), device, k.width, k.height);
+      if (Status st = k.draw(summary); !st) return st;
+      if (Status st = page.end(); !st) return st;
+    }
+  return Ok{};
 }
 
 Status write_plots(const Summary& summary, const std::filesystem::path& dir) {

@@ -11,6 +11,83 @@
 
 namespace rotinterp {
 
+void FootSkating::add(const ErrorRow& r) {
+  ++feet;
+  intervals += r.frames > 0 ? static_cast<double>(r.frames - 1) : 0.0;
+  contact += r.contact_frames;
+  skating += r.skate_frames;
+  speed_sum += r.skate_speed * r.contact_frames;
+  contact_ref += r.contact_frames_ref;
+  skating_ref += r.skate_frames_ref;
+  speed_sum_ref += r.skate_speed_ref * r.contact_frames_ref;
+}
+
+void FootSkating::add(const FootSkating& o) {
+  feet += o.feet;
+  intervals += o.intervals;
+  contact += o.contact, skating += o.skating, speed_sum += o.speed_sum;
+  contact_ref += o.contact_ref, skating_ref += o.skating_ref, speed_sum_ref += o.speed_sum_ref;
+}
+
+namespace {
+
+// The ClipResults of one clip's rows, per method × keep_every in row order.
+std::vector<ClipResult> clip_results_of(const std::vector<ErrorRow>& rows) {
+  std::vector<ClipResult> out;
+  struct Sums {
+    double w = 0, w_mean = 0, w_sq = 0, pos_w = 0, w_pos = 0, w_shell = 0;
+    std::vector<double> p95;
+  };
+  std::vector<Sums> sums;
+  for (const ErrorRow& r : rows) {
+    if (out.empty() || out.back().method != r.method || out.back().keep_every != r.keep_every) {
+      ClipResult c;
+      c.clip = r.clip;
+      c.method = r.method;
+      c.keep_every = r.keep_every;
+      c.frames = r.frames;
+      out.push_back(std::move(c));
+      sums.emplace_back();
+    }
+    ClipResult& c = out.back();
+    Sums& a = sums.back();
+    const double w = static_cast<double>(r.samples), h = r.height > 0 ? r.height : 1.0;
+    a.pos_w += w;
+    a.w_pos += w * r.pos_rms_pct * r.pos_rms_pct;
+    c.pos_max_pct = std::max(c.pos_max_pct, r.pos_max_pct);
+    if (r.end_site) continue;
+    ++c.joints;
+    c.samples += r.samples;
+    c.keys = std::max(c.keys, r.keys);
+    c.motion_deg = std::max(c.motion_deg, r.motion_deg);
+    a.w += w;
+    a.w_mean += w * r.mean_deg;
+    a.w_sq += w * r.rms_deg * r.rms_deg;
+    const double shell_pct = 100.0 * r.shell_rms / h;
+    a.w_shell += w * shell_pct * shell_pct;
+    c.shell_max_pct = std::max(c.shell_max_pct, 100.0 * r.shell_max / h);
+    a.p95.push_back(r.p95_deg);
+    if (c.max_joint.empty() || r.max_deg > c.max_deg) c.max_deg = r.max_deg, c.max_joint = r.joint;
+    if (r.foot) c.skating.add(r);
+  }
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    ClipResult& c = out[i];
+    Sums& a = sums[i];
+    if (a.w > 0) {
+      c.mean_deg = a.w_mean / a.w;
+      c.rms_deg = std::sqrt(a.w_sq / a.w);
+      c.shell_rms_pct = std::sqrt(a.w_shell / a.w);
+    }
+    if (a.pos_w > 0) c.pos_rms_pct = std::sqrt(a.w_pos / a.pos_w);
+    c.p95_deg = percentile(a.p95.data(), a.p95.size(), 0.95);
+  }
+  return out;
+}
+
+double median(std::vector<double> v) { return percentile(v.data(), v.size(), 0.5); }
+
+}  // namespace
+
 void SummaryBuilder::add_clip(const std::vector<ErrorRow>& rows) {
   if (rows.empty()) return;
   ++clips_;
@@ -62,6 +139,14 @@ void SummaryBuilder::add_clip(const std::vector<ErrorRow>& rows) {
       score_w += w;
     }
   }
+  for (ClipResult& c : clip_results_of(rows)) {
+    Acc& a = acc_.at({c.method, c.keep_every});
+    a.clip_rms.push_back(c.rms_deg);
+    a.clip_p95.push_back(c.p95_deg);
+    a.clip_max.push_back(c.max_deg);
+    a.entry.skating.add(c.skating);
+    clip_results_.push_back(std::move(c));
+  }
   const double score = score_w > 0 ? std::sqrt(score_sq / score_w) : 0.0;
   if (score > worst_score_) {
     worst_score_ = score;
@@ -75,6 +160,7 @@ void SummaryBuilder::add_clip(const std::vector<ErrorRow>& rows) {
 Summary SummaryBuilder::finish() const {
   Summary s;
   s.clips = clips_;
+  s.clip_results = clip_results_;
   s.worst_keep_every = worst_keep_;
   s.worst_clip_rows = worst_rows_;
   if (!worst_rows_.empty()) s.worst_clip = worst_rows_.front().clip;
@@ -94,30 +180,143 @@ Summary SummaryBuilder::finish() const {
     if (a.pos_samples > 0) e.pos_rms_pct = std::sqrt(a.w_pos / a.pos_samples);
     std::vector<double> p95 = a.p95;
     e.p95_deg = percentile(p95.data(), p95.size(), 0.95);
+    e.clip_rms_median_deg = median(a.clip_rms);
+    e.clip_p95_median_deg = median(a.clip_p95);
+    e.clip_max_median_deg = median(a.clip_max);
     s.entries.push_back(std::move(e));
   }
   return s;
 }
 
-std::string format_summary_table(const Summary& s) {
-  std::string out = fmt::format("{} clip{}\n", s.clips, s.clips == 1 ? "" : "s");
-  out += fmt::format("{:<10} {:>5} {:>10} {:>10} {:>10} {:>10} {:>10} {:>10} {:>12}\n", "method", "keep", "rms°",
-                     "p95°", "max°", "swing°", "twist°", "pos max%", "acc rms°/s²");
+namespace {
+
+// `v` to 4 significant figures in fixed notation; "< 0.001" below, "0" for zero.
+std::string sig4(double v) {
+  if (v == 0.0 || !std::isfinite(v)) return "0";
+  if (std::fabs(v) < 1e-3) return v < 0 ? "> -0.001" : "< 0.001";
+  const int digits = static_cast<int>(std::floor(std::log10(std::fabs(v))));
+  return fmt::format("{:.{}f}", v, std::max(0, 3 - digits));
+}
+
+}  // namespace
+
+std::string format_summary_table(const Summary& s, TableFormat format) {
+  const std::vector<std::string> head = {"method", "N", "clips", "mean°", "RMS°", "p95°", "max°",
+                                         "median clip RMS°", "pos max %", "extra skate %"};
+  std::vector<std::vector<std::string>> body;
+  for (const SummaryEntry& e : s.entries)
+    body.push_back({e.method, std::to_string(e.keep_every), std::to_string(e.clips), sig4(e.mean_deg),
+                    sig4(e.rms_deg), sig4(e.p95_deg), sig4(e.max_deg), sig4(e.clip_rms_median_deg),
+                    sig4(e.pos_max_pct),
+                    e.skating.feet ? sig4(100.0 * (e.skating.ratio() - e.skating.ratio_ref())) : "–"});
+  std::string out;
+  if (format == TableFormat::markdown) {
+    auto line = [](const std::vector<std::string>& cells) {
+      std::string l = "|";
+      for (const std::string& c : cells) l += " " + c + " |";
+      return l + "\n";
+    };
+    out += line(head);
+    out += "|---|" + std::string() ;
+    for (std::size_t i = 1; i < head.size(); ++i) out += "---:|";
+    out += "\n";
+    for (const auto& b : body) out += line(b);
+    return out;
+  }
+  if (format == TableFormat::latex) {
+    auto tex = [](std::string c) {
+      std::string o;
+      for (char ch : c) {
+        if (ch == '_' || ch == '%' || ch == '&' || ch == '#') o += '\\';
+        o += ch;
+      }
+      std::string deg = "°";
+      for (std::size_t p; (p = o.find(deg)) != std::string::npos;) o.replace(p, deg.size(), "$^\\circ$");
+      std::string lt = "< ";
+      for (std::size_t p; (p = o.find(lt)) != std::string::npos;) o.replace(p, lt.size(), "$<$\\,");
+      std::string dash = "–";
+      for (std::size_t p; (p = o.find(dash)) != std::string::npos;) o.replace(p, dash.size(), "--");
+      return o;
+    };
+    out += "\\begin{tabular}{lrr" + std::string(head.size() - 3, 'r') + "}\n\\hline\n";
+    auto line = [&](const std::vector<std::string>& cells) {
+      std::string l;
+      for (std::size_t i = 0; i < cells.size(); ++i) l += (i ? " & " : "") + tex(cells[i]);
+      return l + " \\\\\n";
+    };
+    out += line(head) + "\\hline\n";
+    for (const auto& b : body) out += line(b);
+    out += "\\hline\n\\end{tabular}\n";
+    return out;
+  }
+  out = fmt::format("{} clip{}; mean and RMS weight every joint sample alike (clips by their samples), median clip "
+                    "RMS counts each clip once\n",
+                    s.clips, s.clips == 1 ? "" : "s");
+  std::vector<std::size_t> width(head.size(), 0);
+  auto display = [](const std::string& t) {  // UTF-8 code points
+    std::size_t n = 0;
+    for (char c : t) n += (static_cast<unsigned char>(c) & 0xC0) != 0x80;
+    return n;
+  };
+  for (std::size_t i = 0; i < head.size(); ++i) width[i] = display(head[i]);
+  for (const auto& b : body)
+    for (std::size_t i = 0; i < b.size(); ++i) width[i] = std::max(width[i], display(b[i]));
+  auto line = [&](const std::vector<std::string>& cells) {
+    std::string l;
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+      const std::string pad(width[i] - display(cells[i]), ' ');
+      l += (i ? "  " : "") + (i == 0 ? cells[i] + pad : pad + cells[i]);
+    }
+    return l + "\n";
+  };
+  out += line(head);
   std::string last;
-  for (const SummaryEntry& e : s.entries) {
-    if (!last.empty() && e.method != last) out += '\n';
-    last = e.method;
-    out += fmt::format("{:<10} {:>5} {:>10.4g} {:>10.4g} {:>10.4g} {:>10.4g} {:>10.4g} {:>10.4g} {:>12.4g}\n", e.method,
-                       e.keep_every, e.rms_deg, e.p95_deg, e.max_deg, e.swing_rms_deg, e.twist_rms_deg,
-                       e.pos_max_pct, e.acc_rms);
+  for (std::size_t k = 0; k < body.size(); ++k) {
+    if (!last.empty() && s.entries[k].method != last) out += '\n';
+    last = s.entries[k].method;
+    out += line(body[k]);
   }
   if (!s.worst_clip.empty()) out += fmt::format("worst clip (RMS at keep {}): {}\n", s.worst_keep_every, s.worst_clip);
+  return out;
+}
+
+std::string clips_csv(const Summary& s) {
+  std::string out =
+      "clip,method,keep_every,frames,joints,keys,motion_deg,samples,mean_deg,rms_deg,p95_deg,max_deg,max_joint,"
+      "pos_rms_pct,pos_max_pct,shell_rms_pct,shell_max_pct,feet,contact_frames,skate_ratio,skate_speed_mps,"
+      "contact_frames_ref,skate_ratio_ref,skate_speed_ref_mps,extra_skate_ratio,extra_skate_speed_mps\n";
+  const auto q = csv_field;
+  for (const ClipResult& c : s.clip_results) {
+    out += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}", q(c.clip), q(c.method), c.keep_every,
+                       c.frames, c.joints, c.keys, c.motion_deg, c.samples, c.mean_deg, c.rms_deg, c.p95_deg,
+                       c.max_deg, q(c.max_joint), c.pos_rms_pct, c.pos_max_pct, c.shell_rms_pct, c.shell_max_pct,
+                       c.skating.feet);
+    const FootSkating& f = c.skating;
+    if (f.feet)
+      out += fmt::format(",{},{},{},{},{},{},{},{}\n", f.contact, f.ratio(), f.speed(), f.contact_ref, f.ratio_ref(),
+                         f.speed_ref(), f.ratio() - f.ratio_ref(), f.speed() - f.speed_ref());
+    else
+      out += ",,,,,,,,\n";
+  }
   return out;
 }
 
 namespace {
 
 using nlohmann::json;
+
+json skating_json(const FootSkating& f) {
+  if (!f.feet) return nullptr;
+  return {{"feet", f.feet},
+          {"contact_frames", f.contact},
+          {"skate_ratio", f.ratio()},
+          {"skate_speed_mps", f.speed()},
+          {"contact_frames_ref", f.contact_ref},
+          {"skate_ratio_ref", f.ratio_ref()},
+          {"skate_speed_ref_mps", f.speed_ref()},
+          {"extra_skate_ratio", f.ratio() - f.ratio_ref()},
+          {"extra_skate_speed_mps", f.speed() - f.speed_ref()}};
+}
 
 json entry_json(const SummaryEntry& e) {
   return {{"method", e.method},
@@ -129,6 +328,9 @@ json entry_json(const SummaryEntry& e) {
           {"rms_deg", e.rms_deg},
           {"p95_deg", e.p95_deg},
           {"max_deg", e.max_deg},
+          {"clip_rms_median_deg", e.clip_rms_median_deg},
+          {"clip_p95_median_deg", e.clip_p95_median_deg},
+          {"clip_max_median_deg", e.clip_max_median_deg},
           {"swing_rms_deg", e.swing_rms_deg},
           {"twist_rms_deg", e.twist_rms_deg},
           {"pos_rms_pct", e.pos_rms_pct},
@@ -139,14 +341,44 @@ json entry_json(const SummaryEntry& e) {
           {"acc_rms_ref_dps2", e.acc_rms_ref},
           {"vel_jump_max_dps", e.vel_jump_max},
           {"acc_jump_max_dps2", e.acc_jump_max},
+          {"foot_skating", skating_json(e.skating)},
           {"worst", {{"clip", e.worst_clip}, {"joint", e.worst_joint}}}};
 }
 
-}  // namespace
+// The "clips" section: one object per clip, its results per method × keep_every.
+json clips_json(const Summary& s) {
+  json clips = json::array();
+  for (const ClipResult& c : s.clip_results) {
+    if (clips.empty() || clips.back()["clip"] != c.clip)
+      clips.push_back({{"clip", c.clip},
+                       {"frames", c.frames},
+                       {"joints", c.joints},
+                       {"keys", c.keys},
+                       {"motion_deg", c.motion_deg},
+                       {"results", json::array()}});
+    clips.back()["results"].push_back({{"method", c.method},
+                                       {"keep_every", c.keep_every},
+                                       {"mean_deg", c.mean_deg},
+                                       {"rms_deg", c.rms_deg},
+                                       {"p95_deg", c.p95_deg},
+                                       {"max_deg", c.max_deg},
+                                       {"max_joint", c.max_joint},
+                                       {"pos_rms_pct", c.pos_rms_pct},
+                                       {"pos_max_pct", c.pos_max_pct},
+                                       {"shell_rms_pct", c.shell_rms_pct},
+                                       {"shell_max_pct", c.shell_max_pct},
+                                       {"foot_skating", skating_json(c.skating)}});
+  }
+  return clips;
+}
 
+}  // namespace
 std::string summary_json(const RunRecord& r, const Summary& summary) {
   json failed = json::array();
   for (const EvalFailure& f : r.failed) failed.push_back({{"file", f.file}, {"error", f.message}});
+  json too_short = json::array();
+  for (const ShortClip& c : r.too_short)
+    too_short.push_back({{"clip", c.clip}, {"frames", c.frames}, {"keep_every_skipped", c.keep_every}});
   json j = {{"tool", "rotinterp eval"},
             {"version", r.version},
             {"inputs", r.inputs},
@@ -156,11 +388,18 @@ std::string summary_json(const RunRecord& r, const Summary& summary) {
               {"keep_every", r.options.keep_every},
               {"subframe", r.options.subframe},
               {"shell_distance_m", r.options.shell_distance_m},
-              {"truth", r.options.truth}}},
+              {"truth", r.options.truth},
+              {"anim", r.options.animation},
+              {"min_frames", r.options.min_frames},
+              {"feet", r.options.feet},
+              {"contact_height_m", r.options.contact_height_m},
+              {"contact_speed_mps", r.options.contact_speed_mps},
+              {"floor_m", r.options.floor_m ? json(*r.options.floor_m) : json(nullptr)}}},
             {"started", r.started},
             {"seconds", r.seconds},
             {"failed", failed},
-            {"skipped", r.skipped}};
+            {"skipped", r.skipped},
+            {"too_short", too_short}};
   if (r.merged_from.empty()) {
     j["shard"] = {{"index", r.shard_index}, {"count", r.shard_count}};
     j["jobs"] = r.jobs;
@@ -173,10 +412,18 @@ std::string summary_json(const RunRecord& r, const Summary& summary) {
   j["clips_evaluated"] = summary.clips;
   j["results"] = std::move(results);
   j["worst_clip"] = {{"clip", summary.worst_clip}, {"keep_every", summary.worst_keep_every}};
+  j["weighting"] =
+      "mean_deg, rms_deg, swing/twist, pos/shell RMS and smoothness weight every joint sample alike, so a clip "
+      "counts by its samples x joints; p95_deg is the 95th percentile of the per-joint p95; clip_*_median_deg "
+      "count each clip once (the median of the per-clip values in \"clips\"); foot_skating sums frame "
+      "intervals over all feet of all clips";
+  j["clips"] = clips_json(summary);
   j["units"] = {{"angles", "degrees"},
                 {"pct", "percent of each clip's skeleton height"},
                 {"acc", "deg/s^2"},
-                {"vel", "deg/s"}};
+                {"vel", "deg/s"},
+                {"skate_ratio", "share of foot frame intervals in contact and sliding faster than contact_speed_mps"},
+                {"skate_speed", "m/s, mean horizontal foot speed over the contact intervals"}};
   return j.dump(2) + "\n";
 }
 
@@ -199,6 +446,15 @@ Result<RunRecord> read_summary_json(const std::filesystem::path& file) {
     r.options.subframe = o.at("subframe").get<int>();
     r.options.shell_distance_m = o.at("shell_distance_m").get<double>();
     r.options.truth = o.at("truth").get<bool>();
+    r.options.animation = o.value("anim", "");
+    r.options.min_frames = o.value("min_frames", std::size_t{0});
+    r.options.feet = o.value("feet", std::vector<std::string>{});
+    r.options.contact_height_m = o.value("contact_height_m", 0.0);
+    r.options.contact_speed_mps = o.value("contact_speed_mps", 0.0);
+    if (o.contains("floor_m") && !o["floor_m"].is_null()) r.options.floor_m = o["floor_m"].get<double>();
+    for (const auto& c : j.value("too_short", json::array()))
+      r.too_short.push_back({c.at("clip").get<std::string>(), c.at("frames").get<std::size_t>(),
+                             c.at("keep_every_skipped").get<std::vector<int>>()});
     r.inputs = j.value("inputs", std::vector<std::string>{});
     r.skipped = j.value("skipped", std::vector<std::string>{});
     for (const auto& f : j["failed"]) r.failed.push_back({f.at("file").get<std::string>(), f.at("error").get<std::string>()});

@@ -203,7 +203,8 @@ TEST_F(FullDisk, EveryWriterFailsCleanlyOnAFullDisk) {
   writers[3].outputs.push_back("x.bin");  // the .gltf's buffer
   writers.push_back({"synth " + (w / "s.bvh").string() + " --seconds 30 --fps 120 -q", w, {"s.bvh", "s.bvh.synth"}});
   writers.push_back({"eval " + clip().string() + " --methods slerp,squad --keep-every 2,4 -j 1 -q -o " + e.string(), e,
-                     {"errors.csv", "summary.json", "error_vs_spacing.png", "worst_clip_joints.png"}});
+                     {"errors.csv", "clips.csv", "summary.json", "error_vs_spacing.png", "error_vs_spacing.svg",
+                      "worst_clip_joints.png", "worst_clip_joints.svg", "clip_errors.png", "clip_errors.svg"}});
   if (render_built())
     writers.push_back({"render " + clip().string() + " -o " + p.string() +
                            " --methods slerp,squad --frames 0:1:1 --size 1920x1080 -q",
@@ -321,14 +322,15 @@ TEST_F(Faults, ASecondEvalIntoADirectoryInUseIsRefusedWithOneLine) {
 }
 
 TEST_F(Faults, ASignalWhileEvalDrawsItsPlotsLeavesAllOfOneRunNeverAMix) {
-  // While the plots are drawn the run holds errors.csv, summary.json and a plot
-  // open (unnamed) in DIR: SIGTERM then. The directory must hold the previous
-  // run's four files, or (a signal held back during the final renames) this run's
-  // four, never new CSV/JSON beside old plots.
+  // While the plots are drawn the run holds errors.csv, summary.json, clips.csv and
+  // a plot open (unnamed) in DIR: SIGTERM then. The directory must hold the previous
+  // run's nine files, or (a signal held back during the final renames) this run's
+  // nine, never new CSV/JSON beside old plots.
   const fs::path e = out_ / "e";
   const std::vector<std::string> args = {"eval", clip().string(), "--methods", "slerp,squad,c2,nlerp,expmap",
                                          "--keep-every", "2,3,4,6,8", "-j", "1", "-q", "-o", e.string()};
-  const std::vector<std::string> files = {"error_vs_spacing.png", "errors.csv", "summary.json", "worst_clip_joints.png"};
+  const std::vector<std::string> files = {"clip_errors.png", "clip_errors.svg", "clips.csv", "error_vs_spacing.png", "error_vs_spacing.svg",
+                                          "errors.csv", "summary.json", "worst_clip_joints.png", "worst_clip_joints.svg"};
   int caught = 0;
   for (int round = 0; round < 5; ++round) {
     fs::create_directories(e);
@@ -338,7 +340,7 @@ TEST_F(Faults, ASignalWhileEvalDrawsItsPlotsLeavesAllOfOneRunNeverAMix) {
     const auto plotting = [&] {
       for (const std::string& n : names_in(e))
         if (n[0] == '.' && n.size() > 4 && n.compare(n.size() - 4, 4, ".png") == 0) return true;
-      return test::open_files_in(pid, e) >= 3;
+      return test::open_files_in(pid, e) >= 4;
     };
     const bool drawing = test::wait_until(pid, plotting, 60.0);
     ::kill(pid, SIGTERM);
@@ -349,7 +351,7 @@ TEST_F(Faults, ASignalWhileEvalDrawsItsPlotsLeavesAllOfOneRunNeverAMix) {
     EXPECT_EQ(names_in(e), files);
     int previous = 0;
     for (const std::string& n : files) previous += slurp(e / n) == "previous " + n + "\n";
-    EXPECT_TRUE(previous == 0 || previous == 4) << previous << " of 4 files are the previous run's";
+    EXPECT_TRUE(previous == 0 || previous == 9) << previous << " of 9 files are the previous run's";
   }
   EXPECT_GT(caught, 0) << "the signal never came while the plots were drawn";
 }
@@ -360,7 +362,7 @@ TEST_F(Faults, AnEvalWithoutPlotsLeavesNoPlotOfAnEarlierRunBesideItsFiles) {
   ASSERT_EQ(run_cli(args).exit_code, 0);
   ASSERT_TRUE(fs::exists(e / "error_vs_spacing.png"));
   ASSERT_EQ(run_cli(args + " --no-plots").exit_code, 0);
-  EXPECT_EQ(names_in(e), (std::vector<std::string>{"errors.csv", "summary.json"}));
+  EXPECT_EQ(names_in(e), (std::vector<std::string>{"clips.csv", "errors.csv", "summary.json"}));
 }
 
 TEST_F(Faults, AKilledRunLeavesNoTemporaryFile) {

@@ -24,6 +24,15 @@ Summary hand_summary() {
       e.max_deg = 10 * e.rms_deg;
       s.entries.push_back(e);
     }
+  for (const char* clip : {"data/a.bvh", "data/still.fbx"})
+    for (int m = 0; m < 3; ++m) {
+      ClipResult c;
+      c.clip = clip;
+      c.method = methods[m];
+      c.keep_every = 16;
+      c.rms_deg = clip[5] == 'a' ? 2.0 : 0.0;  // equal for every method; the still clip all zero
+      s.clip_results.push_back(c);
+    }
   s.worst_clip = "data/bvh/some_clip.bvh";
   s.worst_keep_every = 16;
   for (int m = 0; m < 3; ++m)
@@ -46,17 +55,27 @@ bool is_png(const fs::path& p) {
   return in && sig[1] == 'P' && sig[2] == 'N' && sig[3] == 'G';
 }
 
-TEST(Plots, WritesBothPngsAndNoTemporaries) {
+bool is_svg(const fs::path& p) {
+  std::ifstream in(p);
+  std::string head(256, '\0');
+  in.read(head.data(), 256);
+  return head.find("<svg") != std::string::npos;
+}
+
+TEST(Plots, WritesEveryPlotAsPngAndSvgAndNoTemporaries) {
   const fs::path dir = fs::path(testing::TempDir()) / "rotinterp_plots_test";
   fs::remove_all(dir);
   fs::create_directories(dir);
   ASSERT_TRUE(write_plots(hand_summary(), dir).ok());
   EXPECT_TRUE(is_png(dir / kSpacingPlotName));
   EXPECT_TRUE(is_png(dir / kWorstClipPlotName));
+  EXPECT_TRUE(is_png(dir / kClipsPlotName));
   EXPECT_GT(fs::file_size(dir / kSpacingPlotName), 10000u);  // axes, labels and lines, not a blank page
+  for (const char* svg : {"error_vs_spacing.svg", "worst_clip_joints.svg", "clip_errors.svg"}) EXPECT_TRUE(is_svg(dir / svg)) << svg;
   std::size_t files = 0;
   for (const auto& e : fs::directory_iterator(dir)) files += e.is_regular_file();
-  EXPECT_EQ(files, 2u);
+  EXPECT_EQ(files, 6u);
+  EXPECT_EQ(plot_file_names().size(), 6u);
   if (const char* keep = std::getenv("ROTINTERP_KEEP_PLOTS")) fs::copy(dir, keep, fs::copy_options::overwrite_existing | fs::copy_options::recursive);
 }
 

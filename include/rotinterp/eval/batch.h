@@ -19,10 +19,18 @@
 
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace rotinterp {
+
+// eval --per-frame: the angle error series of one clip × method × spacing.
+struct PerFrameRequest {
+  std::string clip;    // the clip id as in errors.csv (file, or file#take)
+  std::string method;
+  int keep_every = 1;
+};
 
 struct EvalOptions {
   std::vector<std::filesystem::path> inputs;  // files and directories (see eval/inputs.h)
@@ -30,7 +38,14 @@ struct EvalOptions {
   ClipEvalOptions clip;                       // methods, keep_every, subframe, shell distance
   int jobs = 0;                               // worker threads; 0 = all cores
   int shard_index = 1, shard_count = 1;       // evaluate shard_of(files, index, count)
-  bool plots = true;                          // write the PNG plots
+  bool plots = true;                          // write the plots (PNG and SVG)
+  // Which takes of each file: empty, the first; a name or an index, that take; "all",
+  // every take. Each take evaluated is a clip of its own; in a file holding several
+  // takes it is named file#take (the take's name, or its index when the name is
+  // empty or not unique), even when only one of them is evaluated; a file of one
+  // take keeps its plain path.
+  std::string animation;
+  std::optional<PerFrameRequest> per_frame;   // also write DIR/per_frame.csv
   // Analytic truth for a clip file (synth clips); an error fails that clip. Unset:
   // every clip is compared with its own frames. Called from worker threads.
   std::function<Result<TruthFn>(const std::string& file, const Clip& clip)> truth_for;
@@ -42,6 +57,7 @@ struct EvalReport {
   Summary summary;
   std::vector<EvalFailure> failures;
   std::vector<std::string> skipped;  // files found in directories that hold no animation
+  std::vector<ShortClip> too_short;  // clips evaluated at fewer spacings than asked, or none
   std::size_t files = 0;           // files in this run (this shard)
   std::size_t clips_evaluated = 0;
   double seconds = 0;              // wall time
@@ -50,9 +66,20 @@ struct EvalReport {
 // File names inside the output directory.
 constexpr const char* kErrorsCsvName = "errors.csv";
 constexpr const char* kSummaryJsonName = "summary.json";
+constexpr const char* kClipsCsvName = "clips.csv";
+constexpr const char* kPerFrameCsvName = "per_frame.csv";
 
-// Runs the batch. Errors (nothing written) for bad options, no input files, or an
-// output that cannot be written; load failures are in the report instead.
+// Tells glibc's allocator to keep freed memory for reuse (no trimming of the heap
+// below 512 MB, no mmap for blocks under 32 MB): the batch allocates and frees
+// per-clip buffers of megabytes over and over, and returning them to the kernel
+// each time cost 13 % of `eval`'s CPU time in page faults (perf, three CMU/assimp
+// BVH clips). Process-wide: for a program that runs batches (the CLI, bench_eval),
+// not for a library user's process.
+void keep_freed_memory_for_reuse();
+
+// Runs the batch. Errors (nothing written) for bad options, no input files, an
+// output that cannot be written, or a --per-frame clip that is not among those
+// evaluated; load failures are in the report instead.
 Result<EvalReport> run_eval(const EvalOptions& options);
 
 // Combines the outputs of shard runs (directories holding errors.csv and

@@ -33,16 +33,27 @@ struct ErrorRow {
   // original curve (deg/s²), largest velocity (deg/s) and acceleration (deg/s²) jump at keys.
   double acc_rms = 0, acc_rms_ref = 0, vel_jump_max = 0, acc_jump_max = 0;
   double height = 0;  // skeleton height used for the percentages, clip units
+  // The source (joints only): its largest key count, and the largest angle (degrees)
+  // the joint turns away from its first frame — 0 for a joint that never moves.
+  double keys = 0, motion_deg = 0;
+  // Foot contact (eval/foot_skating.h; foot joints only, `foot` true): frame intervals
+  // in contact with the floor and those of them sliding, and the mean horizontal
+  // speed over the contact intervals (m/s), of the rebuilt motion and of the reference.
+  bool foot = false;
+  double contact_frames = 0, skate_frames = 0, skate_speed = 0;
+  double contact_frames_ref = 0, skate_frames_ref = 0, skate_speed_ref = 0;
 };
 
 // A measured (floating-point) column of errors.csv: its name, the ErrorRow field
-// it holds, and whether End Site rows leave it empty.
+// it holds, whether End Site rows leave it empty, and whether rows of joints that
+// are not feet leave it empty.
 struct ErrorValueColumn {
   const char* name;
   double ErrorRow::*field;
   bool joint_only;
+  bool foot_only;
 };
-// mean_deg … acc_jump_max_dps2 and height, in file order.
+// mean_deg … acc_jump_max_dps2, height, keys … skate_speed_ref_mps, in file order.
 const std::vector<ErrorValueColumn>& error_value_columns();
 
 // The CSV header line (no newline): clip,method,keep_every,joint,frames,mean_deg,…
@@ -61,6 +72,10 @@ class ErrorRowParser {
  private:
   std::vector<int> column_;  // field index per known column, −1 when absent
 };
+
+// A text field as CSV writes it: quoted (quotes doubled) when it holds a comma, quote
+// or line break.
+std::string csv_field(std::string_view text);
 
 // Splits one CSV line into fields (RFC 4180 quoting). Error on an unterminated quote.
 Result<std::vector<std::string>> split_csv_line(std::string_view line);

@@ -12,6 +12,7 @@
 #include "rotinterp/clip/metrics.h"
 #include "rotinterp/core/result.h"
 #include "rotinterp/eval/error_row.h"
+#include "rotinterp/eval/foot_skating.h"
 
 #include <functional>
 #include <optional>
@@ -30,7 +31,14 @@ struct ClipEvalOptions {
   int subframe = 0;                  // extra samples between consecutive frames (0 … 1000)
   double shell_distance_m = kDefaultShellDistanceMetres;  // metres, converted by Clip::unit_scale
   TruthFn truth;                     // optional reference instead of the clip's frames
+  std::size_t min_frames = 0;        // clips with fewer frames are skipped (see skipped_spacings)
+  FootContactOptions feet;           // foot joints, contact thresholds, floor
 };
+
+// The spacings of options.keep_every a clip of `frames` frames is not evaluated at:
+// those that leave no frame between keys to rebuild twice over (frames < 2N + 1: at
+// most one key interval of N frames), and all of them when frames < min_frames.
+std::vector<int> skipped_spacings(std::size_t frames, const ClipEvalOptions& options);
 
 // The reference side of one clip, computed once and shared (read-only) by the
 // methods: frame times, the original at its frames, the reference at every frame
@@ -56,6 +64,14 @@ struct ClipReference {
   // given, else the slerp of `original` and the clip's translation tracks.
   TruthFn truth;
   std::vector<std::optional<TranslationTrack>> translation_tracks;  // [joint]
+  // The source: largest key count and largest angle from the first frame (degrees), [joint].
+  std::vector<double> keys, motion_deg;
+  // Foot contact (foot_skating.h): the feet, the floor (clip units), metres per
+  // unit (estimated for a format without units), and the reference's contacts [foot].
+  std::vector<std::size_t> feet;
+  double floor = 0.0, metres_per_unit = 1.0;
+  bool unit_estimated = false;
+  std::vector<FootContact> foot_ref;
 };
 
 // Time of sample m < reference.samples: frame k = m / per_frame, then the fraction
@@ -66,10 +82,18 @@ double sample_time(const ClipReference& reference, std::size_t m);
 Result<ClipReference> prepare_reference(const Clip& clip, const std::string& clip_id,
                                         const ClipEvalOptions& options);
 
-// Rows of one method for every keep_every × joint, then End Site. Errors name the
-// clip, the joint and the method.
+// Rows of one method for every keep_every × joint, then End Site; none for the
+// spacings skipped_spacings() names. Errors name the clip, the joint and the method.
 Result<std::vector<ErrorRow>> evaluate_method(const ClipReference& reference, const std::string& method,
                                               const ClipEvalOptions& options);
+
+// The angle error (degrees) of every joint at every sample, rebuilt by `method`
+// from every keep_every-th frame: eval --per-frame.
+struct PerFrameErrors {
+  std::vector<double> times;              // seconds, per sample
+  std::vector<std::vector<double>> angle;  // [joint][sample], degrees
+};
+Result<PerFrameErrors> per_frame_errors(const ClipReference& reference, const std::string& method, int keep_every);
 
 // Rows for every method × keep_every × joint, then End Site, in that order: the
 // two steps above. The first error ends it.

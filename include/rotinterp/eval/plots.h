@@ -1,4 +1,4 @@
-// PNG plots of an evaluation (PLplot, pngcairo driver), written atomically.
+// Plots of an evaluation (PLplot's cairo driver), each as PNG and SVG, written atomically.
 #pragma once
 
 #include "rotinterp/core/result.h"
@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace rotinterp {
@@ -14,11 +15,19 @@ namespace rotinterp {
 // File names inside the output directory.
 constexpr const char* kSpacingPlotName = "error_vs_spacing.png";
 constexpr const char* kWorstClipPlotName = "worst_clip_joints.png";
+constexpr const char* kClipsPlotName = "clip_errors.png";
+// Every file the plots are written to: the three PNGs and their SVGs (same stem).
+std::vector<std::string> plot_file_names();
 
-// error_vs_spacing.png: RMS and max angle (degrees, log scale) against keep_every
-// (log₂ scale), one colour per method. worst_clip_joints.png: RMS angle per joint of
-// the worst clip at its largest keep_every, one colour per method. Not thread-safe
-// (PLplot has global state): call from one thread.
+// Every method has its own colour, marker and dash pattern, and its points are
+// offset slightly sideways so that methods with equal values stay visible; legends
+// sit inside the frame; log axes span the values above 1e-9°, and values below
+// (zero to round-off) are drawn as open markers on the bottom edge.
+// error_vs_spacing: against keep_every (log₂), three panels (log₁₀ degrees): RMS
+// over all samples, the median over clips of the clip RMS, and the max.
+// worst_clip_joints: RMS angle per joint of the worst clip at its largest keep_every.
+// clip_errors: each clip's RMS angle at the largest keep_every it was evaluated at.
+// Not thread-safe (PLplot has global state): call from one thread.
 Status write_plots(const Summary& summary, const std::filesystem::path& dir);
 // The same, drawn into finished but uncommitted outputs appended to `outputs`, for
 // a caller that commits them together with other files (commit_together).

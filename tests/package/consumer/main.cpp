@@ -1,7 +1,7 @@
 // Links every library of an installed package and calls each:
 //   core:   exp/log agree;
 //   io:     a BVH written to DIR and read back (read_clip, write_clip);
-//   eval:   the read clip evaluated with slerp from every 2nd frame;
+//   eval:   the read clip (5 frames: 2N + 1 for N = 2) evaluated with slerp from every 2nd frame;
 //   render: a PNG written to DIR (when the package has the renderer).
 // Usage: consumer DIR
 #include <rotinterp/core/rotation.h>
@@ -35,11 +35,13 @@ const char* const kBvh =
     "  }\n"
     "}\n"
     "MOTION\n"
-    "Frames: 3\n"
+    "Frames: 5\n"
     "Frame Time: 0.033333\n"
     "0 0 0 0 0 0 0 0 0\n"
     "0 0 0 10 0 0 20 0 0\n"
-    "0 0 0 20 0 0 40 0 0\n";
+    "0 0 0 20 0 0 40 0 0\n"
+    "0 0 0 30 0 0 50 0 0\n"
+    "0 0 0 40 0 0 55 0 0\n";
 
 int fail(const char* what, const std::string& message) {
   std::fprintf(stderr, "consumer: %s: %s\n", what, message.c_str());

@@ -59,6 +59,7 @@ struct FileRun {
   std::string message;        // the error line of a failed file
   std::string frame_time;     // as written in the file (BVH), else empty
   std::optional<Rate> rate;   // as recognized
+  std::optional<Rate> output_rate;
   std::size_t frames = 0, joints = 0, output_frames = 0;
   double duration = 0.0, seconds = 0.0;
   std::uintmax_t bytes = 0;  // of the input
@@ -142,6 +143,7 @@ Status resample_file(FileRun& run, const ResampleArgs& a, const ResampleOptions&
   auto out = resample_clip(*clip, opt);
   if (!out) return make_error(run.input + ": " + out.error());
   run.output_frames = out->frame_count();
+  run.output_rate = clip_rate(*out);
 
   WriteOptions write_options;
   write_options.bvh_order = a.bvh_order;
@@ -177,7 +179,11 @@ int run_single(const ResampleArgs& a, ResampleOptions opt) {
     if (opt.keep_every)
       how = fmt::format("keys every {} frame{}", *opt.keep_every, *opt.keep_every == 1 ? "" : "s");
     else
-      how = fmt::format("{} → {} Hz", from, opt.fps ? opt.fps->to_string() : run.rate ? run.rate->to_string() : "?");
+      how = fmt::format("{} → {} Hz", from,
+                        opt.fps        ? opt.fps->to_string()
+                        : run.rate        ? run.rate->to_string()
+                        : run.output_rate ? run.output_rate->to_string()
+                                          : "?");
     std::string methods = opt.method;
     if (!opt.method_for.empty()) methods += fmt::format(" (+{} per-joint override{})", opt.method_for.size(),
                                                         opt.method_for.size() == 1 ? "" : "s");

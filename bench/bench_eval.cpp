@@ -15,7 +15,7 @@
 // keys, evaluated at every frame and key-jump stencil, no metric), against the import.
 #include "rotinterp/eval/batch.h"
 #include "rotinterp/eval/evaluate_clip.h"
-#include "rotinterp/eval/inputs.h"
+#include "rotinterp/io/dataset.h"
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/io/read.h"
 

@@ -1,7 +1,7 @@
 // rotinterp eval PATH... | eval --merge DIR... -o DIR: batch angular-error evaluation.
 #include "common.h"
 #include "rotinterp/eval/batch.h"
-#include "rotinterp/eval/inputs.h"
+#include "rotinterp/io/dataset.h"
 #include "rotinterp/eval/plots.h"
 #include "rotinterp/eval/synth_truth.h"
 #include "rotinterp/interp/interpolator.h"

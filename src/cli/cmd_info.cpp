@@ -5,7 +5,6 @@
 #include "rotinterp/clip/bvh_layout.h"
 #include "rotinterp/clip/frames.h"
 #include "rotinterp/core/work_queue.h"
-#include "rotinterp/eval/inputs.h"
 #include "rotinterp/io/dataset.h"
 #include "rotinterp/io/info.h"
 

@@ -7,7 +7,6 @@
 #include "rotinterp/clip/bvh_layout.h"
 #include "rotinterp/clip/resample.h"
 #include "rotinterp/core/work_queue.h"
-#include "rotinterp/eval/inputs.h"
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/io/atomic_file.h"
 #include "rotinterp/io/dataset.h"

@@ -1,7 +1,7 @@
 #include "rotinterp/eval/batch.h"
 
 #include "rotinterp/core/work_queue.h"
-#include "rotinterp/eval/inputs.h"
+#include "rotinterp/io/dataset.h"
 #include "rotinterp/eval/plots.h"
 #include "rotinterp/io/atomic_file.h"
 #include "rotinterp/io/info.h"

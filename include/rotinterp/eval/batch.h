@@ -33,7 +33,7 @@ struct PerFrameRequest {
 };
 
 struct EvalOptions {
-  std::vector<std::filesystem::path> inputs;  // files and directories (see eval/inputs.h)
+  std::vector<std::filesystem::path> inputs;  // files and directories (see io/dataset.h)
   std::filesystem::path output_dir;           // created if missing
   ClipEvalOptions clip;                       // methods, keep_every, subframe, shell distance
   int jobs = 0;                               // worker threads; 0 = all cores

@@ -19,10 +19,10 @@ namespace rotinterp {
 namespace {
 
 // Colour map 0: 0 background (white), 1 axes and text (black), 2 grid (light grey),
-// 3… one per method (colour-blind safe, Okabe–Ito).
+// 3… one per method (colour-blind safe: Okabe–Ito, then Paul Tol's wine for a ninth).
 constexpr int kText = 1, kGrid = 2, kFirstSeries = 3;
-constexpr int kPalette[][3] = {{0, 114, 178}, {213, 94, 0}, {0, 158, 115}, {204, 121, 167},
-                               {230, 159, 0}, {86, 180, 233}, {120, 120, 120}, {0, 0, 0}};
+constexpr int kPalette[][3] = {{0, 114, 178}, {213, 94, 0},    {0, 158, 115}, {204, 121, 167}, {230, 159, 0},
+                               {86, 180, 233}, {120, 120, 120}, {0, 0, 0},     {136, 34, 85}};
 constexpr int kPaletteSize = sizeof(kPalette) / sizeof(kPalette[0]);
 // Angles below this (degrees) are zero to round-off: drawn as zeros on a log axis
 // (a method that reproduces a still clip gives 1e-14°, which would stretch the axis
@@ -31,8 +31,8 @@ constexpr double kZeroDeg = 1e-9;
 
 int series_colour(std::size_t i) { return kFirstSeries + static_cast<int>(i % kPaletteSize); }
 // Per method: a filled marker, its open form (for zeros on a log axis), a dash pattern.
-constexpr const char* kMarker[] = {"●", "■", "▲", "◆", "▼", "★", "✚", "✖"};
-constexpr const char* kOpenMarker[] = {"○", "□", "△", "◇", "▽", "☆", "✚", "✖"};
+constexpr const char* kMarker[] = {"●", "■", "▲", "◆", "▼", "★", "✚", "✖", "◀"};
+constexpr const char* kOpenMarker[] = {"○", "□", "△", "◇", "▽", "☆", "✚", "✖", "◁"};
 constexpr int kMarkers = sizeof(kMarker) / sizeof(kMarker[0]);
 const char* marker(std::size_t i, bool open = false) { return (open ? kOpenMarker : kMarker)[i % kMarkers]; }
 int dash(std::size_t i) { return 1 + static_cast<int>(i % 8); }  // PLplot's eight line styles

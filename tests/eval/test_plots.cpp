@@ -1,10 +1,14 @@
 // The plots are written as real PNG files, atomically.
 #include "rotinterp/eval/plots.h"
+#include "rotinterp/interp/interpolator.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <fstream>
+#include <regex>
+#include <set>
+#include <sstream>
 
 namespace rotinterp {
 namespace {
@@ -77,6 +81,35 @@ TEST(Plots, WritesEveryPlotAsPngAndSvgAndNoTemporaries) {
   EXPECT_EQ(files, 6u);
   EXPECT_EQ(plot_file_names().size(), 6u);
   if (const char* keep = std::getenv("ROTINTERP_KEEP_PLOTS")) fs::copy(dir, keep, fs::copy_options::overwrite_existing | fs::copy_options::recursive);
+}
+
+TEST(Plots, EveryRegisteredMethodHasAColourOfItsOwn) {
+  // Nine methods since gltf-cubic: a palette of eight drew the ninth in the first's colour.
+  Summary s;
+  s.clips = 1;
+  for (std::size_t m = 0; m < methods().size(); ++m)
+    for (int keep : {2, 4, 8, 16}) {
+      SummaryEntry e;
+      e.method = methods()[m].name;
+      e.keep_every = keep;
+      e.rms_deg = 0.01 * keep * keep * static_cast<double>(m + 1);
+      e.max_deg = 10 * e.rms_deg;
+      s.entries.push_back(e);
+    }
+  const fs::path dir = fs::path(testing::TempDir()) / "rotinterp_plots_colours";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  ASSERT_TRUE(write_plots(s, dir).ok());
+  std::ifstream in(dir / "error_vs_spacing.svg");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string svg = text.str();
+  std::set<std::string> colours;
+  const std::regex rgb(R"(rgb\([^)]*\))");
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), rgb); it != std::sregex_iterator(); ++it)
+    colours.insert(it->str());
+  // The methods' colours (black among them), plus the white page and the grey grid.
+  EXPECT_GE(colours.size(), methods().size() + 2);
 }
 
 }  // namespace

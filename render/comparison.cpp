@@ -33,10 +33,10 @@ Result<std::size_t> parse_count(std::string_view text, const char* what) {
   return value;
 }
 
-// Solid colours of the methods (then repeating).
+// Solid colours of the methods, one per registered method (then repeating).
 constexpr Color kPalette[] = {{0.96f, 0.56f, 0.20f}, {0.26f, 0.62f, 0.96f}, {0.40f, 0.80f, 0.38f},
                               {0.90f, 0.36f, 0.62f}, {0.94f, 0.82f, 0.28f}, {0.36f, 0.84f, 0.84f},
-                              {0.66f, 0.52f, 0.94f}, {0.92f, 0.40f, 0.34f}};
+                              {0.66f, 0.52f, 0.94f}, {0.92f, 0.40f, 0.34f}, {0.84f, 0.70f, 0.50f}};
 
 // A method's colour follows its place in the registry, so a method looks the same
 // in every image, whatever else is compared with it.

@@ -34,7 +34,10 @@ int series_colour(std::size_t i) { return kFirstSeries + static_cast<int>(i % kP
 constexpr const char* kMarker[] = {"●", "■", "▲", "◆", "▼", "★", "✚", "✖", "◀"};
 constexpr const char* kOpenMarker[] = {"○", "□", "△", "◇", "▽", "☆", "✚", "✖", "◁"};
 constexpr int kMarkers = sizeof(kMarker) / sizeof(kMarker[0]);
-const char* marker(std::size_t i, bool open = false) { return (open ? kOpenMarker : kMarker)[i % kMarkers]; }
+const char* marker(std::size_t i, bool open = false) {
+  const std::size_t k = i % kMarkers;
+  return open ? kOpenMarker[k] : kMarker[k];
+}
 int dash(std::size_t i) { return 1 + static_cast<int>(i % 8); }  // PLplot's eight line styles
 // Character heights relative to PLplot's default: text, and the markers.
 constexpr double kTextScale = 0.8, kMarkerScale = 0.6;

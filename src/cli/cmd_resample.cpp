@@ -7,6 +7,7 @@
 #include "rotinterp/clip/bvh_layout.h"
 #include "rotinterp/clip/resample.h"
 #include "rotinterp/core/work_queue.h"
+#include "rotinterp/eval/error_row.h"  // csv_field: the one CSV quoting
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/io/atomic_file.h"
 #include "rotinterp/io/dataset.h"
@@ -190,13 +191,6 @@ int run_single(const ResampleArgs& a, ResampleOptions opt) {
                run.output_frames, how, methods, translation_interp_name(opt.translation), run.seconds);
   }
   return kExitOk;
-}
-
-std::string csv_field(const std::string& text) {
-  if (text.find_first_of(",\"\n") == std::string::npos) return text;
-  std::string q = "\"";
-  for (char c : text) q += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return q + "\"";
 }
 
 Status write_manifest(const std::string& path, const std::vector<FileRun>& runs, const ResampleOptions& opt) {

@@ -8,8 +8,9 @@
 // Quality: for each method, the keys kept over all clips (rotation + translation
 // keys, % of frames × tracks), the largest shell error and the joint-frames over the
 // budget — measured here, not by the selection: each clip is rebuilt from the kept
-// frames (rebuild_rotations, TranslationCurve), posed by forward_kinematics and
-// compared by accumulate_pose_error (clip/metrics.h), ancestors rebuilt too.
+// keys (the method through the result's rotation keys, TranslationCurve), posed by
+// forward_kinematics and compared by accumulate_pose_error (clip/metrics.h),
+// ancestors rebuilt too. Translations are linear in every row, as the baseline's.
 // The baseline is ozz's AnimationOptimizer as published: each track decimated on its
 // own by RDP (keep the worst frame of a span while it is over the tolerance, recurse),
 // rotations rebuilt by slerp and measured as the displacement of a point at the
@@ -56,9 +57,11 @@ struct Input {
   double unit = 1.0;  // metres per clip unit
 };
 
-// The kept frames of every track of a clip (rotation; translation where it has one).
+// The kept keys of every track of a clip: rotation keys (times and values); the
+// kept frames of each translation track (values: the source's).
 struct Kept {
-  std::vector<std::vector<std::size_t>> rotation, translation;
+  std::vector<RotationTrack> rotation;
+  std::vector<std::vector<std::size_t>> translation;
 };
 
 // RDP on frames [a, b] of one track: `error(f, a, b)` is the error at f of the span's
@@ -99,7 +102,7 @@ Kept ozz_baseline(const Clip& clip, const DenseClip& d, double tol, double shell
       return 2.0 * std::sin(0.5 * angular_distance(q[f], r)) * length[j];
     }, keep);
     std::sort(keep.begin(), keep.end());
-    k.rotation.push_back(keep);
+    k.rotation.push_back(decimated_track(t, q, keep));
     keep = {0, frames - 1};
     if (clip.translations[j]) {
       const auto& p = d.translation[j];
@@ -129,8 +132,9 @@ void measure(const Input& in, const DenseClip& d, const Kept& kept, const std::s
   std::vector<std::vector<Quat>> rot(n);
   std::vector<std::vector<Vec3>> pos(n);
   for (std::size_t j = 0; j < n; ++j) {
-    rot[j] = *rebuild_rotations(method, d.grid.times, d.rotation[j], kept.rotation[j]);
-    q.kept += kept.rotation[j].size();
+    rot[j].resize(frames);
+    (*make_interpolator(method, kept.rotation[j]))->evaluate(d.grid.times.data(), frames, rot[j].data());
+    q.kept += kept.rotation[j].keys.size();
     q.source += frames;
     if (clip.translations[j]) {
       TranslationTrack t;
@@ -203,6 +207,7 @@ int main(int argc, char** argv) {
   auto options_for = [&](const Input& in, const std::string& method) {
     ReduceOptions o;
     o.method = method;
+    o.translation = TranslationInterp::linear;  // the baseline's lerp: rows differ by rotation method and selection
     o.budget.shell = o.budget.translation = mm / 1000.0 / in.unit;
     o.shell_distance = cm / 100.0 / in.unit;
     return o;
@@ -277,9 +282,10 @@ int main(int argc, char** argv) {
         continue;
       }
       Kept k;
-      for (const ReducedJoint& j : red->joints) k.rotation.push_back(j.rotation_frames), k.translation.push_back(j.translation_frames);
+      k.rotation = red->reduced.rotations;
+      for (const ReducedJoint& j : red->joints) k.translation.push_back(j.translation_frames);
       const double tol = mm / 1000.0 / in.unit, shell = cm / 100.0 / in.unit;
-      measure(in, dense[i], k, m.name, TranslationInterp::cubic, tol, shell, q);
+      measure(in, dense[i], k, m.name, TranslationInterp::linear, tol, shell, q);
     }
     std::printf("| %s | %zu | %.2f | %.3f | %.4f | %zu | %.3f | %.2f |\n", m.name.c_str(), q.kept, pct(q),
                 double(q.kept) / double(base.kept), q.max_shell * 1000.0, q.over, cpu, cpu / import_cpu);

@@ -2,10 +2,12 @@
 // interpolator, stays within an error budget at EVERY source frame.
 //
 // The source is the clip's motion at its frames (clip/frames.h: dense_clip). For
-// each joint the kept keys are a subset of those frames, always including the first
-// and the last; the rebuilt clip is each joint's rotation through its kept keys with
-// the method (interp/interpolator.h) and each translation track through its kept
-// keys with the translation curve (clip/translation_curve.h).
+// each joint the kept keys lie at a subset of those frames, always including the
+// first and the last; the rebuilt clip is each joint's rotation through its kept
+// keys with the method (interp/interpolator.h) and each translation track through
+// its kept keys with the translation curve (clip/translation_curve.h). Translation
+// keys hold the source's values; rotation keys may hold FITTED values (below), so
+// the keys are those of `ReduceResult::reduced`, not the source at the kept frames.
 //
 // Budgets (each joint's may be overridden; a budget of 0 is not applied):
 //  * rotation_deg — the joint's local rotation error: the geodesic angle between the
@@ -17,27 +19,35 @@
 //    and translations), so that errors cannot pile up down a chain.
 //  * translation — the local translation error of a joint's translation track
 //    (|source − rebuilt|, clip units). Every joint with a translation track needs
-//    one (> 0).
+//    one (> 0). With a shell budget the track is held to half of that too (its
+//    error moves the joint's whole subtree).
 //
 // The selection (per joint, parents before children):
 //  1. insertion: from the first and last frame, insert into every key interval
-//     whose worst frame is over budget that worst frame; repeat until no frame is;
+//     whose worst frame is over budget that worst frame, with the source's value;
+//     repeat until no frame is;
 //  2. removal: try removing each interior key in turn, keep it removed if every
 //     frame between its second neighbours on either side stays within budget (the
-//     curve rebuilt from the nearby keys);
+//     curve rebuilt from the nearby keys); if not, and if that is at most 1.25 times
+//     the budget, refit the values of its two neighbouring keys (Gauss–Newton on the
+//     budget's own residuals: angle vector, shell vertices, children's positions,
+//     reweighted towards the largest) and keep it removed if that brings every
+//     frame between its third neighbours within budget;
 //  3. verification at every frame with the whole track; where a global method
 //     (c2, bf, expmap-c2) moved beyond the checked window, back to 1 (insertion
-//     only).
+//     only; a key frame over budget gets the source's value back).
 // With a shell budget, each joint also holds its children's positions within 90 %
 // of their budget (leaving them room for their own keys), and a frame that a joint
-// cannot meet even keyed itself (its ancestors' rebuilt motion already puts its vertices beyond the budget) becomes a
-// key of its own translation track, else of the nearest ancestors not yet keyed
-// there — as many of them, nearest first, as it takes to meet the budget at that
-// frame; their subtrees are then verified again (insertion only). Keys only
-// grow in these repairs, so the loop ends; a frame keyed on a joint and all its
-// ancestors is reproduced exactly (to the methods' 1e-9 rad at keys).
+// cannot meet even keyed itself (its ancestors' rebuilt motion already puts its
+// vertices beyond the budget) becomes a key, with the source's value, of the tracks
+// that lower its error there — its own translation, its ancestors' rotations and
+// translations, nearest first — as many as it takes; their subtrees are then
+// verified again (insertion only). Keys only grow in these repairs and fitted values
+// only return to the source's, so the loop ends; a frame keyed with the source's
+// values on a joint and all its ancestors is reproduced exactly (to the methods'
+// 1e-9 rad at keys).
 // The result is near-minimal, not minimal (finding the minimum is a search over
-// subsets for the non-local methods).
+// subsets and values for the non-local methods).
 #pragma once
 
 #include "rotinterp/clip/clip.h"
@@ -92,11 +102,5 @@ struct ReduceResult {
 // finite number ≥ 0, no budget at all for a joint, a translation track without a
 // translation budget, a shell budget without a shell distance.
 Result<ReduceResult> reduce_clip(const Clip& clip, const ReduceOptions& options);
-
-// Rebuilds a joint's rotation at the frames `times` from its kept frames (the same
-// construction the selection checks): decimated_track + the method. Used by callers
-// that measure a reduction themselves.
-Result<std::vector<Quat>> rebuild_rotations(const std::string& method, const std::vector<double>& times,
-                                            const std::vector<Quat>& source, const std::vector<std::size_t>& kept);
 
 }  // namespace rotinterp

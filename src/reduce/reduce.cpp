@@ -71,7 +71,7 @@ constexpr int kRefitIterations = 2;
 // Gaussian in time whose neighbour at 1/120 s weighs half the frame itself (at 30 Hz
 // a neighbour weighs 2e-5: nothing changes). Capture noise at 100–120 Hz is what it
 // removes, which the C² splines would otherwise carry through every key: on CMU
-// 01_01 at 1 mm at 10 cm c2 keeps 9 % fewer keys, bf 7 %; slerp as many.
+// 01_01 at 1 mm at 10 cm c2 keeps 8 % fewer keys, bf 7 %; slerp as many.
 constexpr double kStartSmoothing = 0.0070771;  // s: (1/120) / √(2 ln 2)
 // The least weight of a frame in a refit, relative to the worst one's before the 6th
 // power: frames within budget still pull (so that the worst one is not traded for them).

@@ -82,8 +82,9 @@ constexpr double kRefitWeightFloor = 0.5;
 // are measured again (the curve rebuilt from the keys around them, as in step 2), or
 // every frame when those spans cover most of them; "none over budget" is always
 // confirmed over every frame with the whole track. A new key takes its start value
-// (rotations: the source smoothed, below); a key frame over budget (a fitted value its ancestors' later keys moved
-// away from) gets the source's value back.
+// (rotations: the source smoothed by kStartSmoothing); a key frame over budget (a
+// fitted value that its ancestors' later keys moved away from) gets the source's
+// value back.
 Status insert_worst(std::vector<std::size_t>& keys, std::size_t frames, const ErrorFn& err, const KeyValues* values,
                     std::vector<double>& e) {
   e.resize(frames);

@@ -238,7 +238,7 @@ int run_reduce(const ReduceArgs& a) {
   nlohmann::json budgets = {{"tolerance_deg", deg > 0.0 ? nlohmann::json(deg) : nlohmann::json(nullptr)},
                             {"tolerance_mm", mm > 0.0 ? nlohmann::json(mm) : nlohmann::json(nullptr)},
                             {"shell_distance_cm", mm > 0.0 ? nlohmann::json(shell_cm) : nlohmann::json(nullptr)},
-                            {"translation_tolerance_mm", mm > 0.0 ? mm : kDefaultToleranceMm},
+                            {"translation_tolerance_mm", translation_tolerance({deg, mm, mm > 0.0 ? mm : kDefaultToleranceMm})},
                             {"metres_per_unit", unit}};
   nlohmann::json per = nlohmann::json::object();
   for (const JointBudget& b : per_joint) {

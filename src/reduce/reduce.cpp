@@ -32,9 +32,7 @@ constexpr double kFloorLimit = 1.0 - 1e-6;
 // clips at 1 mm at 10 cm (slerp): 2.5 % fewer keys in all than without (0.5: 13 %
 // more, 0.8: 1 % fewer).
 constexpr double kChildShare = 0.9;
-// With a shell budget, a translation track is held to this share of its joint's shell
-// budget too (when that is below its translation budget): otherwise a root's
-// translation error may take every descendant's whole budget. Measured at 1 mm at
+// translation_tolerance's share of the shell budget. Measured at 1 mm at
 // 10 cm (slerp, linear translations): CMU 01_01 25 055 → 22 060 keys (0.25: 21 965,
 // but more in all over the shared clips in bench_reduce); the Bandai walk and the
 // Xbox jump within 0.3 %.
@@ -313,12 +311,8 @@ class Reducer {
   // The translation track of j: keys, then its rebuilt values at every frame.
   Status select_translation(std::size_t j, bool removal, std::vector<double>& e) {
     if (!clip_.translations[j]) return Ok{};
-    // A joint's translation error moves its own vertices and its whole subtree: with a
-    // shell budget it gets a share of it, so that the rotations keep room.
-    const ReduceBudget& b = budget_[j];
-    const double tol = b.shell > 0.0 ? std::min(b.translation, kTranslationShare * b.shell) : b.translation;
+    const double tol = budget_[j].translation;
     const std::vector<Vec3>& src = dense_.translation[j];
-    std::vector<Vec3> buf;
     ErrorFn err = [&](const std::vector<std::size_t>& keys, std::size_t lo, std::size_t hi, double* out) -> Status {
       const TranslationCurve curve(translation_keys(times(), src, keys), o_.translation);
       for (std::size_t f = lo; f <= hi; ++f) out[f - lo] = (curve.evaluate(times()[f]) - src[f]).norm() / tol;
@@ -374,29 +368,26 @@ class Reducer {
     const std::size_t frames = hi - lo + 1, rows = 3 * static_cast<std::size_t>(blocks), params = 3 * free.size();
     std::vector<Quat> start(free.size());
     for (std::size_t k = 0; k < free.size(); ++k) start[k] = value_[j][free[k]];
-    Eigen::VectorXd r(frames * rows), rp(frames * rows), err(frames);
+    // Residuals and frame errors of the values as they are now; the worst error.
+    Eigen::VectorXd r(frames * rows), rp(frames * rows), err(frames), errp(frames);
     Eigen::MatrixXd jac(frames * rows, params);
-    auto measure = [&](Eigen::VectorXd& out, double* worst) -> Status {
+    auto measure = [&](Eigen::VectorXd& out, Eigen::VectorXd& e) -> Result<double> {
       auto q = rebuild(j, keys, lo, hi);
       if (!q) return make_error(q.error());
-      double w = 0.0;
-      for (std::size_t f = 0; f < frames; ++f) {
-        const double e = residual(lo + f, (*q)[f], out.data() + f * rows);
-        if (worst) err[static_cast<Eigen::Index>(f)] = e;
-        w = std::max(w, e);
-      }
-      if (worst) *worst = w;
-      return Ok{};
+      for (std::size_t f = 0; f < frames; ++f)
+        e[static_cast<Eigen::Index>(f)] = residual(lo + f, (*q)[f], out.data() + f * rows);
+      return e.maxCoeff();
     };
-    double worst = 0.0;
-    if (Status s = measure(r, &worst); !s) return make_error(s.error());
+    auto first = measure(r, err);
+    if (!first) return make_error(first.error());
+    double worst = *first;
     constexpr double kStep = 1e-6;  // rad: the forward difference
     for (int iteration = 0; iteration < kRefitIterations; ++iteration) {
       for (std::size_t p = 0; p < params; ++p) {
         Quat& v = value_[j][free[p / 3]];
         const Quat keep = v;
         v = apply_moving(keep, RotVec(Vec3::Unit(static_cast<Eigen::Index>(p % 3)) * kStep));
-        if (Status s = measure(rp, nullptr); !s) return make_error(s.error());
+        if (auto m = measure(rp, errp); !m) return make_error(m.error());
         v = keep;
         jac.col(static_cast<Eigen::Index>(p)) = (rp - r) / kStep;
       }
@@ -418,13 +409,14 @@ class Reducer {
       for (double t = 1.0; t >= 1.0 / 16 && !better; t *= 0.5) {
         for (std::size_t k = 0; k < free.size(); ++k)
           value_[j][free[k]] = apply_moving(before[k], RotVec(t * step.segment<3>(static_cast<Eigen::Index>(3 * k))));
-        double now = 0.0;
-        if (Status s = measure(rp, &now); !s) return make_error(s.error());
-        if (now <= 1.0) return true;
-        if (now < worst) better = true, worst = now;
+        auto now = measure(rp, errp);
+        if (!now) return make_error(now.error());
+        if (*now <= 1.0) return true;
+        if (*now < worst) better = true, worst = *now;
       }
       if (!better) break;
       r.swap(rp);
+      err.swap(errp);
     }
     for (std::size_t k = 0; k < free.size(); ++k) value_[j][free[k]] = start[k];
     return false;
@@ -709,6 +701,10 @@ bool valid_budget_value(double v) { return std::isfinite(v) && v >= 0.0; }
 
 }  // namespace
 
+double translation_tolerance(const ReduceBudget& b) {
+  return b.shell > 0.0 ? std::min(b.translation, kTranslationShare * b.shell) : b.translation;
+}
+
 Result<ReduceResult> reduce_clip(const Clip& clip, const ReduceOptions& o) {
   if (Status s = clip.validate(); !s) return make_error(s.error());
   if (!find_method(o.method)) return make_error("unknown method '" + o.method + "' (valid: " + method_names() + ")");
@@ -733,6 +729,7 @@ Result<ReduceResult> reduce_clip(const Clip& clip, const ReduceOptions& o) {
     if (b.shell > 0.0 && !(std::isfinite(o.shell_distance) && o.shell_distance > 0.0))
       return make_error("a shell budget needs a shell distance > 0");
   }
+  for (ReduceBudget& b : budgets) b.translation = translation_tolerance(b);
   return Reducer(clip, o, std::move(budgets)).run();
 }
 

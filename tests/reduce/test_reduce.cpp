@@ -207,6 +207,18 @@ TEST(ReduceCli, EveryMethodKeepsEveryFrameWithinBothBudgetsRebuiltFromTheWritten
     const nlohmann::json doc = nlohmann::json::parse(slurp(out));
     const Motion test = rebuild_from_json(doc, ref, TranslationInterp::cubic);
     const Measured m = measure(*source, ref, test, 0.10 / unit);
+    // The file states the translation budget the tracks were held to (half the shell
+    // budget's 1 mm), and each rebuilt track keeps it.
+    const double translation_mm = doc["budget"]["translation_tolerance_mm"];
+    EXPECT_DOUBLE_EQ(translation_mm, translation_tolerance({0.5, 1.0, 1.0}));
+    EXPECT_LT(translation_mm, 1.0);
+    for (std::size_t j = 0; j < source->skeleton.joints.size(); ++j) {
+      if (!source->translations[j]) continue;
+      double worst = 0.0;
+      for (std::size_t f = 0; f < ref.grid.size(); ++f)
+        worst = std::max(worst, (test.translation[j][f] - ref.translation[j][f]).norm() * unit * 1000.0);
+      EXPECT_LE(worst, translation_mm * (1 + 1e-9)) << method.name << " " << source->skeleton.joints[j].name;
+    }
     std::size_t kept = 0;
     for (std::size_t j = 0; j < m.angle.size(); ++j) {
       EXPECT_LE(m.angle[j], 0.5 * kDeg * (1 + 1e-9)) << method.name << " " << source->skeleton.joints[j].name;

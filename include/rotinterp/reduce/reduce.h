@@ -20,7 +20,7 @@
 //  * translation — the local translation error of a joint's translation track
 //    (|source − rebuilt|, clip units). Every joint with a translation track needs
 //    one (> 0). With a shell budget the track is held to half of that too (its
-//    error moves the joint's whole subtree).
+//    error moves the joint's whole subtree): translation_tolerance.
 //
 // The selection (per joint, parents before children):
 //  1. insertion: from the first and last frame, insert into every key interval
@@ -83,7 +83,7 @@ struct ReduceOptions {
 struct ReducedJoint {
   std::vector<std::size_t> rotation_frames;     // kept frames (indices of the grid), sorted
   std::vector<std::size_t> translation_frames;  // the same for its translation track; empty without one
-  ReduceBudget budget;                          // the budget applied
+  ReduceBudget budget;                          // the budget applied (translation: translation_tolerance)
   // The largest errors over every frame of the final rebuilt clip.
   double max_rotation_error = 0.0;     // rad
   double max_shell_error = 0.0;        // clip units (0 without a shell budget)
@@ -97,6 +97,12 @@ struct ReduceResult {
   std::size_t source_keys = 0;  // frames × (joints + translation tracks)
   std::size_t kept_keys = 0;    // rotation + translation keys kept
 };
+
+// The translation error a joint's translation track is held to: its translation
+// budget, and with a shell budget at most half of that — a joint's translation error
+// moves its own vertices and its whole subtree, and left the whole shell budget a
+// root's would leave its descendants none.
+double translation_tolerance(const ReduceBudget& budget);
 
 // Errors: an invalid clip, an unknown method or joint name, a budget that is not a
 // finite number ≥ 0, no budget at all for a joint, a translation track without a

@@ -4,6 +4,7 @@
 set -euo pipefail
 packages=(
   build-essential cmake pkg-config git
+  ccache                   # compiler cache: a second build rebuilds only what changed (docs/development.md)
   libeigen3-dev            # rotation math
   libassimp-dev            # reading BVH/FBX/glTF/Collada, exporting FBX/glTF/Collada
   libcli11-dev             # command line
@@ -19,6 +20,7 @@ packages=(
   libglm-dev               # test-only reference for squad
   python3-dev pybind11-dev python3-numpy   # the Python module (import rotinterp)
   python3-pytest python3-scipy             # its tests: pytest, scipy as the reference
+  python3-matplotlib       # docs/python.md plots its example
   time                     # /usr/bin/time: peak memory in bench/memory.sh
   blender python3-numpy    # tests/clients: Blender imports what rotinterp writes (its glTF importer needs numpy)
   assimp-utils             # tests/clients: `assimp info` reads every BVH rotinterp writes

@@ -312,7 +312,7 @@ Clip make_clip(const std::vector<std::string>& names, const py::handle& parents_
   Clip c;
   c.name = name;
   c.source_format = "python";
-  c.unit_scale = unit_scale;
+  c.unit = {unit_scale, UnitOrigin::given, "given: make_clip(unit_scale=)"};
   for (std::size_t j = 0; j < nj; ++j) {
     Joint joint;
     joint.name = names[j];
@@ -589,7 +589,7 @@ PYBIND11_MODULE(_rotinterp, m) {
       .def_readonly("frame_time", &Clip::frame_time)
       .def_property_readonly("rate", &rate_hz)
       .def_property_readonly("rate_text", &rate_text)
-      .def_readonly("unit_scale", &Clip::unit_scale)
+      .def_property_readonly("unit_scale", [](const Clip& c) { return c.unit.metres_per_unit; })
       .def_readonly("source_format", &Clip::source_format)
       .def_property_readonly("frame_count", &Clip::frame_count)
       .def("__repr__", [](const Clip& c) {

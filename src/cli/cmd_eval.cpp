@@ -1,5 +1,6 @@
 // rotinterp eval PATH... | eval --merge DIR... -o DIR: batch angular-error evaluation.
 #include "common.h"
+#include "rotinterp/clip/units.h"
 #include "rotinterp/eval/batch.h"
 #include "rotinterp/io/dataset.h"
 #include "rotinterp/eval/plots.h"
@@ -34,16 +35,17 @@ struct EvalArgs {
   std::string shard;
   std::vector<std::string> merge;
   int subframe = 0;
-  double shell_m = kDefaultShellDistanceMetres;
+  // Lengths as the user writes them, their defaults the library's (metres → cm text).
+  std::string shell_distance = fmt::format("{}cm", kDefaultShellDistanceMetres * 100);
   bool no_plots = false;
   bool truth = false;
   bool quiet = false;
   std::string anim;
   long long min_frames = 0;
   std::string feet;
-  double contact_height_m = kDefaultContactHeightMetres;
-  double contact_speed_mps = kDefaultContactSpeedMps;
-  std::optional<double> floor_m;
+  std::string contact_height = fmt::format("{}cm", kDefaultContactHeightMetres * 100);
+  std::string contact_speed = fmt::format("{}m/s", kDefaultContactSpeedMps);
+  std::string floor, unit;
   std::string per_frame;
   std::string table = "text";
 };
@@ -110,7 +112,9 @@ int run(const EvalArgs& a) {
     o.clip.keep_every.erase(std::unique(o.clip.keep_every.begin(), o.clip.keep_every.end()), o.clip.keep_every.end());
     if (o.clip.keep_every.empty()) return fail_usage("--keep-every needs at least one value");
     o.clip.subframe = a.subframe;
-    o.clip.shell_distance_m = a.shell_m;
+    auto shell = parse_length(a.shell_distance);
+    if (!shell) return fail_usage("--shell-distance: " + shell.error());
+    o.clip.shell_distance_m = *shell;
     o.jobs = a.jobs;
     if (!a.shard.empty()) {
       auto s = parse_shard(a.shard);
@@ -122,9 +126,20 @@ int run(const EvalArgs& a) {
     o.animation = a.anim;
     o.clip.min_frames = static_cast<std::size_t>(a.min_frames);
     o.clip.feet.feet = split_comma_list(a.feet);
-    o.clip.feet.contact_height_m = a.contact_height_m;
-    o.clip.feet.contact_speed_mps = a.contact_speed_mps;
-    o.clip.feet.floor_m = a.floor_m;
+    auto contact_height = parse_length(a.contact_height);
+    if (!contact_height) return fail_usage("--contact-height: " + contact_height.error());
+    auto contact_speed = parse_speed(a.contact_speed);
+    if (!contact_speed) return fail_usage("--contact-speed: " + contact_speed.error());
+    o.clip.feet.contact_height_m = *contact_height;
+    o.clip.feet.contact_speed_mps = *contact_speed;
+    if (!a.floor.empty()) {
+      auto floor = parse_signed_length(a.floor);
+      if (!floor) return fail_usage("--floor: " + floor.error());
+      o.clip.feet.floor_m = *floor;
+    }
+    auto unit = parse_unit_option(a.unit);
+    if (!unit) return fail_usage(unit.error());
+    o.unit = *unit;
     if (!a.per_frame.empty()) {
       auto q = parse_per_frame(a.per_frame);
       if (!q) return fail_usage(q.error());
@@ -184,9 +199,9 @@ void add_eval_command(CLI::App& app, int& exit_code) {
   sub->add_option("--subframe", args->subframe,
                   "Also measure K evenly spaced times between frames, against the original's slerp")
       ->capture_default_str()->check(CLI::Range(0, 1000));
-  sub->add_option("--shell-distance", args->shell_m,
-                  "Virtual-vertex distance in metres (converted by each clip's unit scale)")
-      ->capture_default_str()->check(CLI::PositiveNumber);
+  sub->add_option("--shell-distance", args->shell_distance,
+                  "Virtual-vertex distance: a length (3cm); a bare number is metres (converted by each clip's unit)")
+      ->capture_default_str();
   sub->add_flag("--truth", args->truth,
                 "Compare with the analytic motion of synth clips (CLIP.synth, from rotinterp synth) at every "
                 "frame and subframe; a clip without one fails");
@@ -198,21 +213,17 @@ void add_eval_command(CLI::App& app, int& exit_code) {
       ->capture_default_str()->check(CLI::Range(0LL, 1000000000LL));
   sub->add_option("--feet", args->feet,
                   "Comma-separated foot joints for foot skating (default: found by name, CMU/Mixamo/Bandai/Blender rigs)");
-  sub->add_option("--floor", args->floor_m,
-                  "Floor height (Y up) in metres, converted by each clip's unit (default: the lowest foot height)")
-      ->check(CLI::Validator(
-          [](std::string& text) {
-            char* end = nullptr;
-            const double v = std::strtod(text.c_str(), &end);
-            return end != text.c_str() && *end == '\0' && std::isfinite(v) ? std::string() : "must be a finite number";
-          },
-          "METRES"));
-  sub->add_option("--contact-height", args->contact_height_m,
-                  "Foot contact: height above the floor below which a foot may touch it, metres")
-      ->capture_default_str()->check(CLI::PositiveNumber);
-  sub->add_option("--contact-speed", args->contact_speed_mps,
-                  "Foot skating: horizontal speed of a foot in contact above which it slides, m/s")
-      ->capture_default_str()->check(CLI::PositiveNumber);
+  sub->add_option("--floor", args->floor,
+                  "Floor height (Y up): a length (-2cm); a bare number is metres (default: the lowest foot height)");
+  sub->add_option("--contact-height", args->contact_height,
+                  "Foot contact: height above the floor below which a foot may touch it: a length; a bare number is "
+                  "metres")
+      ->capture_default_str();
+  sub->add_option("--contact-speed", args->contact_speed,
+                  "Foot skating: horizontal speed of a foot in contact above which it slides: m/s, cm/s or mm/s; a "
+                  "bare number is m/s")
+      ->capture_default_str();
+  add_unit_option(*sub, args->unit);
   sub->add_option("--per-frame", args->per_frame,
                   "Also write DIR/per_frame.csv: the angle error of every joint at every sample, for CLIP,METHOD,N "
                   "(CLIP as in errors.csv)");

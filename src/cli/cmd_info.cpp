@@ -31,7 +31,7 @@ namespace {
 
 struct InfoArgs {
   std::vector<std::string> paths;
-  std::string anim;
+  std::string anim, unit;
   bool json = false;
   bool summary = false;
   int jobs = 0;
@@ -46,7 +46,26 @@ struct FileSummary {
   std::optional<Rate> rate;  // as recognized
   double duration = 0.0;
   std::vector<std::string> notes;  // oddities, the rate label, empty clip, copies
+  ClipUnit unit;
 };
+
+// The clip's unit as info --json gives it (one shape for one file and --summary).
+nlohmann::json unit_json(const ClipUnit& u) {
+  return {{"name", unit_name(u.metres_per_unit)},
+          {"metres_per_unit", u.metres_per_unit},
+          {"origin", unit_origin_name(u.origin)},
+          {"reason", u.reason}};
+}
+
+// The reading options of both forms of info: --anim and --unit.
+Result<ReadOptions> info_read_options(const InfoArgs& args) {
+  ReadOptions options;
+  options.animation = args.anim;
+  auto unit = parse_unit_option(args.unit);
+  if (!unit) return unit.failure();
+  options.unit = *unit;
+  return options;
+}
 
 FileSummary summarize(const std::string& file, const ReadOptions& options) {
   FileSummary s;
@@ -65,6 +84,7 @@ FileSummary summarize(const std::string& file, const ReadOptions& options) {
   s.frame_time = frame_time_text(clip);
   s.rate = clip_rate(clip);
   s.duration = clip.end_time() - clip.start_time();
+  s.unit = clip.unit;
   if (!(s.duration > 0.0)) s.notes.push_back(fmt::format("zero-length clip ({} frame{})", s.frames, s.frames == 1 ? "" : "s"));
   if (std::string note = rate_label_note(clip); !note.empty()) s.notes.push_back(note);
   for (const std::string& o : clip_oddities(clip)) s.notes.push_back(o);
@@ -78,8 +98,9 @@ int run_summary(const InfoArgs& args) {
   std::vector<std::filesystem::path> named(args.paths.begin(), args.paths.end());
   auto files = discover_inputs(named);
   if (!files) return fail(files.error());
-  ReadOptions options;
-  options.animation = args.anim;
+  auto read_options = info_read_options(args);
+  if (!read_options) return fail_usage(read_options.error());
+  ReadOptions options = *read_options;
   // Warnings belong to the files' rows, not to stderr.
   options.on_warning = [](const std::string&) {};
   WorkQueue queue(static_cast<unsigned>(args.jobs));
@@ -140,6 +161,7 @@ int run_summary(const InfoArgs& args) {
                     {"frame_rate", s.rate ? nlohmann::json(s.rate->to_string()) : nlohmann::json(nullptr)},
                     {"frame_rate_hz", s.rate ? nlohmann::json(s.rate->hz()) : nlohmann::json(nullptr)},
                     {"duration_s", s.duration},
+                    {"unit", unit_json(s.unit)},
                     {"joints", s.joints},
                     {"notes", s.notes}});
       }
@@ -154,8 +176,8 @@ int run_summary(const InfoArgs& args) {
   } else {
     std::size_t width = 4;
     for (const FileSummary& s : rows) width = std::max(width, s.file.size());
-    fmt::print("{:<{}}  {:<6} {:>12} {:>10} {:>8} {:>10} {:>6}  {}\n", "file", width, "format", "rate", "frame time",
-               "frames", "duration", "joints", "notes");
+    fmt::print("{:<{}}  {:<6} {:>12} {:>10} {:>8} {:>10} {:>6}  {:<17} {}\n", "file", width, "format", "rate",
+               "frame time", "frames", "duration", "joints", "unit", "notes");
     for (const FileSummary& s : rows) {
       if (!s.error.empty()) {
         fmt::print("{:<{}}  unreadable: {}\n", s.file, width, s.error);
@@ -163,9 +185,10 @@ int run_summary(const InfoArgs& args) {
       }
       std::string notes;
       for (const std::string& n : s.notes) notes += (notes.empty() ? "" : "; ") + n;
-      fmt::print("{:<{}}  {:<6} {:>12} {:>10} {:>8} {:>9.3f}s {:>6}  {}\n", s.file, width, s.format,
+      fmt::print("{:<{}}  {:<6} {:>12} {:>10} {:>8} {:>9.3f}s {:>6}  {:<17} {}\n", s.file, width, s.format,
                  s.rate ? s.rate->to_string() + " Hz" : "none", s.frame_time.empty() ? "-" : s.frame_time, s.frames,
-                 s.duration, s.joints, notes);
+                 s.duration, s.joints,
+                 unit_name(s.unit.metres_per_unit) + " (" + unit_origin_name(s.unit.origin) + ")", notes);
     }
     fmt::print("\n{} file{}: {} read, {} unreadable, {} with notes, {} group{} of identical files\n", rows.size(),
                rows.size() == 1 ? "" : "s", rows.size() - unreadable, unreadable, flagged, copies.size(),
@@ -187,8 +210,9 @@ int run_info(const InfoArgs& args) {
   std::error_code ec;
   if (args.paths.size() != 1 || std::filesystem::is_directory(args.paths.front(), ec))
     return fail_usage("info describes one clip; for several files or a folder add --summary");
-  ReadOptions options;
-  options.animation = args.anim;
+  auto read_options = info_read_options(args);
+  if (!read_options) return fail_usage(read_options.error());
+  ReadOptions options = *read_options;
   options.on_warning = warn;
   const std::string& path = args.paths.front();
   Result<ClipFileInfo> info = inspect_clip(path, options);
@@ -199,8 +223,7 @@ int run_info(const InfoArgs& args) {
   const double duration = clip.end_time() - clip.start_time();
   // The rate every command uses (resample too): BVH ".0333330" is 30 Hz, NTSC 30000/1001.
   const std::optional<Rate> rate = clip_rate(clip);
-  // BVH has no unit.
-  const bool has_unit = info->format != "bvh";
+  const double size_m = first_pose_size(clip) * clip.unit.metres_per_unit;
   std::vector<int> depth(sk.joints.size(), 0);
   for (std::size_t j = 0; j < sk.joints.size(); ++j)
     if (sk.joints[j].parent >= 0) depth[j] = depth[static_cast<std::size_t>(sk.joints[j].parent)] + 1;
@@ -224,7 +247,8 @@ int run_info(const InfoArgs& args) {
     out["start_s"] = clip.start_time();
     out["end_s"] = clip.end_time();
     out["duration_s"] = duration;
-    out["unit_scale_m"] = has_unit ? nlohmann::json(clip.unit_scale) : nlohmann::json(nullptr);
+    out["unit"] = unit_json(clip.unit);
+    out["figure_size_m"] = size_m;
     out["folded_helpers"] = info->folded_helpers;
     nlohmann::json joints = nlohmann::json::array();
     nlohmann::json translated = nlohmann::json::array();
@@ -266,7 +290,8 @@ int run_info(const InfoArgs& args) {
     fmt::print("frame rate:  none (keys not on a uniform grid){}\n",
                clip.file_rate_hz > 0 ? fmt::format("; the file's own: {:.9g} Hz (resample's default)", clip.file_rate_hz) : "");
   fmt::print("duration:    {:.6g} s (keys from {:.6g} s to {:.6g} s)\n", duration, clip.start_time(), clip.end_time());
-  fmt::print("unit:        {}\n", has_unit ? fmt::format("{:.6g} m per unit", clip.unit_scale) : std::string("none (BVH has no unit)"));
+  fmt::print("unit:        {}\n", describe_unit(clip.unit));
+  fmt::print("size:        {:.3g} m (the first pose's largest side)\n", size_m);
   if (info->folded_helpers > 0) fmt::print("helpers:     {} $AssimpFbx$ helper nodes folded into their bones\n", info->folded_helpers);
   fmt::print("joints:      {} (+{} End Sites)\n", sk.joints.size(), sk.end_sites.size());
   for (std::size_t j = 0; j < sk.joints.size(); ++j) {
@@ -299,6 +324,7 @@ void add_info_command(CLI::App& app, int& exit_code) {
                   "files and folders (searched recursively)")
       ->required();
   sub->add_option("--anim", args->anim, "Animation to describe: name or 0-based index (default: the first)");
+  add_unit_option(*sub, args->unit);
   sub->add_flag("--json", args->json, "Print JSON instead of text");
   sub->add_flag("--summary", args->summary,
                 "One row per file (format, rate as read and as written, frames, duration, joints, notes), then the "

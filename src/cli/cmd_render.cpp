@@ -49,7 +49,7 @@ struct RenderArgs {
   double trail_window = 1.0;
   bool sheet = false;
   std::string backend;
-  std::string anim;
+  std::string anim, unit;
   std::string colour = "error";
   std::string camera;
   std::string focus;
@@ -124,6 +124,10 @@ int run_render(const RenderArgs& a) {
   protect_input(a.input);  // no frame written may replace it
   ReadOptions read_options;
   read_options.animation = a.anim;
+  auto unit = parse_unit_option(a.unit);
+  if (!unit) return fail_usage(unit.error());
+  read_options.unit = *unit;
+  read_options.on_warning = warn;
   auto clip = read_clip(a.input, read_options);
   if (!clip) return fail(clip.error());
   if (degenerate(*clip))
@@ -169,6 +173,7 @@ void add_render_command(CLI::App& app, int& exit_code) {
                   "frames drawn")
       ->default_val(1.0);
   sub->add_flag("--sheet", args->sheet, "Also write sheet.png: a row per method, a column per frame");
+  add_unit_option(*sub, args->unit);
   sub->add_option("--anim", args->anim, "Animation to read: its name or 0-based index (default: the first)");
   sub->add_option("--colour", args->colour,
                   "error: each bone coloured by its joint's angular error (viridis, one scale per frame, shared by "

@@ -1,11 +1,13 @@
 // rotinterp resample IN -o OUT [--fps HZ | --keep-every N] [--method NAME] [--method-for JOINT=NAME ...]
-//                    [--translation linear|cubic] [--range START:END] [--anim NAME|INDEX] [--bvh-order ZXY] [--quiet]
+//                    [--translation linear|cubic] [--range START:END] [--anim NAME|INDEX] [--bvh-order ZXY]
+//                    [--unit U] [--out-unit U] [--quiet]
 // rotinterp resample PATH... -o OUTDIR [the same] [-j N] [--shard I/N] [--skip-existing] [--format EXT]
 //                    [--manifest FILE.csv]: a whole dataset, its layout mirrored under OUTDIR.
 #include "common.h"
 #include "rotinterp/clip/frames.h"
 #include "rotinterp/clip/bvh_layout.h"
 #include "rotinterp/clip/resample.h"
+#include "rotinterp/clip/units.h"
 #include "rotinterp/core/work_queue.h"
 #include "rotinterp/eval/error_row.h"  // csv_field: the one CSV quoting
 #include "rotinterp/interp/interpolator.h"
@@ -49,6 +51,8 @@ struct ResampleArgs {
   int jobs = 0;
   std::string shard, format, manifest;
   bool skip_existing = false;
+  std::string unit, out_unit;  // as written; parsed into:
+  std::optional<double> unit_m, out_unit_m;  // metres per unit
 };
 
 // One file's run: a row of the manifest.
@@ -63,6 +67,8 @@ struct FileRun {
   std::size_t frames = 0, joints = 0, output_frames = 0;
   double duration = 0.0, seconds = 0.0;
   std::uintmax_t bytes = 0;  // of the input
+  ClipUnit unit;             // the input's (clip/units.h)
+  double output_metres_per_unit = 0.0;
 };
 
 // A number of seconds ≥ 0, or nothing for an empty text.
@@ -131,6 +137,8 @@ Status resample_file(FileRun& run, const ResampleArgs& a, const ResampleOptions&
   const auto started = std::chrono::steady_clock::now();
   ReadOptions read_options;
   read_options.animation = a.anim;
+  read_options.unit = a.unit_m;
+  read_options.on_warning = warn;
   stage("reading " + run.input);
   auto clip = read_clip(run.input, read_options);
   if (!clip) return clip.failure();
@@ -139,9 +147,12 @@ Status resample_file(FileRun& run, const ResampleArgs& a, const ResampleOptions&
   run.frames = clip->frame_count();
   run.joints = clip->skeleton.joints.size();
   run.duration = clip->end_time() - clip->start_time();
+  run.unit = clip->unit;
 
   auto out = resample_clip(*clip, opt);
   if (!out) return make_error(run.input + ": " + out.error());
+  if (a.out_unit_m) convert_unit(*out, *a.out_unit_m, "--out-unit " + a.out_unit);
+  run.output_metres_per_unit = out->unit.metres_per_unit;
   run.output_frames = out->frame_count();
   run.output_rate = clip_rate(*out);
 
@@ -187,8 +198,9 @@ int run_single(const ResampleArgs& a, ResampleOptions opt) {
     std::string methods = opt.method;
     if (!opt.method_for.empty()) methods += fmt::format(" (+{} per-joint override{})", opt.method_for.size(),
                                                         opt.method_for.size() == 1 ? "" : "s");
-    fmt::print("{} → {}: {} → {} frames ({}), method {}, translation {}, {:.3f} s\n", input, a.output, run.frames,
-               run.output_frames, how, methods, translation_interp_name(opt.translation), run.seconds);
+    fmt::print("{} → {}: {} → {} frames ({}), method {}, translation {}, {:.3f} s; unit {}{}\n", input, a.output,
+               run.frames, run.output_frames, how, methods, translation_interp_name(opt.translation), run.seconds,
+               describe_unit(run.unit), a.out_unit_m ? ", written in " + unit_name(*a.out_unit_m) : std::string());
   }
   return kExitOk;
 }
@@ -196,7 +208,7 @@ int run_single(const ResampleArgs& a, ResampleOptions opt) {
 Status write_manifest(const std::string& path, const std::vector<FileRun>& runs, const ResampleOptions& opt) {
   return write_file_atomically(path, [&](std::ostream& out) -> Status {
     out << "input,output,status,frame_time_written,rate_hz,rate,frames,duration_s,joints,output_frames,method,"
-           "seconds,message\n";
+           "seconds,message,metres_per_unit,unit\n";
     for (const FileRun& r : runs) {
       const bool read = r.status == "ok" || (r.status == "failed" && r.frames > 0);
       out << csv_field(r.input) << ',' << csv_field(r.output.string()) << ',' << r.status << ','
@@ -204,7 +216,9 @@ Status write_manifest(const std::string& path, const std::vector<FileRun>& runs,
           << (r.rate ? r.rate->to_string() : "") << ',' << (read ? std::to_string(r.frames) : "") << ','
           << (read ? fmt::format("{:.9g}", r.duration) : "") << ',' << (read ? std::to_string(r.joints) : "") << ','
           << (r.status == "ok" ? std::to_string(r.output_frames) : "") << ',' << csv_field(opt.method) << ','
-          << (r.status == "ok" ? fmt::format("{:.3f}", r.seconds) : "") << ',' << csv_field(r.message) << '\n';
+          << (r.status == "ok" ? fmt::format("{:.3f}", r.seconds) : "") << ',' << csv_field(r.message) << ','
+          << (read ? fmt::format("{}", r.unit.metres_per_unit) : "") << ','
+          << (read ? csv_field(describe_unit(r.unit)) : "") << '\n';
     }
     return Ok{};
   });
@@ -327,10 +341,21 @@ int run_folder(const ResampleArgs& a, ResampleOptions opt) {
   return failed > 0 ? kExitPartial : kExitOk;
 }
 
-int run_resample(const ResampleArgs& a) {
+int run_resample(ResampleArgs a) {
   // Everything that can be checked without the input is checked first (exit 2).
   auto opt = resample_options(a);
   if (!opt) return fail_usage(opt.error());
+  auto unit = parse_unit_option(a.unit);
+  if (!unit) return fail_usage(unit.error());
+  a.unit_m = *unit;
+  if (!a.out_unit.empty()) {
+    auto out_unit = parse_unit(a.out_unit);
+    if (!out_unit) return fail_usage("--out-unit: " + out_unit.error());
+    a.out_unit_m = *out_unit;
+    const std::string out_ext = a.format.empty() ? std::filesystem::path(a.output).extension().string() : "." + a.format;
+    if (out_ext == ".glb" || out_ext == ".gltf")
+      return fail_usage("--out-unit: glTF is always in metres (its spec); --out-unit is for bvh, fbx and dae");
+  }
   std::error_code ec;
   // One file in, one out, as always; a folder run when given a folder, several
   // inputs, --format, or an existing directory (not named like a clip) as output.
@@ -372,6 +397,10 @@ void add_resample_command(CLI::App& app, int& exit_code) {
   sub->add_option("--range", a->range,
                   "Cut START:END (seconds from the first frame; either side may be empty) before resampling");
   sub->add_option("--anim", a->anim, "Animation to read: its name or index (default the first)");
+  add_unit_option(*sub, a->unit);
+  sub->add_option("--out-unit", a->out_unit,
+                  "Unit of the written file: m, cm, mm, in, ft or metres per unit (default: the input's; glTF is "
+                  "always metres)");
   sub->add_option("--bvh-order", a->bvh_order,
                   "Euler order for BVH output of joints without a BVH layout (non-BVH input); default ZXY");
   sub->add_flag("--fbx-ascii", a->fbx_ascii, "FBX output as ASCII FBX 7.4 (default: binary FBX 7.4, which Blender needs)");

@@ -1,5 +1,9 @@
 #include "common.h"
 
+#include "rotinterp/clip/units.h"
+
+#include <CLI/CLI.hpp>
+
 #include <unistd.h>
 
 #include <algorithm>
@@ -66,6 +70,19 @@ Result<long long> parse_whole_option(const std::string& option, const std::strin
   if (v > static_cast<double>(max)) return make_error(option + " " + quoted + " is too large (a whole number " + range + ")");
   if (v != std::floor(v)) return make_error(option + " " + quoted + " is not a whole number (" + range + ")");
   return static_cast<long long>(v);
+}
+
+void add_unit_option(CLI::App& sub, std::string& unit) {
+  sub.add_option("--unit", unit,
+                 "Unit of a file that states none (BVH): m, cm, mm, in, ft or metres per unit. Default: inferred "
+                 "from the figure's size (info shows it); a file that declares its unit (FBX, glTF) keeps it");
+}
+
+Result<std::optional<double>> parse_unit_option(const std::string& text) {
+  if (text.empty()) return std::optional<double>();
+  auto v = parse_unit(text);
+  if (!v) return make_error("--unit: " + v.error());
+  return std::optional<double>(*v);
 }
 
 std::vector<std::string> split_comma_list(std::string_view text) {

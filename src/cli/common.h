@@ -5,6 +5,7 @@
 #include "rotinterp/core/progress.h"
 #include "rotinterp/core/result.h"
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -39,6 +40,12 @@ Result<Rate> parse_rate_option(const std::string& option, const std::string& tex
 // A whole-number option value in [min, max] ("12", also "1e3"); errors say which of
 // not a number / not whole / too small / too large it is.
 Result<long long> parse_whole_option(const std::string& option, const std::string& text, long long min, long long max);
+
+// --unit, on every command that reads clips: the unit of a file that states none
+// (m, cm, mm, in, ft or metres per unit; clip/units.h). One declaration, one help text.
+void add_unit_option(CLI::App& sub, std::string& unit);
+// --unit's text as metres per unit; empty text (not given) is none.
+Result<std::optional<double>> parse_unit_option(const std::string& text);
 
 // "a,b,,c" → {"a", "b", "c"}: the items of a comma-separated option, empty ones dropped.
 std::vector<std::string> split_comma_list(std::string_view text);

@@ -203,7 +203,7 @@ Result<Clip> resample_clip(const Clip& in, const ResampleOptions& options) {
   out.name = in.name;
   out.skeleton = in.skeleton;
   out.bvh_layout = in.bvh_layout;
-  out.unit_scale = in.unit_scale;
+  out.unit = in.unit;
   out.source_format = in.source_format;
   out.source_meshes = in.source_meshes;
   out.file_rate_hz = in.file_rate_hz;

@@ -219,8 +219,8 @@ Result<std::string> encode_fbx(const Clip& clip, FbxEncoding encoding) {
                          {"FrontAxisSign", 1}, {"CoordAxis", 0}, {"CoordAxisSign", 1}, {"OriginalUpAxis", 1},
                          {"OriginalUpAxisSign", 1}})
     doc.p_int(name, "int", "Integer", v);
-  doc.p_double("UnitScaleFactor", 100.0 * clip.unit_scale);
-  doc.p_double("OriginalUnitScaleFactor", 100.0 * clip.unit_scale);
+  doc.p_double("UnitScaleFactor", 100.0 * clip.unit.metres_per_unit);
+  doc.p_double("OriginalUnitScaleFactor", 100.0 * clip.unit.metres_per_unit);
   doc.p("TimeMode", "enum", "", "").i32(rate ? fbx_time_mode(rate->num, rate->den) : kTimeModeDefault);
   e.end();
   doc.p_time("TimeSpanStart", first);

@@ -8,7 +8,7 @@
 //  * one AnimationStack and AnimationLayer spanning exactly the clip's first to last
 //    key; `GlobalSettings` with the clip's rate (TimeMode where FBX has a mode for
 //    it, else custom + CustomFrameRate), Y up, Z front, X right (right-handed,
-//    as BVH), UnitScaleFactor = centimetres per clip unit (100 × unit_scale);
+//    as BVH), UnitScaleFactor = centimetres per clip unit (100 × metres per unit);
 //  * per joint an AnimationCurveNode "R" (and "T" where the joint has a translation
 //    track) with one AnimationCurve per axis and a key at every key time of the
 //    clip (the union over all joints), linear; Euler angles in degrees in the

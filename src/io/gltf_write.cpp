@@ -2,7 +2,7 @@
 
 #include "little_endian.h"
 
-#include "rotinterp/clip/metrics.h"
+#include "rotinterp/clip/clip.h"
 #include "rotinterp/clip/resample.h"
 #include "rotinterp/clip/translation_curve.h"
 #include "rotinterp/interp/gltf_cubic.h"
@@ -149,7 +149,7 @@ Result<Document> build(const Clip& clip, const GltfKeys& keys) {
   const std::vector<double> times = keys.own_times ? std::vector<double>{} : all_key_times(clip);
   // glTF's unit is the metre: translations are converted with the clip's unit scale
   // (an FBX in centimetres keeps its real size; BVH, which has none, is taken as is).
-  const double metres = 1.0 / metres_in_clip_units(clip, 1.0);
+  const double metres = 1.0 / in_clip_units(clip, 1.0);
   Builder b;
 
   const int input = keys.own_times ? -1 : time_accessor(b, times);

@@ -33,7 +33,7 @@ TEST(BlenderReduce, SparseGlbIsOneArmatureWithinTheBudgetAtEveryKey) {
       {"linear.glb", "--method slerp --translation linear"}, {"cubic.glb", "--method gltf-cubic"}};
   std::string paths;
   for (const auto& [name, args] : files) {
-    const auto r = run_cli("reduce " + source + " -o " + (dir / name).string() + " " + args + " --tolerance-deg 1 --tolerance-mm 2 -q");
+    const auto r = run_cli("reduce " + source + " -o " + (dir / name).string() + " " + args + " --tolerance 1deg,2mm -q");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     paths += " " + (dir / name).string();
   }

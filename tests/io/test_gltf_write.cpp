@@ -53,7 +53,7 @@ TEST(GltfWrite, SkinCoversEveryJointWithTheRestPosesInverseBindMatrices) {
   std::memcpy(m.data(), bin.data() + view["byteOffset"].get<std::size_t>(), m.size() * 4);
   // glTF's unit is the metre: this FBX is in centimetres (unit scale 0.01), so node
   // translations and the matrices' translations are its offsets × 0.01.
-  const double metres = clip.unit_scale;
+  const double metres = clip.unit.metres_per_unit;
   ASSERT_EQ(metres, 0.01);
   for (std::size_t j = 0; j < n; ++j)
     for (int a = 0; a < 3; ++a)

@@ -59,7 +59,7 @@ double figure_height(const BlenderImport& source) {
   return hi - lo;
 }
 
-Deviation worst_deviation(const BlenderImport& ours, const BlenderImport& source) {
+Deviation worst_deviation(const BlenderImport& ours, const BlenderImport& source, double cut) {
   Deviation d;
   // Where each joint of ours is in `source`: a bone (index ≥ 0) or an object (−1 − index).
   std::vector<long> where(ours.bones.size());
@@ -77,11 +77,9 @@ Deviation worst_deviation(const BlenderImport& ours, const BlenderImport& source
   }
   for (const std::string& name : source.bones)
     if (std::find(ours.bones.begin(), ours.bones.end(), name) == ours.bones.end()) d.problem += "no bone " + name + "; ";
-  if (ours.times.size() != source.times.size())
-    d.problem += std::to_string(ours.times.size()) + " keys vs " + std::to_string(source.times.size()) + " in the source; ";
   if (!d.problem.empty()) return d;
   for (std::size_t k = 0; k < ours.times.size(); ++k) {
-    const double t = ours.times[k];
+    const double t = cut + ours.times[k];
     const auto near = std::min_element(source.times.begin(), source.times.end(),
                                        [t](double a, double b) { return std::abs(a - t) < std::abs(b - t); });
     if (std::abs(*near - t) > kSameKeyTime) {

@@ -39,15 +39,17 @@ double figure_height(const BlenderImport& source);
 constexpr double kSameKeyTime = 1e-4;
 
 // The largest distance between a joint of `ours` and the same node of `source` at
-// the same key time, with nothing fitted. Joints are matched by name: a bone of
-// `source`, else an object (Blender makes FBX Nulls the armature object or
-// empties). `problem` is non-empty when a joint or a key time has no counterpart.
+// the same key time, over every key of `ours`, with nothing fitted. Joints are
+// matched by name: a bone of `source`, else an object (Blender makes FBX Nulls the
+// armature object or empties). `problem` is non-empty when a joint, a bone of
+// `source` or a key time of `ours` has no counterpart. `cut`: the key of `ours` at
+// t is the source's at cut + t (s; resample --range starts its output at 0).
 struct Deviation {
   double distance = 0.0;  // metres
   std::string joint;
   double time = 0.0;  // s
   std::string problem;
 };
-Deviation worst_deviation(const BlenderImport& ours, const BlenderImport& source);
+Deviation worst_deviation(const BlenderImport& ours, const BlenderImport& source, double cut = 0.0);
 
 }  // namespace rotinterp::test

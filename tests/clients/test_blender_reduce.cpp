@@ -46,6 +46,7 @@ TEST(BlenderReduce, SparseGlbIsOneArmatureWithinTheBudgetOfBlendersImportOfTheSo
     ASSERT_EQ(ours.armatures, 1) << name;
     EXPECT_EQ(ours.bones.size(), truth.bones.size()) << name;
     // The union of the channels' key times is every frame here (the root's translation keeps them all).
+    EXPECT_EQ(ours.times.size(), truth.times.size()) << name;
     const Deviation d = worst_deviation(ours, truth);
     EXPECT_EQ(d.problem, "") << name;
     std::printf("[ blender ] reduced %s: worst %.4g mm (budget %.3g mm) at %s, %.4g s\n", name.c_str(), d.distance * 1000,

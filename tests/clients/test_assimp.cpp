@@ -44,7 +44,8 @@ TEST(Assimp, ReadsBackTheUnitScaleFactorOfTheClipsUnit) {
   for (const auto& c : cases) {
     const std::string out = (dir / ("out" + std::to_string(k++) + ".fbx")).string();
     const CliResult r = run_cli("resample " + c.source + " -o " + out + " " + c.args + " -q");
-    ASSERT_EQ(r.exit_code, 0) << c.source << " " << c.args << ": " << r.err;
+    EXPECT_EQ(r.exit_code, 0) << c.source << " " << c.args << ": " << r.err;
+    if (r.exit_code != 0) continue;
     EXPECT_DOUBLE_EQ(unit_scale_factor(out), c.factor) << c.source << " " << c.args;
   }
 }

@@ -1,5 +1,7 @@
-// rotinterp reduce IN -o OUT [--method NAME] [--tolerance-deg DEG] [--tolerance-mm MM [--shell-distance CM]]
-//                  [--tolerance-for JOINT=VALUE ...] [--methods LIST|all] [--report FILE.json] [--quiet]
+// rotinterp reduce IN -o OUT [-m NAME|LIST|all] [--tolerance-deg DEG] [--tolerance-mm MM [--shell-distance CM]]
+//                  [--tolerance-for JOINT=VALUE ...] [--report FILE.json] [--quiet]
+// -m with several methods runs the selection for each and prints a table; -o OUT is
+// written with the first.
 #include "common.h"
 #include "rotinterp/clip/metrics.h"
 #include "rotinterp/interp/interpolator.h"
@@ -34,7 +36,7 @@ constexpr double kDefaultShellCm = 10.0;
 constexpr double kBvhAssumedMetresPerUnit = 0.01;
 
 struct ReduceArgs {
-  std::string input, output, method = "slerp", methods, report, anim, translation = "cubic";
+  std::string input, output, methods = "slerp", report, anim, translation = "cubic";
   std::string tolerance_deg, tolerance_mm, shell_cm, unit_scale;
   std::vector<std::string> tolerance_for;
   bool quiet = false;
@@ -131,7 +133,8 @@ Status write_keys_json(const std::filesystem::path& path, const Clip& source, co
       {"method", run.method},
       {"translation", translation_interp_name(opt.translation)},
       {"frames", r.grid.size()},
-      {"frame_time", r.grid.frame_time},
+      {"frame_time", r.grid.frame_time},  // exact: 1/rate, as resample writes
+      {"frame_rate", r.grid.rate ? nlohmann::json(r.grid.rate->to_string()) : nlohmann::json(nullptr)},
       {"start_time", r.grid.start},
       {"metres_per_unit", metres_per_unit},
       {"quaternion_order", "xyzw"},
@@ -147,24 +150,19 @@ Status write_keys_json(const std::filesystem::path& path, const Clip& source, co
 
 int run_reduce(const ReduceArgs& a) {
   // Everything that can be checked without the input first (exit 2).
-  std::vector<std::string> names;
-  if (!a.methods.empty()) {
-    names = a.methods == "all" ? std::vector<std::string>{} : split_comma_list(a.methods);
-    if (a.methods == "all")
-      for (const MethodInfo& m : methods()) names.push_back(m.name);
-    if (names.empty()) return fail_usage("--methods '" + a.methods + "' names no method");
-    for (const std::string& m : names)
-      if (!find_method(m)) return fail_usage("unknown method '" + m + "' in --methods (valid: " + method_names() + ")");
-  }
-  if (!find_method(a.method)) return fail_usage("unknown method '" + a.method + "' (valid: " + method_names() + ")");
-  if (a.output.empty() && names.empty()) return fail_usage("give -o OUT (or --methods to compare methods)");
+  auto listed = parse_methods(a.methods, true);
+  if (!listed) return fail_usage(listed.error());
+  // The output's method is the first; the table lists them all when there are
+  // several, or when there is no output to write.
+  const std::string method = listed->front();
+  const std::vector<std::string> names = listed->size() > 1 || a.output.empty() ? *listed : std::vector<std::string>{};
   const std::string ext = a.output.empty() ? "" : lower_extension(a.output);
   const bool gltf = ext == ".glb" || ext == ".gltf";
   if (!a.output.empty() && !gltf && ext != ".json")
     return fail_usage("output '" + a.output + "': unknown format (use .json, .glb or .gltf)");
-  if (gltf && a.method != "slerp" && a.method != "gltf-cubic")
+  if (gltf && method != "slerp" && method != "gltf-cubic")
     return fail_usage("a glTF viewer replays only --method slerp (LINEAR) or gltf-cubic (CUBICSPLINE); write .json for " +
-                      a.method);
+                      method);
   if (!a.report.empty() && lower_extension(a.report) != ".json")
     return fail_usage("--report '" + a.report + "' must name a .json file");
   auto translation = parse_translation_interp(a.translation);
@@ -248,11 +246,9 @@ int run_reduce(const ReduceArgs& a) {
   }
   if (!per.empty()) budgets["per_joint"] = per;
 
-  // The runs: each of --methods in its order, then --method for the output if not among them.
-  std::vector<std::string> order = names;
-  if (!a.output.empty() && std::find(order.begin(), order.end(), a.method) == order.end()) order.push_back(a.method);
+  // The runs: each method listed, in its order.
   std::vector<MethodRun> runs;
-  for (const std::string& m : order) {
+  for (const std::string& m : *listed) {
     const auto started = std::chrono::steady_clock::now();
     opt.method = m;
     opt.progress = make_progress("reduce " + m, a.quiet);
@@ -274,12 +270,12 @@ int run_reduce(const ReduceArgs& a) {
   }
 
   if (!a.output.empty()) {
-    const MethodRun& run = *std::find_if(runs.begin(), runs.end(), [&](const MethodRun& r) { return r.method == a.method; });
+    const MethodRun& run = runs.front();
     Status written = Ok{};
     if (gltf) {
       WriteOptions w;
       w.gltf_own_key_times = true;
-      w.gltf_cubic_rotations = a.method == "gltf-cubic";
+      w.gltf_cubic_rotations = method == "gltf-cubic";
       w.gltf_cubic_translations = opt.translation == TranslationInterp::cubic;
       w.on_warning = warn;
       written = write_clip(run.result.reduced, a.output, w);
@@ -316,7 +312,7 @@ int run_reduce(const ReduceArgs& a) {
     }
   }
   if (!a.quiet && !a.output.empty()) {
-    const MethodRun& r = *std::find_if(runs.begin(), runs.end(), [&](const MethodRun& x) { return x.method == a.method; });
+    const MethodRun& r = runs.front();
     fmt::print("{} → {}: method {}, {} frames, {} of {} keys kept ({:.2f} %), max {:.4f}° local{}, {:.3f} s\n", a.input,
                a.output, r.method, r.result.grid.size(), r.result.kept_keys, r.result.source_keys,
                100.0 * static_cast<double>(r.result.kept_keys) / static_cast<double>(std::max<std::size_t>(1, r.result.source_keys)),
@@ -331,10 +327,11 @@ void add_reduce_command(CLI::App& app, int& exit_code) {
   auto* sub = app.add_subcommand("reduce", "Keep the fewest keys per joint that rebuild the clip within an error budget");
   auto a = std::make_shared<ReduceArgs>();
   sub->add_option("IN", a->input, "Input clip (BVH, FBX, glTF/GLB, Collada, … — anything assimp reads)")->required();
-  sub->add_option("-o,--output", a->output,
-                  "Output: .json (per joint the kept key frames, times and values) or .glb/.gltf (sparse keys, "
-                  "LINEAR for slerp, CUBICSPLINE for gltf-cubic)");
-  sub->add_option("--method", a->method, "Interpolator the keys are chosen for (see 'rotinterp methods'); default slerp");
+  add_output_option(*sub, a->output,
+                    "Output: .json (per joint the kept key frames, times and values) or .glb/.gltf (sparse keys, "
+                    "LINEAR for slerp, CUBICSPLINE for gltf-cubic); default none: print the table");
+  add_method_option(*sub, a->methods, true,
+                    "slerp. The keys are chosen for it; with several, each is run and tabled, and -o gets the first");
   sub->add_option("--tolerance-deg", a->tolerance_deg, "Budget on each joint's local rotation error, degrees (> 0)");
   sub->add_option("--tolerance-mm", a->tolerance_mm,
                   "Budget on the virtual-vertex (shell) error in object space, millimetres, with the ancestors' rebuilt "
@@ -343,14 +340,13 @@ void add_reduce_command(CLI::App& app, int& exit_code) {
   sub->add_option("--shell-distance", a->shell_cm, "Virtual-vertex distance from each joint, centimetres (default 10)");
   sub->add_option("--tolerance-for", a->tolerance_for,
                   "Per-joint budget JOINT=DEGdeg, JOINT=MMmm or JOINT=DEGdeg,MMmm (repeatable)");
-  sub->add_option("--methods", a->methods, "Run the selection for each method of LIST (or all) and print a table");
-  sub->add_option("--report", a->report, "Write the table as JSON to FILE.json");
+  sub->add_option("--report", a->report, "Write the table as JSON to FILE.json (default none)");
   sub->add_option("--translation", a->translation,
                   "Translation curve: linear, or cubic (default: Steffen's, never overshoots)");
   sub->add_option("--unit-scale", a->unit_scale,
                   "Metres per clip unit, overriding the file's (BVH states none and is taken as centimetres: 0.01)");
-  sub->add_option("--anim", a->anim, "Animation to read: its name or index (default the first)");
-  sub->add_flag("-q,--quiet", a->quiet, "No progress and no summary line");
+  add_anim_option(*sub, a->anim, false);
+  add_quiet_option(*sub, a->quiet);
   sub->callback([a, &exit_code] { exit_code = run_reduce(*a); });
 }
 

@@ -218,7 +218,7 @@ void add_render_command(CLI::App& app, int& exit_code) {
   add_anim_option(*sub, args->anim, false);
   sub->add_option("--colour", args->colour,
                   "error: each bone coloured by its joint's angular error (viridis, one scale per frame, shared by "
-                  "the panels); method: one colour per method")
+                  "the panels; sheet.png: one scale for the whole sheet); method: one colour per method")
       ->default_val("error")
       ->check(CLI::IsMember({"error", "method"}));
   sub->add_option("--camera", args->camera,

@@ -124,7 +124,7 @@ TEST(Comparison, BadRequestsFailWithOneLineNamingTheProblem) {
   };
   const Case cases[] = {
       {[](ComparisonOptions& o) { o.trail_joint = "Tail"; }, "no joint 'Tail'"},
-      {[](ComparisonOptions& o) { o.frames = FrameRange{10, 61, 1}; }, "outside the clip"},
+      {[](ComparisonOptions& o) { o.frames = FrameRange{10, 61, 1}; }, "runs past the clip's end"},
       {[](ComparisonOptions& o) { o.methods = {"slerp", "nonesuch"}; }, "unknown method 'nonesuch'"},
       {[](ComparisonOptions& o) { o.width = 60; }, "too small"},
       {[](ComparisonOptions& o) { o.height = 9000; }, "8192"},

@@ -67,10 +67,10 @@ Status check_output_directory(const std::string& dir) {
 void warn_if_only_keys(const Clip& clip, const render::ComparisonOptions& options) {
   auto frames = render::comparison_frames(clip, options);
   if (!frames || frames->empty()) return;  // render_comparison reports it
-  const auto keys = keep_every_indices(frame_grid(clip).size(), options.keep_every);
+  const std::size_t count = frame_grid(clip).size(), n = options.keep_every, last = count - 1;
+  const auto keys = keep_every_indices(count, n);
   for (std::size_t f : *frames)
     if (!std::binary_search(keys.begin(), keys.end(), f)) return;
-  const std::size_t n = options.keep_every, last = frame_grid(clip).size() - 1;
   const std::string what = n == 1 ? "--keep-every 1 keeps every frame" : fmt::format("--keep-every {} keeps frames 0, {}, {}, …", n, n, 2 * n);
   const std::string fix = n == 1 ? "give --keep-every 2 or more"
                                  : fmt::format("draw frames between keys (e.g. --frames {}:{}:{}) or change --keep-every",

@@ -128,7 +128,7 @@ py::array interpolate(const py::handle& times_in, const py::handle& quats_in, co
   const auto k = static_cast<std::size_t>(times.shape(0));
   const std::size_t joints = joints_of(quats, k);
   require_finite(quats, "quats");
-  if (!find_method(method)) value_error("unknown method '" + method + "' (valid: " + method_names() + ")");
+  if (!find_method(method)) value_error(unknown_method_message(method));
   const auto n = static_cast<std::size_t>(new_times.shape(0));
   const std::size_t jn = joints == 0 ? 1 : joints;
   std::vector<py::ssize_t> shape = {static_cast<py::ssize_t>(n)};
@@ -445,8 +445,10 @@ py::dict evaluate(const py::object& inputs, const std::optional<std::vector<std:
   } else {
     for (const MethodInfo& m : methods()) o.methods.push_back(m.name);
   }
-  for (const std::string& m : o.methods)
-    if (!find_method(m)) value_error("unknown method '" + m + "' (valid: " + method_names() + ")");
+  for (std::string& m : o.methods) {
+    if (!find_method(m)) value_error(unknown_method_message(m));
+    m = find_method(m)->name;  // one spelling in the results ("SLERP" is slerp)
+  }
   for (int n : keep_every)
     if (n < 1) value_error("keep_every values must be >= 1, got " + std::to_string(n));
   o.keep_every = keep_every;

@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <future>
@@ -94,7 +95,6 @@ FileSummary summarize(const std::string& file, const ReadOptions& options) {
 std::string rate_key(const FileSummary& s) { return s.rate ? s.rate->to_string() + " Hz" : "no uniform rate"; }
 
 int run_summary(const InfoArgs& args) {
-  if (args.jobs < 0) return fail_usage("-j " + std::to_string(args.jobs) + ": must be ≥ 0 (0 = one per core)");
   std::vector<std::filesystem::path> named(args.paths.begin(), args.paths.end());
   auto files = discover_inputs(named);
   if (!files) return fail(files.error());
@@ -199,6 +199,36 @@ int run_summary(const InfoArgs& args) {
   return unreadable > 0 ? kExitPartial : kExitOk;
 }
 
+// A file without animation (a static mesh) is still described: what it holds, exit 0.
+int describe_static(const std::string& path, const std::string& error, bool json) {
+  std::string format = std::filesystem::path(path).extension().string();
+  if (!format.empty()) format.erase(0, 1);
+  for (char& c : format) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string holds = static_scene_contents(error);
+  if (json) {
+    const nlohmann::json out = {{"file", path},           {"format", format},
+                                {"animations", nlohmann::json::array()}, {"holds", holds},
+                                {"no_animation", true}};
+    fmt::print("{}\n", out.dump(2));
+  } else {
+    fmt::print("file:        {}\n", path);
+    fmt::print("format:      {}\n", format);
+    fmt::print("animations:  0 (no animation: a static file, nothing to resample, render or evaluate)\n");
+    if (!holds.empty()) fmt::print("holds:       {}\n", holds);
+  }
+  return kExitOk;
+}
+
+// BVH speaks its own words: frames, Frame Time and the CHANNELS lines' count (not
+// assimp's ticks and node channels).
+std::string bvh_take_text(const Clip& clip) {
+  std::size_t channels = 0;
+  for (std::size_t j = 0; j < clip.skeleton.joints.size(); ++j) channels += bvh_channels(clip, j).size();
+  const std::string frame_time = frame_time_text(clip);
+  return fmt::format("{} frames, Frame Time {}, {} channels (CHANNELS)", clip.frame_count(),
+                     frame_time.empty() ? fmt::format("{:.9g}", clip.frame_time) : frame_time, channels);
+}
+
 std::string layout_text(const std::vector<Channel>& channels) {
   std::string s;
   for (Channel c : channels) s += (s.empty() ? "" : " ") + std::string(channel_name(c));
@@ -216,6 +246,7 @@ int run_info(const InfoArgs& args) {
   options.on_warning = warn;
   const std::string& path = args.paths.front();
   Result<ClipFileInfo> info = inspect_clip(path, options);
+  if (!info && info.error_kind() == ErrorKind::no_animation) return describe_static(path, info.error(), args.json);
   if (!info) return fail(info.error());
   const Clip& clip = info->clip;
   const Skeleton& sk = clip.skeleton;
@@ -278,8 +309,11 @@ int run_info(const InfoArgs& args) {
   fmt::print("animations:  {}\n", info->animations.size());
   for (std::size_t a = 0; a < info->animations.size(); ++a) {
     const AnimationSummary& s = info->animations[a];
-    fmt::print("  {}{} '{}'  {:.6g} s  {:.9g} ticks/s{}  {} channels\n", a == info->selected ? "*" : " ", a, s.name,
-               s.duration, s.ticks_per_second, s.default_rate ? " (default)" : "", s.channels);
+    if (info->format == "bvh")
+      fmt::print("  {}{} '{}'  {:.6g} s  {}\n", a == info->selected ? "*" : " ", a, s.name, s.duration, bvh_take_text(clip));
+    else
+      fmt::print("  {}{} '{}'  {:.6g} s  {:.9g} ticks/s{}  {} channels\n", a == info->selected ? "*" : " ", a, s.name,
+                 s.duration, s.ticks_per_second, s.default_rate ? " (default)" : "", s.channels);
   }
   fmt::print("frames:      {}\n", clip.frame_count());
   if (rate)
@@ -323,13 +357,13 @@ void add_info_command(CLI::App& app, int& exit_code) {
                   "Clip file (BVH, FBX, glTF/GLB, Collada, … anything assimp imports); with --summary, several "
                   "files and folders (searched recursively)")
       ->required();
-  sub->add_option("--anim", args->anim, "Animation to describe: name or 0-based index (default: the first)");
+  add_anim_option(*sub, args->anim, false);
   add_unit_option(*sub, args->unit);
-  sub->add_flag("--json", args->json, "Print JSON instead of text");
+  add_json_option(*sub, args->json);
   sub->add_flag("--summary", args->summary,
                 "One row per file (format, rate as read and as written, frames, duration, joints, notes), then the "
                 "rate histogram; flags rate labels that are not their rate, uneven keys, empty clips, identical files");
-  sub->add_option("-j,--jobs", args->jobs, "With --summary: files read at once (0 = one per core)")->capture_default_str();
+  add_jobs_option(*sub, args->jobs, "With --summary: files read at once");
   sub->callback([args, &exit_code] { exit_code = run_info(*args); });
 }
 

@@ -1,5 +1,7 @@
-// rotinterp reduce IN -o OUT [--method NAME] [--tolerance 0.5deg,1mm] [--shell-distance 10cm]
-//                  [--tolerance-for JOINT=LIST ...] [--methods LIST|all] [--report FILE.json] [--unit U] [--quiet]
+// rotinterp reduce IN -o OUT [-m NAME|LIST|all] [--tolerance 0.5deg,1mm] [--shell-distance 10cm]
+//                  [--tolerance-for JOINT=LIST ...] [--report FILE.json] [--unit U] [--quiet]
+// -m with several methods runs the selection for each and prints a table; -o OUT is
+// written with the first.
 #include "common.h"
 #include "rotinterp/clip/units.h"
 #include "rotinterp/interp/interpolator.h"
@@ -32,7 +34,7 @@ constexpr double kDefaultToleranceMm = 1.0;
 constexpr double kDefaultShellMetres = 0.10;
 
 struct ReduceArgs {
-  std::string input, output, method = "slerp", methods, report, anim, translation = "cubic";
+  std::string input, output, methods = "slerp", report, anim, translation = "cubic";
   std::string shell_distance, unit;
   std::vector<std::string> tolerance, tolerance_for;
   bool quiet = false;
@@ -135,7 +137,8 @@ Status write_keys_json(const std::filesystem::path& path, const Clip& source, co
       {"method", run.method},
       {"translation", translation_interp_name(opt.translation)},
       {"frames", r.grid.size()},
-      {"frame_time", r.grid.frame_time},
+      {"frame_time", r.grid.frame_time},  // exact: 1/rate, as resample writes
+      {"frame_rate", r.grid.rate ? nlohmann::json(r.grid.rate->to_string()) : nlohmann::json(nullptr)},
       {"start_time", r.grid.start},
       {"metres_per_unit", metres_per_unit},
       {"quaternion_order", "xyzw"},
@@ -151,24 +154,19 @@ Status write_keys_json(const std::filesystem::path& path, const Clip& source, co
 
 int run_reduce(const ReduceArgs& a) {
   // Everything that can be checked without the input first (exit 2).
-  std::vector<std::string> names;
-  if (!a.methods.empty()) {
-    names = a.methods == "all" ? std::vector<std::string>{} : split_comma_list(a.methods);
-    if (a.methods == "all")
-      for (const MethodInfo& m : methods()) names.push_back(m.name);
-    if (names.empty()) return fail_usage("--methods '" + a.methods + "' names no method");
-    for (const std::string& m : names)
-      if (!find_method(m)) return fail_usage("unknown method '" + m + "' in --methods (valid: " + method_names() + ")");
-  }
-  if (!find_method(a.method)) return fail_usage("unknown method '" + a.method + "' (valid: " + method_names() + ")");
-  if (a.output.empty() && names.empty()) return fail_usage("give -o OUT (or --methods to compare methods)");
+  auto listed = parse_methods(a.methods, true);
+  if (!listed) return fail_usage(listed.error());
+  // The output's method is the first; the table lists them all when there are
+  // several, or when there is no output to write.
+  const std::string method = listed->front();
+  const std::vector<std::string> names = listed->size() > 1 || a.output.empty() ? *listed : std::vector<std::string>{};
   const std::string ext = a.output.empty() ? "" : lower_extension(a.output);
   const bool gltf = ext == ".glb" || ext == ".gltf";
   if (!a.output.empty() && !gltf && ext != ".json")
     return fail_usage("output '" + a.output + "': unknown format (use .json, .glb or .gltf)");
-  if (gltf && a.method != "slerp" && a.method != "gltf-cubic")
+  if (gltf && method != "slerp" && method != "gltf-cubic")
     return fail_usage("a glTF viewer replays only --method slerp (LINEAR) or gltf-cubic (CUBICSPLINE); write .json for " +
-                      a.method);
+                      method);
   if (!a.report.empty() && lower_extension(a.report) != ".json")
     return fail_usage("--report '" + a.report + "' must name a .json file");
   auto translation = parse_translation_interp(a.translation);
@@ -238,11 +236,9 @@ int run_reduce(const ReduceArgs& a) {
   }
   if (!per.empty()) budgets["per_joint"] = per;
 
-  // The runs: each of --methods in its order, then --method for the output if not among them.
-  std::vector<std::string> order = names;
-  if (!a.output.empty() && std::find(order.begin(), order.end(), a.method) == order.end()) order.push_back(a.method);
+  // The runs: each method listed, in its order.
   std::vector<MethodRun> runs;
-  for (const std::string& m : order) {
+  for (const std::string& m : *listed) {
     const auto started = std::chrono::steady_clock::now();
     opt.method = m;
     opt.progress = make_progress("reduce " + m, a.quiet);
@@ -264,12 +260,12 @@ int run_reduce(const ReduceArgs& a) {
   }
 
   if (!a.output.empty()) {
-    const MethodRun& run = *std::find_if(runs.begin(), runs.end(), [&](const MethodRun& r) { return r.method == a.method; });
+    const MethodRun& run = runs.front();
     Status written = Ok{};
     if (gltf) {
       WriteOptions w;
       w.gltf_own_key_times = true;
-      w.gltf_cubic_rotations = a.method == "gltf-cubic";
+      w.gltf_cubic_rotations = method == "gltf-cubic";
       w.gltf_cubic_translations = opt.translation == TranslationInterp::cubic;
       w.on_warning = warn;
       written = write_clip(run.result.reduced, a.output, w);
@@ -306,7 +302,7 @@ int run_reduce(const ReduceArgs& a) {
     }
   }
   if (!a.quiet && !a.output.empty()) {
-    const MethodRun& r = *std::find_if(runs.begin(), runs.end(), [&](const MethodRun& x) { return x.method == a.method; });
+    const MethodRun& r = runs.front();
     fmt::print("{} → {}: method {}, {} frames, {} of {} keys kept ({:.2f} %), max {:.4f}° local{}, {:.3f} s\n", a.input,
                a.output, r.method, r.result.grid.size(), r.result.kept_keys, r.result.source_keys,
                100.0 * static_cast<double>(r.result.kept_keys) / static_cast<double>(std::max<std::size_t>(1, r.result.source_keys)),
@@ -321,10 +317,11 @@ void add_reduce_command(CLI::App& app, int& exit_code) {
   auto* sub = app.add_subcommand("reduce", "Keep the fewest keys per joint that rebuild the clip within an error budget");
   auto a = std::make_shared<ReduceArgs>();
   sub->add_option("IN", a->input, "Input clip (BVH, FBX, glTF/GLB, Collada, … — anything assimp reads)")->required();
-  sub->add_option("-o,--output", a->output,
-                  "Output: .json (per joint the kept key frames, times and values) or .glb/.gltf (sparse keys, "
-                  "LINEAR for slerp, CUBICSPLINE for gltf-cubic)");
-  sub->add_option("--method", a->method, "Interpolator the keys are chosen for (see 'rotinterp methods'); default slerp");
+  add_output_option(*sub, a->output,
+                    "Output: .json (per joint the kept key frames, times and values) or .glb/.gltf (sparse keys, "
+                    "LINEAR for slerp, CUBICSPLINE for gltf-cubic); default none: print the table");
+  add_method_option(*sub, a->methods, true,
+                    "slerp. The keys are chosen for it; with several, each is run and tabled, and -o gets the first");
   sub->add_option("--tolerance", a->tolerance,
                   "Error budget, each item with its unit: an angle (0.5deg, 0.01rad) on each joint's local rotation, "
                   "and/or a length (1mm, 0.1cm) on the virtual-vertex (shell) error in object space with the "
@@ -333,14 +330,13 @@ void add_reduce_command(CLI::App& app, int& exit_code) {
   sub->add_option("--shell-distance", a->shell_distance,
                   "Virtual-vertex distance from each joint: a length (10cm); a bare number is metres. Default 10cm");
   sub->add_option("--tolerance-for", a->tolerance_for,
-                  "Per-joint budget JOINT=LIST, LIST as --tolerance takes it (repeatable)");
-  sub->add_option("--methods", a->methods, "Run the selection for each method of LIST (or all) and print a table");
-  sub->add_option("--report", a->report, "Write the table as JSON to FILE.json");
+                  "Per-joint budget JOINT=LIST, LIST as --tolerance takes it (repeatable; default none)");
+  sub->add_option("--report", a->report, "Write the table as JSON to FILE.json (default none)");
   sub->add_option("--translation", a->translation,
                   "Translation curve: linear, or cubic (default: Steffen's, never overshoots)");
   add_unit_option(*sub, a->unit);
-  sub->add_option("--anim", a->anim, "Animation to read: its name or index (default the first)");
-  sub->add_flag("-q,--quiet", a->quiet, "No progress and no summary line");
+  add_anim_option(*sub, a->anim, false);
+  add_quiet_option(*sub, a->quiet);
   sub->callback([a, &exit_code] { exit_code = run_reduce(*a); });
 }
 

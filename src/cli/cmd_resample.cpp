@@ -71,17 +71,6 @@ struct FileRun {
   double output_metres_per_unit = 0.0;
 };
 
-// A number of seconds ≥ 0, or nothing for an empty text.
-bool parse_seconds(const std::string& text, std::optional<double>& out) {
-  if (text.empty()) return true;
-  errno = 0;
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (end != text.c_str() + text.size() || errno == ERANGE || !std::isfinite(v) || v < 0.0) return false;
-  out = v;
-  return true;
-}
-
 bool valid_bvh_order(std::string order) {
   std::sort(order.begin(), order.end());
   return order == "XYZ";
@@ -101,31 +90,25 @@ Result<ResampleOptions> resample_options(const ResampleArgs& a) {
     if (!n) return make_error(n.error());
     opt.keep_every = static_cast<std::size_t>(*n);
   }
-  if (!find_method(a.method)) return make_error("unknown method '" + a.method + "' (valid: " + method_names() + ")");
-  opt.method = a.method;
+  auto method = parse_methods(a.method, false);
+  if (!method) return make_error(method.error());
+  opt.method = method->front();
   for (const std::string& item : a.method_for) {
     const std::size_t eq = item.find('=');
     if (eq == std::string::npos || eq == 0 || eq + 1 == item.size())
       return make_error("--method-for '" + item + "' must be JOINT=METHOD");
-    const std::string joint = item.substr(0, eq), method = item.substr(eq + 1);
-    if (!find_method(method))
-      return make_error("unknown method '" + method + "' in --method-for " + item + " (valid: " + method_names() + ")");
-    opt.method_for.emplace_back(joint, method);
+    const std::string joint = item.substr(0, eq), name = item.substr(eq + 1);
+    const MethodInfo* m = find_method(name);
+    if (!m) return make_error("--method-for " + item + ": " + unknown_method_message(name));
+    opt.method_for.emplace_back(joint, m->name);
   }
   auto translation = parse_translation_interp(a.translation);
   if (!translation) return make_error("--translation: " + translation.error());
   opt.translation = *translation;
   if (!a.range.empty()) {
-    const std::size_t colon = a.range.find(':');
-    std::optional<double> s, e;
-    if (colon == std::string::npos || !parse_seconds(a.range.substr(0, colon), s) ||
-        !parse_seconds(a.range.substr(colon + 1), e))
-      return make_error("--range '" + a.range + "' must be START:END in seconds (either may be empty), e.g. 1.5:4");
-    TimeRange r;
-    if (s) r.start = *s;
-    if (e) r.end = *e;
-    if (!(r.end > r.start)) return make_error("--range '" + a.range + "': END must be after START");
-    opt.range = r;
+    auto r = parse_time_range(a.range);
+    if (!r) return make_error(r.error());
+    opt.range = *r;
   }
   if (!valid_bvh_order(a.bvh_order)) return make_error("--bvh-order '" + a.bvh_order + "' must be a permutation of XYZ, e.g. ZXY");
   return opt;
@@ -237,7 +220,6 @@ int run_folder(const ResampleArgs& a, ResampleOptions opt) {
     return fail_usage("output '" + a.output + "' is a file name; several inputs or a folder need an output directory");
   if (!a.format.empty() && !can_write_format(fs::path("x." + a.format)))
     return fail_usage("--format '" + a.format + "': unknown format (use bvh, fbx, glb, gltf or dae)");
-  if (a.jobs < 0) return fail_usage("-j " + std::to_string(a.jobs) + ": must be ≥ 0 (0 = one per core)");
   std::vector<fs::path> named(a.inputs.begin(), a.inputs.end());
   auto found = discover_inputs(named);
   if (!found) return fail(found.error());
@@ -379,24 +361,20 @@ void add_resample_command(CLI::App& app, int& exit_code) {
                   "Input clip (BVH, FBX, glTF/GLB, Collada, … — anything assimp reads); several, or folders "
                   "(searched recursively), with -o DIR")
       ->required();
-  sub->add_option("-o,--output", a->output,
-                  "Output file; the format follows the extension: bvh, fbx, glb, gltf, dae. For several inputs or "
-                  "a folder: the output directory, the inputs' layout mirrored under it")
+  add_output_option(*sub, a->output,
+                    "Output file; the format follows the extension: bvh, fbx, glb, gltf, dae. For several inputs or "
+                    "a folder: the output directory, the inputs' layout mirrored under it")
       ->required();
-  sub->add_option("--fps", a->fps,
-                  "Output rate in Hz: a decimal (30, 59.94) or a rational (30000/1001). Frames at start + k/HZ, "
-                  "k = 0 … floor(duration·HZ + 1e-9); Frame Time = 1/HZ");
-  sub->add_option("--keep-every", a->keep_every,
-                  "Keep every Nth frame (and the last) as keys and rebuild every frame from them (N ≥ 1)");
-  sub->add_option("--method", a->method,
-                  std::string("Rotation interpolator for every joint (see 'rotinterp methods'); default ") +
-                      kDefaultResampleMethod);
-  sub->add_option("--method-for", a->method_for, "Per-joint override JOINT=METHOD (repeatable)");
+  add_fps_option(*sub, a->fps,
+                 "the output rate: frames at start + k/HZ, k = 0 … floor(duration·HZ + 1e-9); default the source's "
+                 "rate (or --keep-every)");
+  add_keep_every_option(*sub, a->keep_every, false, "every source frame is rebuilt (default: unset, see --fps)");
+  add_method_option(*sub, a->method, false, std::string(kDefaultResampleMethod) + ", for every joint");
+  sub->add_option("--method-for", a->method_for, "Per-joint override JOINT=METHOD (repeatable; default none)");
   sub->add_option("--translation", a->translation,
                   "Translation tracks: linear, or cubic (default: C¹, Steffen tangents — never overshoots between keys)");
-  sub->add_option("--range", a->range,
-                  "Cut START:END (seconds from the first frame; either side may be empty) before resampling");
-  sub->add_option("--anim", a->anim, "Animation to read: its name or index (default the first)");
+  add_range_option(*sub, a->range, "cut before resampling (default: the whole clip)");
+  add_anim_option(*sub, a->anim, false);
   add_unit_option(*sub, a->unit);
   sub->add_option("--out-unit", a->out_unit,
                   "Unit of the written file: m, cm, mm, in, ft or metres per unit (default: the input's; glTF is "
@@ -404,16 +382,18 @@ void add_resample_command(CLI::App& app, int& exit_code) {
   sub->add_option("--bvh-order", a->bvh_order,
                   "Euler order for BVH output of joints without a BVH layout (non-BVH input); default ZXY");
   sub->add_flag("--fbx-ascii", a->fbx_ascii, "FBX output as ASCII FBX 7.4 (default: binary FBX 7.4, which Blender needs)");
-  sub->add_flag("-q,--quiet", a->quiet, "No progress and no summary line");
-  sub->add_option("-j,--jobs", a->jobs, "Folder runs: files resampled at once (0 = one per core)")->capture_default_str();
-  sub->add_option("--shard", a->shard, "Folder runs: only shard I of N (I/N) of the sorted inputs, for a cluster");
+  add_quiet_option(*sub, a->quiet);
+  add_jobs_option(*sub, a->jobs, "Folder runs: files resampled at once");
+  sub->add_option("--shard", a->shard,
+                  "Folder runs: only shard I of N (I/N) of the sorted inputs, for a cluster (default: all)");
   sub->add_flag("--skip-existing", a->skip_existing,
-                "Folder runs: leave outputs that exist (an output is only ever complete), to resume a run");
+                "Folder runs: leave outputs that exist (an output is only ever complete), to resume a run "
+                "(default: replace them)");
   sub->add_option("--format", a->format,
                   "Folder runs: output format bvh, fbx, glb, gltf or dae (default: the input's own, else bvh)");
   sub->add_option("--manifest", a->manifest,
                   "Folder runs: write a CSV row per file (rate as written and as read, frames, duration, joints, "
-                  "output frames, method, time, status)");
+                  "output frames, method, time, status); default none");
   sub->callback([a, &exit_code] { exit_code = run_resample(*a); });
 }
 

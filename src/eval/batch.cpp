@@ -218,7 +218,7 @@ void prepare_clip(const std::string& file, const EvalOptions& opt, ClipSlot& slo
     if (found_in_directory(file, opt.inputs) && takes.error_kind() == ErrorKind::no_animation)
       slot.skipped = true;
     else
-      slot.load_failure = EvalFailure{file, takes.error()};
+      slot.load_failure = EvalFailure{file, takes.error(), takes.error_kind()};
     return;
   }
   for (auto& [id, clip] : *takes) {

@@ -112,7 +112,6 @@ TEST_F(ExitCodes, ReduceFailuresNameTheFileOrOption) {
       {"reduce @/good.bvh -o @/k.txt -q", 2, {"'@/k.txt': unknown format"}, "@/k.txt"},
       {"reduce @/good.bvh -o @/k.json --shell-distance 5 -q", 2, {"--shell-distance needs a length budget"}, "@/k.json"},
       {"reduce @/good.bvh --methods slerp,nope -q", 2, {"unknown method 'nope'"}},
-      {"reduce @/good.bvh -q", 2, {"give -o OUT"}},
   });
 }
 
@@ -149,7 +148,10 @@ TEST_F(ExitCodes, ResampleFailuresLeaveNoOutput) {
       {io + "--method wobble", 2, {"unknown method 'wobble'", "valid: "}, "@/out.bvh"},
       {io + "--range 1", 2, {"--range '1'", "START:END"}, "@/out.bvh"},
       {io + "--range a:b", 2, {"--range 'a:b'"}, "@/out.bvh"},
-      {io + "--range 0:9", 1, {"@/good.bvh: ", "outside the clip"}, "@/out.bvh"},
+      {io + "--range 0:9", 1, {"@/good.bvh: ", "runs past the clip's end (ends at 1 s / frame 30)"}, "@/out.bvh"},
+      {io + "--range 0f:31f", 1, {"@/good.bvh: ", "range 0f:31f runs past the clip's end (ends at 1 s / frame 30)"},
+       "@/out.bvh"},
+      {io + "--range 1.5f:3f", 2, {"--range '1.5f:3f': frames are whole numbers"}, "@/out.bvh"},
       {io + "--method-for Tail=slerp", 1, {"@/good.bvh: ", "'Tail'"}, "@/out.bvh"},
       {"resample @/good.bvh -o @/out.txt --fps 60", 2, {"@/out.txt", "unknown format"}, "@/out.txt"},
       {"resample @/good.bvh -o @/afile/out.bvh --fps 60", 1, {"@/afile/out.bvh: cannot write"}},
@@ -176,7 +178,7 @@ TEST_F(ExitCodes, SynthFailuresLeaveNoOutput) {
       // The spec is written first (so that only renames follow the clip's commit).
       {"synth @/afile/s.bvh", 1, {"@/afile/s.bvh.synth: cannot write"}},
       {"synth @/nodir/s.bvh", 1, {"@/nodir/s.bvh.synth: cannot write"}, "@/nodir"},
-      {"synth", 2, {"OUT is required"}},
+      {"synth", 2, {"--output is required"}},
   });
 }
 
@@ -187,7 +189,7 @@ TEST_F(ExitCodes, EvalFailuresNameTheInput) {
       {"eval @/emptydir" + out, 1, {"@/emptydir: no clip files found"}, "@/ev"},
       {"eval @/good.bvh --keep-every 0" + out, 2, {"--keep-every '0'"}, "@/ev"},
       {"eval @/good.bvh --keep-every x" + out, 2, {"--keep-every 'x'"}, "@/ev"},
-      {"eval @/good.bvh --methods wobble" + out, 2, {"--methods: unknown method 'wobble'"}, "@/ev"},
+      {"eval @/good.bvh --methods wobble" + out, 2, {"unknown method 'wobble'"}, "@/ev"},
       {"eval @/good.bvh --shard 3/2" + out, 2, {"--shard '3/2'"}, "@/ev"},
       {"eval @/good.bvh --jobs abc" + out, 2, {"--jobs"}, "@/ev"},
       {"eval @/good.bvh --subframe -1" + out, 2, {"--subframe"}, "@/ev"},
@@ -222,10 +224,10 @@ TEST_F(ExitCodes, RenderFailuresLeaveNoOutput) {
       {"render @/huge.bvh -o @/r -q", 1, {"@/huge.bvh: 'Frames: 4000000000'"}, "@/r"},
       {io + "--keep-every 0", 2, {"--keep-every"}, "@/r"},
       {io + "--keep-every abc", 2, {"--keep-every"}, "@/r"},
-      {io + "--methods slerp,wobble", 2, {"--methods: unknown method 'wobble'"}, "@/r"},
+      {io + "--methods slerp,wobble", 2, {"unknown method 'wobble'"}, "@/r"},
       {io + "--frames 9:3", 2, {"END is before START"}, "@/r"},
       {io + "--frames x", 2, {"--frames"}, "@/r"},
-      {io + "--frames 0:100", 1, {"@/good.bvh: ", "outside the clip"}, "@/r"},
+      {io + "--frames 0:100", 1, {"@/good.bvh: ", "runs past the clip's end (ends at frame 30, 1 s)"}, "@/r"},
       {io + "--size 0x0", 2, {"--size '0x0'"}, "@/r"},
       {io + "--size big", 2, {"--size", "WxH"}, "@/r"},
       {io + "--size 9000x100", 2, {"8192"}, "@/r"},

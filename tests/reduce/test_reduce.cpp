@@ -57,6 +57,15 @@ struct Measured {
   std::vector<double> angle;  // per joint, rad
   std::vector<double> shell;  // per joint, clip units
 };
+// The source's frames with each frame k at its exact time, start + k/rate (BVH's
+// printed "Frame Time: 0.0333333" is 1/30 s), where reduce and resample place frames;
+// the values are the source's own.
+DenseClip exact_frames(const Clip& clip) {
+  DenseClip d = dense_clip(clip);
+  for (std::size_t k = 0; k < d.grid.size(); ++k) d.grid.times[k] = d.grid.exact_time(k);
+  return d;
+}
+
 Measured measure(const Clip& source, const DenseClip& ref, const Motion& test, double shell_distance) {
   const std::size_t n = source.skeleton.joints.size(), frames = ref.grid.size();
   Measured m;
@@ -197,7 +206,7 @@ TEST(ReduceCli, EveryMethodKeepsEveryFrameWithinBothBudgetsRebuiltFromTheWritten
   const fs::path dir = temp_dir("json");
   auto source = read_clip(kBandai);
   ASSERT_TRUE(source) << source.error();
-  const DenseClip ref = dense_clip(*source);
+  const DenseClip ref = exact_frames(*source);
   const double unit = source->unit.metres_per_unit;  // inferred: centimetres
   EXPECT_EQ(unit, 0.01);
   for (const MethodInfo& method : methods()) {
@@ -238,7 +247,7 @@ TEST(ReduceCli, GltfReplayedWithTheSpecsInterpolationStaysWithinBudget) {
   const fs::path dir = temp_dir("gltf");
   auto source = read_clip(kBandai);
   ASSERT_TRUE(source) << source.error();
-  const DenseClip ref = dense_clip(*source);
+  const DenseClip ref = exact_frames(*source);
   const double unit = source->unit.metres_per_unit;  // inferred: centimetres
   for (const std::string method : {"slerp", "gltf-cubic"})
     for (const std::string translation : {"linear", "cubic"}) {
@@ -442,7 +451,7 @@ TEST(Reduce, AHandDriftingBeyondTheShellBudgetIsCaughtThoughEveryJointIsWithinIt
     return m;
   });
   const Clip clip = motion.sample(3.0, Rate{60, 1}, "arm");
-  const DenseClip ref = dense_clip(clip);
+  const DenseClip ref = exact_frames(clip);
   auto rebuilt = [&](const ReduceResult& r) {
     Motion m{ref.rotation, ref.translation};
     for (std::size_t j = 0; j < r.joints.size(); ++j)

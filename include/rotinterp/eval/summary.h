@@ -124,6 +124,7 @@ std::string clips_csv(const Summary& summary);
 struct EvalFailure {
   std::string file;
   std::string message;  // one line, names the file
+  ErrorKind kind = ErrorKind::other;  // the reader's kind where it failed to read (no_animation: a static mesh)
 };
 
 // A clip evaluated at fewer spacings than asked, or at none: too few frames

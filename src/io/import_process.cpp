@@ -32,7 +32,7 @@ namespace {
 
 constexpr const char* kImporterName = "rotinterp-import";
 // The command line's first argument: both ends come from the same build.
-constexpr std::string_view kProtocol = "rotinterp-import-1";
+constexpr std::string_view kProtocol = "rotinterp-import-2";
 
 bool executable(const fs::path& p) {
   std::error_code ec;
@@ -118,6 +118,13 @@ Result<fs::path> find_importer() {
 
 namespace detail {
 
+// A double as text that reads back as the same double.
+std::string fmt_double(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
 Result<wire::ReadOutcome> read_in_importer(const fs::path& path, const ReadOptions& options) {
   const std::string label = path.string();
   Result<fs::path> exe = find_importer();
@@ -147,7 +154,8 @@ Result<wire::ReadOutcome> read_in_importer(const fs::path& path, const ReadOptio
                                    label,
                                    options.animation,
                                    options.fold_fbx_helpers ? "1" : "0",
-                                   options.cross_check_with_assimp ? "1" : "0"};
+                                   options.cross_check_with_assimp ? "1" : "0",
+                                   options.unit ? fmt_double(*options.unit) : std::string()};
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -218,7 +226,7 @@ Result<wire::ReadOutcome> read_in_importer(const fs::path& path, const ReadOptio
 }
 
 int importer_main(int argc, char** argv) {
-  if (argc != 7 || argv[1] != kProtocol) {
+  if (argc != 8 || argv[1] != kProtocol) {
     std::fprintf(stderr, "%s: the importer of rotinterp's reader, started by it; not a command\n", kImporterName);
     return 2;
   }
@@ -235,6 +243,7 @@ int importer_main(int argc, char** argv) {
   options.animation = argv[4];
   options.fold_fbx_helpers = std::string_view(argv[5]) == "1";
   options.cross_check_with_assimp = std::string_view(argv[6]) == "1";
+  if (argv[7][0] != '\0') options.unit = std::strtod(argv[7], nullptr);
   const std::string payload = wire::encode(read_in_this_process(argv[3], options));
   // _exit: no exit handlers, so LeakSanitizer does not turn assimp's leaks on a
   // bad file into a failed import.

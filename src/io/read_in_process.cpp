@@ -193,7 +193,7 @@ Status read_here(const fs::path& path, const ReadOptions& options, ClipFileInfo&
   Status st = is_bvh(path, ext) ? read_bvh_checked(path, options, info, warn)
                                 : read_with_assimp(path, options, ext, info, warn);
   if (!st) return st;
-  return check_clip(info, label);
+  return check_clip(info, label, options);
 }
 
 }  // namespace

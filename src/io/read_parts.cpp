@@ -138,7 +138,31 @@ Status bvh_file_to_clip(const BvhFile& bvh, const std::string& animation_name, c
   return Ok{};
 }
 
-Status check_clip(ClipFileInfo& info, const std::string& label) {
+namespace {
+
+// The clip's unit, decided once for every reader (clip/units.h): FBX states its own
+// (the importer read UnitScaleFactor); glTF is metres by its spec and Collada's
+// <unit> is applied by assimp, so both are in metres; any other file states none.
+void settle_unit(ClipFileInfo& info, const std::string& label, const ReadOptions& options) {
+  ClipUnit& unit = info.clip.unit;
+  if (unit.origin != UnitOrigin::declared && (info.format == "gltf" || info.format == "glb" || info.format == "dae"))
+    unit = {1.0, UnitOrigin::declared, "declared by the format: " + info.format + " is in metres"};
+  if (unit.origin == UnitOrigin::declared) {
+    if (options.unit)
+      Warnings{&options.on_warning, &info.warnings}(label + ": the file declares its unit (" + unit_name(unit.metres_per_unit) +
+                         "); --unit is ignored");
+    return;
+  }
+  if (options.unit) {
+    unit = {*options.unit, UnitOrigin::given, "given: --unit " + unit_name(*options.unit)};
+    return;
+  }
+  unit = infer_unit(info.clip);
+}
+
+}  // namespace
+
+Status check_clip(ClipFileInfo& info, const std::string& label, const ReadOptions& options) {
   info.clip.source_format = info.format;
   if (Status s = info.clip.validate(); !s) return make_error(label + ": " + s.error(), ErrorKind::unreadable);
   const std::vector<Joint>& joints = info.clip.skeleton.joints;
@@ -150,6 +174,7 @@ Status check_clip(ClipFileInfo& info, const std::string& label) {
                             " levels deep (the most rotinterp reads)",
                         ErrorKind::unreadable);
   }
+  settle_unit(info, label, options);
   return Ok{};
 }
 

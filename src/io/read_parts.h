@@ -50,7 +50,8 @@ Status bvh_file_to_clip(const BvhFile& bvh, const std::string& animation_name, c
 
 // What every read checks last: a valid clip whose joints nest no deeper than BVH
 // allows (scene_to_clip takes any depth assimp gives; callers may walk the tree).
-// Sets the clip's source_format from info.format.
-Status check_clip(ClipFileInfo& info, const std::string& label);
+// Sets the clip's source_format from info.format, and settles its unit (Clip::unit:
+// declared by the file, else ReadOptions::unit, else inferred; clip/units.h).
+Status check_clip(ClipFileInfo& info, const std::string& label, const ReadOptions& options);
 
 }  // namespace rotinterp

@@ -84,7 +84,7 @@ TEST(ReduceTimes, KeysFileUsesTheExactRateAsResampleDoes) {
   text.replace(at, eol - at, "Frame Time: 0.0333333");
   std::ofstream(dir / "walk7.bvh", std::ios::binary) << text;
   const auto r = run_cli("reduce " + (dir / "walk7.bvh").string() + " -o " + (dir / "k.json").string() +
-                         " --tolerance-deg 1 -q");
+                         " --tolerance 1deg -q");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto doc = nlohmann::json::parse(test::slurp(dir / "k.json"));
   fs::remove_all(dir);

@@ -39,7 +39,7 @@ TEST(InfoCli, TextShowsTheExactFrameTimeTheJointTreeAndFbxOddities) {
   ASSERT_EQ(fbx.exit_code, 0) << fbx.err;
   EXPECT_NE(fbx.out.find("*0 'Run'"), std::string::npos) << fbx.out;
   EXPECT_NE(fbx.out.find("24 $AssimpFbx$ helper nodes folded"), std::string::npos) << fbx.out;
-  EXPECT_NE(fbx.out.find("unit:        0.01 m per unit"), std::string::npos) << fbx.out;
+  EXPECT_NE(fbx.out.find("unit:        cm (declared by the file: FBX UnitScaleFactor 1)"), std::string::npos) << fbx.out;
   EXPECT_NE(fbx.out.find("joint(s) without rotation keys (static)"), std::string::npos) << fbx.out;
   EXPECT_NE(fbx.out.find("non-uniform key spacing"), std::string::npos) << fbx.out;
 }

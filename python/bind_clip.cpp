@@ -1,7 +1,12 @@
 // rotinterp.Clip: a clip read from a file or built from arrays, and its data as arrays.
 #include "common.h"
+#include "rotinterp/clip/bvh_layout.h"
 #include "rotinterp/clip/frames.h"
+#include "rotinterp/eval/evaluate_clip.h"
+#include "rotinterp/io/euler.h"
+#include "rotinterp/io/write.h"
 
+#include <cmath>
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -91,7 +96,13 @@ Clip make_clip(const std::vector<std::string>& names, const py::handle& parents_
   const Doubles times = times_array(times_in, "times");
   const auto f = static_cast<std::size_t>(times.shape(0));
   const auto parents = py::array_t<long long, py::array::c_style | py::array::forcecast>::ensure(parents_in);
-  const Doubles offsets = Doubles::ensure(offsets_in), rotations = Doubles::ensure(rotations_in);
+  bool in_scalar_first = scalar_first;  // a scipy Rotation comes scalar-last
+  const Doubles offsets = Doubles::ensure(offsets_in);
+  Doubles rotations = unit_quats(rotations_in, in_scalar_first, "rotations");
+  // (F·J, 4), frame-major, as a flat scipy Rotation of every frame's joints holds them.
+  if (rotations.ndim() == 2 && static_cast<std::size_t>(rotations.shape(0)) == f * nj && nj > 0)
+    rotations = Doubles::ensure(rotations.reshape({static_cast<py::ssize_t>(f), static_cast<py::ssize_t>(nj),
+                                                   py::ssize_t{4}}));
   if (!parents || parents.ndim() != 1 || static_cast<std::size_t>(parents.shape(0)) != nj)
     value_error("parents must be a 1-D array with one entry per name (" + std::to_string(nj) + ")");
   if (!offsets || offsets.ndim() != 2 || static_cast<std::size_t>(offsets.shape(0)) != nj || offsets.shape(1) != 3)
@@ -101,7 +112,6 @@ Clip make_clip(const std::vector<std::string>& names, const py::handle& parents_
     value_error("rotations must have shape (F, J, 4) = (" + std::to_string(f) + ", " + std::to_string(nj) + ", 4), got " +
                 shape_text(rotations));
   require_finite(offsets, "offsets");
-  require_finite(rotations, "rotations");
   Clip c;
   c.name = name;
   c.source_format = "python";
@@ -116,8 +126,8 @@ Clip make_clip(const std::vector<std::string>& names, const py::handle& parents_
   c.rotations.resize(nj);
   c.translations.resize(nj);
   for (std::size_t j = 0; j < nj; ++j) {
-    c.rotations[j] = track_of(times.data(), rotations.data(), f, nj, j, scalar_first);
-    c.rotations[j].make_sign_continuous();  // normalizes too
+    c.rotations[j] = track_of(times.data(), rotations.data(), f, nj, j, in_scalar_first);
+    c.rotations[j].make_sign_continuous();
   }
   if (!translations.is_none()) {
     for (const auto& item : translations.cast<py::dict>()) {
@@ -148,6 +158,128 @@ Clip make_clip(const std::vector<std::string>& names, const py::handle& parents_
   return c;
 }
 
+
+// ---- clips as data: world positions, Euler angles ---------------------------------------
+
+// Frame indices into the clip's frame grid (clip/frames.h): all of them for None,
+// else a number or a 1-D array of indices in [0, F), negative ones counting from the
+// end as numpy's do.
+std::vector<std::size_t> frame_indices(const py::object& frames, std::size_t count) {
+  std::vector<std::size_t> out;
+  if (frames.is_none()) {
+    for (std::size_t k = 0; k < count; ++k) out.push_back(k);
+    return out;
+  }
+  const auto a = py::array_t<long long, py::array::c_style | py::array::forcecast>::ensure(frames);
+  if (!a || a.ndim() > 1) value_error("frames must be None, a frame index or a 1-D array of frame indices");
+  const auto n = static_cast<long long>(count);
+  for (py::ssize_t i = 0; i < a.size(); ++i) {
+    const long long k = a.data()[i];
+    if (k < -n || k >= n)
+      value_error("frame " + std::to_string(k) + " outside the clip's " + std::to_string(count) + " frames");
+    out.push_back(static_cast<std::size_t>(k < 0 ? k + n : k));
+  }
+  return out;
+}
+
+// World positions (F, J, 3) in metres at the clip's frames: its motion at each frame
+// (dense_clip, as eval and render take it) through forward_kinematics, times the
+// clip's metres per unit.
+py::array clip_positions(const Clip& c, const py::object& frames_in) {
+  DenseClip d;
+  {
+    py::gil_scoped_release release;
+    d = dense_clip(c);
+  }
+  const std::vector<std::size_t> frames = frame_indices(frames_in, d.grid.size());
+  const std::size_t nj = c.skeleton.joints.size();
+  py::array_t<double> out({frames.size(), nj, std::size_t{3}});
+  double* o = out.mutable_data();
+  const double scale = metres_per_unit(c);
+  {
+    py::gil_scoped_release release;
+    std::vector<Quat> rotation(nj);
+    std::vector<Vec3> translation(nj);
+    WorldPose pose;
+    for (std::size_t i = 0; i < frames.size(); ++i) {
+      for (std::size_t j = 0; j < nj; ++j) {
+        rotation[j] = d.rotation[j][frames[i]];
+        translation[j] = d.translation[j][frames[i]];
+      }
+      forward_kinematics(c.skeleton, rotation, translation, pose);
+      for (std::size_t j = 0; j < nj; ++j)
+        for (int x = 0; x < 3; ++x) o[3 * (i * nj + j) + static_cast<std::size_t>(x)] = scale * pose.position[j][x];
+    }
+  }
+  return out;
+}
+
+// Eval's own world positions (clip units, (F, J, 3)) of the clip's reference: what
+// the tests hold positions() against.
+py::array eval_world_positions(const Clip& c) {
+  ClipEvalOptions o;
+  o.methods = {"slerp"};
+  const ClipReference r = checked(prepare_reference(c, c.name, o));
+  const std::size_t nf = r.world.size(), nj = r.skeleton.joints.size();
+  py::array_t<double> out({nf, nj, std::size_t{3}});
+  for (std::size_t k = 0; k < nf; ++k)
+    for (std::size_t j = 0; j < nj; ++j)
+      for (py::ssize_t x = 0; x < 3; ++x) out.mutable_at(k, j, x) = r.world[k].position[j][x];
+  return out;
+}
+
+// Joint j's Euler order in its file: its BVH rotation channels in file order
+// ("ZXY"), else what the BVH writer uses for joints without a layout.
+std::string file_euler_order(const Clip& c, std::size_t j) {
+  std::string order;
+  for (Channel ch : bvh_channels(c, j)) {
+    if (ch == Channel::Xrotation) order += 'X';
+    if (ch == Channel::Yrotation) order += 'Y';
+    if (ch == Channel::Zrotation) order += 'Z';
+  }
+  return order.size() == 3 ? order : WriteOptions{}.bvh_order;
+}
+
+// The principal Euler solution of q: each angle in (−π, π], the middle one in
+// [−π/2, π/2] (Tait–Bryan) or [0, π] (proper Euler), as BVH writers give them.
+Vec3 principal_euler(const Quat& q, const EulerAxes& axes) {
+  Vec3 a = euler_nearest(q, axes, Vec3::Zero());
+  const auto wrap = [](double x) { return x - kTwoPi * std::ceil((x - kPi) / kTwoPi); };
+  const bool proper = axes[0] == axes[2];
+  const double middle = wrap(a[1]);
+  if (proper ? middle < 0.0 : std::abs(middle) > 0.5 * kPi)  // the other solution of the pair
+    a = Vec3(a[0] + kPi, proper ? -a[1] : kPi - a[1], a[2] + kPi);
+  return Vec3(wrap(a[0]), wrap(a[1]), wrap(a[2]));
+}
+
+// Local rotations at the clip's frames as Euler angles (F, J, 3): in `order` for
+// every joint, or each joint's file order for None. Frame 0 takes the principal
+// solution (a BVH file's own numbers, up to round-off), every later frame the
+// solution nearest the frame before (euler_nearest): the curves have no ±180° wraps.
+py::array clip_euler(const Clip& c, const std::optional<std::string>& order, bool degrees) {
+  const std::size_t nj = c.skeleton.joints.size();
+  std::vector<EulerAxes> axes(nj);
+  for (std::size_t j = 0; j < nj; ++j) {
+    const std::string text = order ? *order : file_euler_order(c, j);
+    const std::optional<EulerAxes> a = parse_euler_order(text);
+    if (!a) value_error("Euler order '" + text + "': three axis letters, as \"ZXY\" (the first outermost)");
+    axes[j] = *a;
+  }
+  const DenseClip d = dense_clip(c);
+  const std::size_t nf = d.grid.size();
+  py::array_t<double> out({nf, nj, std::size_t{3}});
+  double* o = out.mutable_data();
+  const double scale = degrees ? 180.0 / kPi : 1.0;
+  for (std::size_t j = 0; j < nj; ++j) {
+    Vec3 previous;
+    for (std::size_t k = 0; k < nf; ++k) {
+      previous = k == 0 ? principal_euler(d.rotation[j][k], axes[j])
+                        : euler_nearest(d.rotation[j][k], axes[j], previous);
+      for (int x = 0; x < 3; ++x) o[3 * (k * nj + j) + static_cast<std::size_t>(x)] = scale * previous[x];
+    }
+  }
+  return out;
+}
 
 }  // namespace
 
@@ -187,6 +319,23 @@ void bind_clip(py::module_& m) {
       .def_property_readonly("rate", &rate_hz)
       .def_property_readonly("rate_text", &rate_text)
       .def_readonly("unit_scale", &Clip::unit_scale)
+      .def_property_readonly("metres_per_unit", [](const Clip& c) { return metres_per_unit(c); })
+      .def_property_readonly("joint_names",
+                             [](const Clip& c) {
+                               std::vector<std::string> n;
+                               for (const Joint& j : c.skeleton.joints) n.push_back(j.name);
+                               return n;
+                             })
+      .def("positions", &clip_positions, py::arg("frames") = py::none())
+      .def_property_readonly("euler_orders",
+                             [](const Clip& c) {
+                               std::vector<std::string> orders;
+                               for (std::size_t j = 0; j < c.skeleton.joints.size(); ++j)
+                                 orders.push_back(file_euler_order(c, j));
+                               return orders;
+                             })
+      .def_property_readonly("local_rotations", [](const Clip& c) { return clip_euler(c, std::nullopt, false); })
+      .def("to_euler", &clip_euler, py::arg("order") = py::none(), py::arg("degrees") = false)
       .def_readonly("source_format", &Clip::source_format)
       .def_property_readonly("frame_count", &Clip::frame_count)
       .def("__repr__", [](const Clip& c) {
@@ -194,6 +343,7 @@ void bind_clip(py::module_& m) {
         return "<rotinterp.Clip '" + c.name + "': " + std::to_string(c.skeleton.joints.size()) + " joints, " +
                std::to_string(c.frame_count()) + " frames" + (r ? ", " + r->to_string() + " Hz" : "") + ">";
       });
+  m.def("_eval_world_positions", &eval_world_positions, py::arg("clip"));
 }
 
 }  // namespace rotinterp::python

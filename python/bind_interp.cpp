@@ -46,11 +46,10 @@ py::array interpolate(const py::handle& times_in, const py::handle& quats_in, co
                       const std::string& method, bool scalar_first) {
   const Doubles times = times_array(times_in, "times");
   const Doubles new_times = times_array(new_times_in, "new_times");
-  const Doubles quats = Doubles::ensure(quats_in);
-  if (!quats) value_error("quats must be an array of float quaternions");
+  bool in_scalar_first = scalar_first;  // a scipy Rotation comes scalar-last
+  const Doubles quats = unit_quats(quats_in, in_scalar_first, "quats");
   const auto k = static_cast<std::size_t>(times.shape(0));
   const std::size_t joints = joints_of(quats, k);
-  require_finite(quats, "quats");
   if (!find_method(method)) value_error("unknown method '" + method + "' (valid: " + method_names() + ")");
   const auto n = static_cast<std::size_t>(new_times.shape(0));
   const std::size_t jn = joints == 0 ? 1 : joints;
@@ -68,7 +67,7 @@ py::array interpolate(const py::handle& times_in, const py::handle& quats_in, co
     // more than the evaluation itself).
     std::vector<Quat> samples(n);
     for (std::size_t j = 0; j < jn; ++j) {
-      auto curve = make_interpolator(method, track_of(t, q, k, jn, j, scalar_first));
+      auto curve = make_interpolator(method, track_of(t, q, k, jn, j, in_scalar_first));
       if (!curve) {
         error = (joints ? "joint " + std::to_string(j) + ": " : std::string()) + curve.error();
         break;
@@ -87,12 +86,11 @@ class PyInterpolator {
   PyInterpolator(const py::handle& times_in, const py::handle& quats_in, std::string method, bool scalar_first)
       : method_(std::move(method)), scalar_first_(scalar_first) {
     const Doubles times = times_array(times_in, "times");
-    const Doubles quats = Doubles::ensure(quats_in);
-    if (!quats) value_error("quats must be an array of float quaternions");
+    bool in_scalar_first = scalar_first;  // a scipy Rotation comes scalar-last
+    const Doubles quats = unit_quats(quats_in, in_scalar_first, "quats");
     const auto k = static_cast<std::size_t>(times.shape(0));
     if (joints_of(quats, k) != 0) value_error("make_interpolator takes one track: quats of shape (K, 4)");
-    require_finite(quats, "quats");
-    track_ = track_of(times.data(), quats.data(), k, 1, 0, scalar_first);
+    track_ = track_of(times.data(), quats.data(), k, 1, 0, in_scalar_first);
     curve_ = checked(make_interpolator(method_, track_));
   }
 
@@ -104,19 +102,32 @@ class PyInterpolator {
       for (std::size_t i = 0; i < n; ++i) put_quat(q[i], o + 4 * i, scalar_first_);
     });
   }
-  // Fixed-frame angular velocity (rad/s): (3,) or (N, 3).
-  py::object angular_velocity(const py::handle& t) const {
-    return apply(t, 3, [this](const double* x, std::size_t n, double* o) {
-      for (std::size_t i = 0; i < n; ++i) {
-        const Vec3 w = curve_->angular_velocity(x[i]);
-        o[3 * i] = w.x(), o[3 * i + 1] = w.y(), o[3 * i + 2] = w.z();
-      }
-    });
+  // Angular velocity (rad/s) and acceleration (rad/s²), (3,) or (N, 3), in the fixed
+  // frame or the body frame (scipy's RotationSpline(t, 1) and (t, 2)): the body
+  // vector is q(t)⁻¹·(fixed vector) for both, as the frame's turning adds ω × ω = 0
+  // to the acceleration.
+  py::object angular_velocity(const py::handle& t, const std::string& frame) const {
+    return derivative(t, frame, &Interpolator::angular_velocity);
+  }
+  py::object angular_acceleration(const py::handle& t, const std::string& frame) const {
+    return derivative(t, frame, &Interpolator::angular_acceleration);
   }
   const std::string& method() const { return method_; }
   py::array times() const { return py::array_t<double>(track_.times.size(), track_.times.data()); }
 
  private:
+  py::object derivative(const py::handle& t, const std::string& frame, Vec3 (Interpolator::*of)(double) const) const {
+    if (frame != "fixed" && frame != "body") value_error("frame must be \"fixed\" or \"body\", got \"" + frame + "\"");
+    const bool body = frame == "body";
+    return apply(t, 3, [this, body, of](const double* x, std::size_t n, double* o) {
+      for (std::size_t i = 0; i < n; ++i) {
+        Vec3 v = (curve_.get()->*of)(x[i]);
+        if (body) v = curve_->evaluate(x[i]).conjugate() * v;
+        o[3 * i] = v.x(), o[3 * i + 1] = v.y(), o[3 * i + 2] = v.z();
+      }
+    });
+  }
+
   template <class Fill>
   py::object apply(const py::handle& t, py::ssize_t width, Fill fill) const {
     const bool scalar = py::isinstance<py::float_>(t) || py::isinstance<py::int_>(t);
@@ -145,29 +156,31 @@ class PyInterpolator {
 
 // (…, 4) arrays of the same shape → the rotation angle between them (radians), (…).
 py::array angle_between(const py::handle& a_in, const py::handle& b_in, bool scalar_first) {
-  const Doubles a = Doubles::ensure(a_in), b = Doubles::ensure(b_in);
-  if (!a || !b || a.ndim() < 1 || a.shape(a.ndim() - 1) != 4 || shape_of(a) != shape_of(b))
-    value_error("angle: a and b must be quaternion arrays of the same shape (..., 4)");
+  bool a_first = scalar_first, b_first = scalar_first;
+  const Doubles a = unit_quats(a_in, a_first, "a"), b = unit_quats(b_in, b_first, "b");
+  if (shape_of(a) != shape_of(b))
+    value_error("angle: a and b must be quaternion arrays of the same shape (..., 4), got " + shape_text(a) + " and " +
+                shape_text(b));
   std::vector<py::ssize_t> shape(a.shape(), a.shape() + a.ndim() - 1);
   py::array_t<double> out(shape);
   const auto n = static_cast<std::size_t>(a.size() / 4);
   const double *pa = a.data(), *pb = b.data();
   double* o = out.mutable_data();
   for (std::size_t i = 0; i < n; ++i)
-    o[i] = angular_distance(quat_at(pa + 4 * i, scalar_first), quat_at(pb + 4 * i, scalar_first));
+    o[i] = angular_distance(quat_at(pa + 4 * i, a_first), quat_at(pb + 4 * i, b_first));
   return out;
 }
 
 // q = swing · twist about `axis` (3,) in the moving frame, for (…, 4) arrays.
 py::tuple swing_twist_split(const py::handle& q_in, const py::handle& axis_in, bool scalar_first) {
-  const Doubles q = Doubles::ensure(q_in), axis = Doubles::ensure(axis_in);
-  if (!q || q.ndim() < 1 || q.shape(q.ndim() - 1) != 4) value_error("swing_twist: q must have shape (..., 4)");
+  bool q_first = scalar_first;
+  const Doubles q = unit_quats(q_in, q_first, "q"), axis = Doubles::ensure(axis_in);
   if (!axis || axis.ndim() != 1 || axis.shape(0) != 3) value_error("swing_twist: axis must have shape (3,)");
   const Vec3 ax(axis.at(0), axis.at(1), axis.at(2));
   py::array_t<double> swing(shape_of(q)), twist(shape_of(q));
   const auto n = static_cast<std::size_t>(q.size() / 4);
   for (std::size_t i = 0; i < n; ++i) {
-    const SwingTwist st = swing_twist(quat_at(q.data() + 4 * i, scalar_first), ax);
+    const SwingTwist st = swing_twist(quat_at(q.data() + 4 * i, q_first), ax);
     put_quat(st.swing, swing.mutable_data() + 4 * i, scalar_first);
     put_quat(st.twist, twist.mutable_data() + 4 * i, scalar_first);
   }
@@ -179,7 +192,8 @@ py::tuple swing_twist_split(const py::handle& q_in, const py::handle& axis_in, b
 void bind_interp(py::module_& m) {
   py::class_<PyInterpolator>(m, "Interpolator")
       .def("__call__", &PyInterpolator::call, py::arg("t"))
-      .def("angular_velocity", &PyInterpolator::angular_velocity, py::arg("t"))
+      .def("angular_velocity", &PyInterpolator::angular_velocity, py::arg("t"), py::arg("frame") = "fixed")
+      .def("angular_acceleration", &PyInterpolator::angular_acceleration, py::arg("t"), py::arg("frame") = "fixed")
       .def_property_readonly("method", &PyInterpolator::method)
       .def_property_readonly("times", &PyInterpolator::times);
 

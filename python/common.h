@@ -98,8 +98,10 @@ inline Doubles unit_quats(const py::handle& h, bool& scalar_first, const char* w
   } else {
     raw = Doubles::ensure(h);
   }
-  if (!raw || raw.ndim() < 1 || raw.shape(raw.ndim() - 1) != 4)
-    value_error(std::string(what) + " must be quaternions: an array of shape (..., 4) or a scipy Rotation");
+  if (!raw) value_error(std::string(what) + " must be quaternions: a numeric array of shape (..., 4) or a scipy Rotation");
+  if (raw.ndim() < 1 || raw.shape(raw.ndim() - 1) != 4)
+    value_error(std::string(what) + " must be quaternions: an array of shape (..., 4) or a scipy Rotation, got shape " +
+                shape_text(raw));
   Doubles out(shape_of(raw));
   const double* p = raw.data();
   double* o = out.mutable_data();
@@ -124,6 +126,13 @@ inline RotationTrack track_of(const double* times, const double* quats, std::siz
   track.keys.resize(k);
   for (std::size_t i = 0; i < k; ++i) track.keys[i] = quat_at(quats + 4 * (i * joints + j), scalar_first);
   return track;
+}
+
+// Metres per clip unit, the one place the module reads a clip's unit from:
+// Clip::unit_scale, and for BVH (which states none) centimetres, as reduce takes it.
+inline double metres_per_unit(const Clip& c) {
+  if (c.source_format == "bvh") return 0.01;
+  return std::isfinite(c.unit_scale) && c.unit_scale > 0.0 ? c.unit_scale : 1.0;
 }
 
 // The parts of the module, one per API area (module.cpp calls them in this order).

@@ -159,9 +159,11 @@ def test_metrics_on_arrays():
 
 def test_bad_input_raises_value_error_with_the_message():
     t, q = smooth_track(5, 6, 2)
-    with pytest.raises(ValueError, match=r"shape \(K, 4\) or \(K, J, 4\)"):
+    with pytest.raises(ValueError, match=r"quats must be quaternions: .* got shape \(6, 2, 3\)"):
         rotinterp.interpolate(t, q[..., :3], t)
-    with pytest.raises(ValueError, match="non-finite"):
+    with pytest.raises(ValueError, match=r"shape \(K, 4\) or \(K, J, 4\)"):
+        rotinterp.interpolate(t, q[None], t)
+    with pytest.raises(ValueError, match=r"quats\[2, 1\] is not finite"):
         bad = q.copy()
         bad[2, 1, 0] = np.nan
         rotinterp.interpolate(t, bad, t)

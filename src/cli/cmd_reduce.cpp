@@ -27,9 +27,8 @@ namespace rotinterp::cli {
 
 namespace {
 
-// ozz-animation's default hierarchical tolerance: 1 mm at 10 cm.
-constexpr double kDefaultToleranceMm = 1.0;
-constexpr double kDefaultShellCm = 10.0;
+constexpr double kDefaultToleranceMm = kDefaultReduceToleranceMm;
+constexpr double kDefaultShellCm = kDefaultReduceShellDistanceCm;
 // What a BVH's numbers are taken to be when --unit-scale is not given.
 constexpr double kBvhAssumedMetresPerUnit = 0.01;
 

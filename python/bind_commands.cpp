@@ -6,6 +6,7 @@
 #include "rotinterp/eval/error_row.h"
 #include "rotinterp/eval/evaluate_clip.h"
 #include "rotinterp/interp/interpolator.h"
+#include "rotinterp/io/info.h"
 #include "rotinterp/io/read.h"
 #include "rotinterp/io/write.h"
 
@@ -37,18 +38,6 @@ namespace fs = std::filesystem;
   }
   PyErr_SetObject(type, py::make_tuple(err, e.message, path.string()).ptr());
   throw py::error_already_set();
-}
-
-Clip read_path(const fs::path& path, const py::object& anim) {
-  ReadOptions o;
-  if (!anim.is_none()) o.animation = py::str(anim).cast<std::string>();
-  Result<Clip> c = make_error("");
-  {
-    py::gil_scoped_release release;
-    c = read_clip(path, o);
-  }
-  if (!c) raise_read_error(c.failure(), path);
-  return std::move(*c);
 }
 
 void write_path(const Clip& clip, const fs::path& path, const std::string& bvh_order) {
@@ -182,8 +171,43 @@ py::dict evaluate(const py::object& inputs, const std::optional<std::vector<std:
 
 }  // namespace
 
+Clip read_path(const std::string& path, const py::object& anim) {
+  ReadOptions o;
+  if (!anim.is_none()) o.animation = py::str(anim).cast<std::string>();
+  Result<Clip> c = make_error("");
+  {
+    py::gil_scoped_release release;
+    c = read_clip(path, o);
+  }
+  if (!c) raise_read_error(c.failure(), path);
+  return std::move(*c);
+}
+
+// rotinterp.info: the document `rotinterp info --json` prints (clip_info_json), as
+// Python data. Warnings go into its "warnings", not to stderr.
+py::object info(const std::string& path, const py::object& anim) {
+  ReadOptions o;
+  if (!anim.is_none()) o.animation = py::str(anim).cast<std::string>();
+  o.on_warning = [](const std::string&) {};
+  std::string text;
+  Result<ClipFileInfo> r = make_error("");
+  {
+    py::gil_scoped_release release;
+    r = inspect_clip(path, o);
+    if (r) text = clip_info_json(path, *r);
+  }
+  if (!r) raise_read_error(r.failure(), path);
+  return py::module_::import("json").attr("loads")(text);
+}
+
+Clip clip_or_path(const py::object& input) {
+  if (py::isinstance<Clip>(input)) return input.cast<Clip>();
+  return read_path(py::str(input).cast<std::string>(), py::none());
+}
+
 void bind_commands(py::module_& m) {
   m.def("read_clip", &read_path, py::arg("path"), py::arg("anim") = py::none());
+  m.def("info", &info, py::arg("path"), py::arg("anim") = py::none());
   m.def("write_clip", &write_path, py::arg("clip"), py::arg("path"), py::arg("bvh_order") = "ZXY");
   m.def("resample", &resample, py::arg("clip"), py::arg("fps") = py::none(), py::arg("keep_every") = py::none(),
         py::arg("method") = std::string(kDefaultResampleMethod),

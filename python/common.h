@@ -135,9 +135,17 @@ inline double metres_per_unit(const Clip& c) {
   return std::isfinite(c.unit_scale) && c.unit_scale > 0.0 ? c.unit_scale : 1.0;
 }
 
+// read_clip's reading (bind_commands.cpp): the clip at `path`, its animation `anim`
+// (None, a name or an index); raises OSError subclasses or ValueError.
+Clip read_path(const std::string& path, const py::object& anim);
+// A clip given as a rotinterp.Clip or read from a path.
+Clip clip_or_path(const py::object& input);
+
 // The parts of the module, one per API area (module.cpp calls them in this order).
 void bind_clip(py::module_& m);
 void bind_interp(py::module_& m);
 void bind_commands(py::module_& m);
+void bind_reduce(py::module_& m);
+void bind_render(py::module_& m);  // bind_render.cpp: only where the renderer is built
 
 }  // namespace rotinterp::python

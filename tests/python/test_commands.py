@@ -1,0 +1,95 @@
+"""info, reduce and render from Python: the same document, keys and images as the
+command line."""
+import json
+import os
+import subprocess
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import rotinterp
+
+CLI = os.environ.get("ROTINTERP_CLI", "build/rotinterp")
+DATA = Path(os.environ.get("ROTINTERP_SHARED_DATA", "../shared/data"))
+SAMPLES = Path(__file__).resolve().parents[2] / "samples"
+BVH_CLIPS = sorted((DATA / "bvh").glob("*.bvh"))
+
+
+def cli(*args):
+    return subprocess.run([CLI, *map(str, args)], check=True, capture_output=True, text=True).stdout
+
+
+@pytest.mark.parametrize("path", [SAMPLES / "walk.bvh", BVH_CLIPS[0], DATA / "fbx" / "digitalrune_Marine_Run.fbx"],
+                         ids=lambda p: p.name)
+def test_info_is_the_document_info_json_prints(path):
+    assert rotinterp.info(path) == json.loads(cli("info", "--json", path))
+
+
+def test_info_raises_as_read_clip_does(tmp_path):
+    with pytest.raises(FileNotFoundError):
+        rotinterp.info(tmp_path / "missing.bvh")
+
+
+@pytest.mark.parametrize("method, args, kwargs", [
+    ("slerp", ["--tolerance-deg", "0.5"], {"tolerance_deg": 0.5}),
+    ("c2", [], {}),  # the default budget: 1 mm at 10 cm
+    ("clamped", ["--tolerance-mm", "2", "--shell-distance", "5", "--tolerance-for", "Head=0.2deg"],
+     {"tolerance_mm": 2, "shell_distance_cm": 5, "tolerance_for": {"Head": {"deg": 0.2}}}),
+])
+def test_reduce_keeps_the_keys_the_command_keeps(method, args, kwargs, tmp_path):
+    path = SAMPLES / "walk.bvh"
+    keys = tmp_path / "keys.json"
+    cli("reduce", path, "-o", keys, "--method", method, "--quiet", *args)
+    theirs = json.loads(keys.read_text())
+    ours = rotinterp.reduce(rotinterp.read_clip(path), method=method, **kwargs)
+    assert ours["kept_keys"] == theirs["kept_keys"] < ours["source_keys"] == theirs["source_keys"]
+    assert ours["metres_per_unit"] == theirs["metres_per_unit"]
+    reduced = ours["clip"]
+    for j, joint in enumerate(theirs["joints"]):
+        mine = ours["joints"][j]
+        assert mine["name"] == joint["name"]
+        assert list(mine["rotation_frames"]) == joint["rotation"]["frames"]
+        times, quats = reduced.track(j)
+        np.testing.assert_array_equal(times, joint["rotation"]["times"])
+        np.testing.assert_array_equal(quats, joint["rotation"]["keys"])
+        assert mine["max_rotation_error_deg"] == joint["max_rotation_error_deg"]
+        if "translation" in joint:
+            assert list(mine["translation_frames"]) == joint["translation"]["frames"]
+            assert mine["max_translation_error_mm"] == joint["max_translation_error_mm"]
+        else:
+            assert mine["translation_frames"] is None
+
+
+def test_reduce_refuses_budgets_the_command_refuses():
+    clip = rotinterp.read_clip(SAMPLES / "walk.bvh")
+    with pytest.raises(ValueError, match="tolerance_deg must be a finite number > 0"):
+        rotinterp.reduce(clip, tolerance_deg=-1)
+    with pytest.raises(ValueError, match="has no joint 'Tail'"):
+        rotinterp.reduce(clip, tolerance_deg=1, tolerance_for={"Tail": {"deg": 1}})
+    with pytest.raises(ValueError, match="a mm budget needs tolerance_mm"):
+        rotinterp.reduce(clip, tolerance_deg=1, tolerance_for={"Head": {"mm": 1}})
+
+
+def test_render_writes_the_pngs_the_command_writes(tmp_path):
+    if not hasattr(rotinterp._rotinterp, "render"):
+        pytest.skip("built without the renderer")
+    options = ["--methods", "slerp,c2", "--keep-every", "6", "--frames", "3:30:9", "--size", "192x108", "--sheet",
+               "--trail", "LeftHand"]
+    cli("render", SAMPLES / "walk.bvh", "-o", tmp_path / "cli", "-q", *options)
+    files = rotinterp.render(SAMPLES / "walk.bvh", tmp_path / "py", methods=["slerp", "c2"], keep_every=6,
+                             frames="3:30:9", size="192x108", sheet=True, trail="LeftHand")
+    names = sorted(p.name for p in (tmp_path / "cli").iterdir())
+    assert sorted(Path(f).name for f in files) == names and "sheet.png" in names and len(names) == 5
+    for name in names:
+        assert (tmp_path / "py" / name).read_bytes() == (tmp_path / "cli" / name).read_bytes(), name
+
+
+def test_render_refuses_options_as_the_command_does(tmp_path):
+    if not hasattr(rotinterp._rotinterp, "render"):
+        pytest.skip("built without the renderer")
+    clip = rotinterp.read_clip(SAMPLES / "walk.bvh")
+    with pytest.raises(ValueError, match="give out_dir"):
+        rotinterp.render(clip)
+    with pytest.raises(ValueError, match="unknown method 'nope'"):
+        rotinterp.render(clip, tmp_path, methods=["nope"])

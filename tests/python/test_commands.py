@@ -93,3 +93,33 @@ def test_render_refuses_options_as_the_command_does(tmp_path):
         rotinterp.render(clip)
     with pytest.raises(ValueError, match="unknown method 'nope'"):
         rotinterp.render(clip, tmp_path, methods=["nope"])
+
+
+def largest_pause_of_another_thread(call):
+    """Run call() in a thread while this one keeps stamping the clock; the longest gap
+    between stamps: the whole call if it held the GIL, a scheduling slice if not."""
+    import threading
+    import time
+    worker = threading.Thread(target=call)
+    stamps = [time.perf_counter()]
+    worker.start()
+    while worker.is_alive():
+        stamps.append(time.perf_counter())
+    worker.join()
+    stamps.append(time.perf_counter())
+    return float(np.diff(stamps).max()), stamps[-1] - stamps[0]
+
+
+@pytest.mark.parametrize("name", ["reduce", "render"])
+def test_commands_release_the_gil(name, tmp_path):
+    # (A call that holds the GIL, e.g. rotinterp._rotinterp._eval_world_positions,
+    # leaves this thread no stamp at all until it returns.)
+    clip = rotinterp.read_clip(BVH_CLIPS[0])
+    if name == "render" and not hasattr(rotinterp._rotinterp, "render"):
+        pytest.skip("built without the renderer")
+    call = {"reduce": lambda: rotinterp.reduce(clip, method="c2", tolerance_mm=0.2),
+            "render": lambda: rotinterp.render(clip, tmp_path, methods=["slerp", "c2"], size="320x180",
+                                               frames="0:120:2")}[name]
+    pause, total = largest_pause_of_another_thread(call)
+    assert total > 0.1  # long enough for a held GIL to show
+    assert pause < 0.5 * total, (pause, total)

@@ -133,3 +133,33 @@ def test_to_euler_refuses_an_order_that_is_not_three_axes():
     clip = rotinterp.read_clip(SAMPLES / "walk.bvh")
     with pytest.raises(ValueError, match="Euler order 'XXY'"):
         clip.to_euler("XXY")
+
+
+def test_positions_are_blenders_bone_heads_of_the_clip_written_as_glb(tmp_path):
+    # Blender imports the GLB as a user would; its bone heads, in metres and Z-up
+    # (its glTF importer maps (x, y, z) to (x, -z, y)), at each key (t·24: glTF has no
+    # frame rate, Blender keeps 24 fps). Nothing is fitted.
+    import json
+    import shutil
+    import subprocess
+    if shutil.which("blender") is None:
+        pytest.skip("Blender is not installed (scripts/install-deps.sh adds it)")
+    clip = rotinterp.resample(rotinterp.read_clip(FBX), fps=24, range=(0.0, 0.5))
+    glb, dump = tmp_path / "clip.glb", tmp_path / "blender.json"
+    rotinterp.write_clip(clip, glb)
+    script = Path(__file__).resolve().parents[1] / "clients" / "blender_dump.py"
+    subprocess.run(["blender", "-b", "--factory-startup", "--python", str(script), "--", str(dump), str(glb)],
+                   check=True, capture_output=True, timeout=300)
+    seen = json.loads(dump.read_text())[str(glb)]
+    assert seen["armatures"] == 1
+    frames = np.rint(np.array(seen["key_frames"])).astype(int)  # t·24 on the 24 fps grid
+    np.testing.assert_allclose(seen["key_frames"], frames, atol=1e-4)
+    ours = clip.positions(frames)
+    theirs = np.array(seen["positions"])
+    bone = {name: i for i, name in enumerate(seen["bones"])}
+    joints = [j for j, name in enumerate(clip.names) if name in bone]
+    assert len(joints) == len(clip.names)
+    ours_z_up = np.stack([ours[..., 0], -ours[..., 2], ours[..., 1]], axis=-1)[:, joints]
+    blender = theirs[:, [bone[clip.names[j]] for j in joints]]
+    height = np.ptp(ours[0], axis=0).max()
+    assert np.abs(ours_z_up - blender).max() < 1e-4 * height, np.abs(ours_z_up - blender).max()

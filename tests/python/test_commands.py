@@ -117,7 +117,7 @@ def test_commands_release_the_gil(name, tmp_path):
     clip = rotinterp.read_clip(BVH_CLIPS[0])
     if name == "render" and not hasattr(rotinterp._rotinterp, "render"):
         pytest.skip("built without the renderer")
-    call = {"reduce": lambda: rotinterp.reduce(clip, method="c2", tolerance_mm=0.2),
+    call = {"reduce": lambda: rotinterp.reduce(clip, method="bf", tolerance_mm=0.1),
             "render": lambda: rotinterp.render(clip, tmp_path, methods=["slerp", "c2"], size="320x180",
                                                frames="0:120:2")}[name]
     pause, total = largest_pause_of_another_thread(call)

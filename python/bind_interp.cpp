@@ -130,9 +130,9 @@ class PyInterpolator {
 
   template <class Fill>
   py::object apply(const py::handle& t, py::ssize_t width, Fill fill) const {
-    const bool scalar = py::isinstance<py::float_>(t) || py::isinstance<py::int_>(t);
     const Doubles x = Doubles::ensure(t);
     if (!x || x.ndim() > 1) value_error("t must be a number or a 1-D array of seconds");
+    const bool scalar = x.ndim() == 0;  // a number of any type, numpy's float32 included
     const auto n = static_cast<std::size_t>(x.size());
     py::array_t<double> out(scalar ? std::vector<py::ssize_t>{width}
                                    : std::vector<py::ssize_t>{static_cast<py::ssize_t>(n), width});

@@ -77,6 +77,10 @@ def test_times_of_any_real_dtype_give_the_float64_result():
     for dtype in (np.int32, np.int64, np.float32, np.uint8, np.float16):
         ours = rotinterp.interpolate(np.arange(8).astype(dtype), q, np.array([0.5, 3.25, 6.0]).astype(np.float32))
         assert rotinterp.angle(ours, reference).max() < 1e-12, dtype
+    f = rotinterp.make_interpolator(np.arange(8).astype(np.int16), q)
+    for number in (3, 3.0, np.float32(3.0), np.int64(3)):  # numbers of any type: one orientation
+        assert f(number).shape == (4,) and f.angular_acceleration(number).shape == (3,), type(number)
+        np.testing.assert_array_equal(f(number), f(3.0))
 
 
 def test_a_scipy_rotation_is_accepted_wherever_quaternions_are():

@@ -200,7 +200,7 @@ int main(int argc, char** argv) {
       continue;
     }
     Input in{f, std::move(*c), 1.0};
-    in.unit = in.clip.source_format == "bvh" ? 0.01 : (in.clip.unit_scale > 0 ? in.clip.unit_scale : 1.0);
+    in.unit = in.clip.unit.metres_per_unit;
     frames += in.clip.frame_count();
     loaded.push_back(f);
     inputs.push_back(std::move(in));

@@ -2,6 +2,7 @@
 #include "common.h"
 #include "rotinterp/clip/bvh_layout.h"
 #include "rotinterp/clip/frames.h"
+#include "rotinterp/clip/units.h"
 #include "rotinterp/eval/evaluate_clip.h"
 #include "rotinterp/io/euler.h"
 #include "rotinterp/io/write.h"
@@ -115,7 +116,7 @@ Clip make_clip(const std::vector<std::string>& names, const py::handle& parents_
   Clip c;
   c.name = name;
   c.source_format = "python";
-  c.unit_scale = unit_scale;
+  c.unit = {unit_scale, UnitOrigin::given, "given: make_clip(unit_scale=)"};
   for (std::size_t j = 0; j < nj; ++j) {
     Joint joint;
     joint.name = names[j];
@@ -284,6 +285,13 @@ py::array clip_euler(const Clip& c, const std::optional<std::string>& order, boo
 }  // namespace
 
 void bind_clip(py::module_& m) {
+  // The clip's unit (clip/units.h): metres per unit and where that figure came from.
+  py::class_<ClipUnit>(m, "ClipUnit")
+      .def_readonly("metres_per_unit", &ClipUnit::metres_per_unit)
+      .def_property_readonly("origin", [](const ClipUnit& u) { return std::string(unit_origin_name(u.origin)); })
+      .def_readonly("reason", &ClipUnit::reason)
+      .def_property_readonly("name", [](const ClipUnit& u) { return unit_name(u.metres_per_unit); })
+      .def("__repr__", [](const ClipUnit& u) { return "<rotinterp.ClipUnit " + describe_unit(u) + ">"; });
   py::class_<Clip>(m, "Clip")
       .def(py::init(&make_clip), py::arg("names"), py::arg("parents"), py::arg("offsets"), py::arg("times"),
            py::arg("rotations"), py::arg("translations") = py::none(), py::arg("frame_time") = py::none(),
@@ -318,7 +326,8 @@ void bind_clip(py::module_& m) {
       .def_readonly("frame_time", &Clip::frame_time)
       .def_property_readonly("rate", &rate_hz)
       .def_property_readonly("rate_text", &rate_text)
-      .def_readonly("unit_scale", &Clip::unit_scale)
+      .def_property_readonly("unit_scale", [](const Clip& c) { return c.unit.metres_per_unit; })
+      .def_readonly("unit", &Clip::unit)
       .def_property_readonly("metres_per_unit", [](const Clip& c) { return metres_per_unit(c); })
       .def_property_readonly("joint_names",
                              [](const Clip& c) {

@@ -3,6 +3,7 @@
 #include "rotinterp/clip/frames.h"
 #include "rotinterp/clip/metrics.h"
 #include "rotinterp/clip/resample.h"
+#include "rotinterp/clip/units.h"
 #include "rotinterp/eval/error_row.h"
 #include "rotinterp/eval/evaluate_clip.h"
 #include "rotinterp/interp/interpolator.h"
@@ -101,8 +102,10 @@ py::dict evaluate(const py::object& inputs, const std::optional<std::vector<std:
   } else {
     for (const MethodInfo& m : methods()) o.methods.push_back(m.name);
   }
-  for (const std::string& m : o.methods)
-    if (!find_method(m)) value_error("unknown method '" + m + "' (valid: " + method_names() + ")");
+  for (std::string& m : o.methods) {
+    if (!find_method(m)) value_error(unknown_method_message(m));
+    m = find_method(m)->name;  // one spelling in the results ("SLERP" is slerp)
+  }
   for (int n : keep_every)
     if (n < 1) value_error("keep_every values must be >= 1, got " + std::to_string(n));
   o.keep_every = keep_every;
@@ -139,7 +142,7 @@ py::dict evaluate(const py::object& inputs, const std::optional<std::vector<std:
   // rotation or smoothness values, rows of joints that are not feet no foot-contact
   // values: NaN there, as pandas reads the CSV's empty cells.
   const std::size_t n = rows.size();
-  py::list clip, method, joint, kind;
+  py::list clip, method, joint, kind, unit;
   py::array_t<long long> keep(n), frames(n), samples(n);
   const std::vector<ErrorValueColumn>& measured = error_value_columns();
   std::vector<py::array_t<double>> values;
@@ -150,6 +153,7 @@ py::dict evaluate(const py::object& inputs, const std::optional<std::vector<std:
     method.append(r.method);
     joint.append(r.joint);
     kind.append(r.end_site ? "end_site" : "joint");
+    unit.append(r.unit);
     keep.mutable_at(i) = r.keep_every;
     frames.mutable_at(i) = static_cast<long long>(r.frames);
     samples.mutable_at(i) = static_cast<long long>(r.samples);
@@ -162,7 +166,7 @@ py::dict evaluate(const py::object& inputs, const std::optional<std::vector<std:
       {"clip", np.attr("array")(clip, "str")},     {"method", np.attr("array")(method, "str")},
       {"keep_every", keep},                         {"joint", np.attr("array")(joint, "str")},
       {"frames", frames},                           {"samples", samples},
-      {"kind", np.attr("array")(kind, "str")}};
+      {"kind", np.attr("array")(kind, "str")},     {"unit", np.attr("array")(unit, "str")}};
   for (std::size_t c = 0; c < measured.size(); ++c) by_name.emplace(measured[c].name, values[c]);
   py::dict out;
   for (const std::string& name : checked(split_csv_line(error_csv_header()))) out[py::str(name)] = by_name.at(name);
@@ -171,9 +175,23 @@ py::dict evaluate(const py::object& inputs, const std::optional<std::vector<std:
 
 }  // namespace
 
-Clip read_path(const std::string& path, const py::object& anim) {
+// The reading options of read_clip and info: the animation and the unit, in the
+// forms --anim and --unit take (a number is metres per unit).
+ReadOptions read_options(const py::object& anim, const py::object& unit) {
   ReadOptions o;
   if (!anim.is_none()) o.animation = py::str(anim).cast<std::string>();
+  if (py::isinstance<py::str>(unit)) {
+    o.unit = checked(parse_unit(unit.cast<std::string>()));
+  } else if (!unit.is_none()) {
+    const double m = unit.cast<double>();
+    if (!(m > 0.0) || !std::isfinite(m)) value_error("unit must be m, cm, mm, in, ft or metres per unit > 0");
+    o.unit = m;
+  }
+  return o;
+}
+
+Clip read_path(const std::string& path, const py::object& anim, const py::object& unit) {
+  const ReadOptions o = read_options(anim, unit);
   Result<Clip> c = make_error("");
   {
     py::gil_scoped_release release;
@@ -185,9 +203,8 @@ Clip read_path(const std::string& path, const py::object& anim) {
 
 // rotinterp.info: the document `rotinterp info --json` prints (clip_info_json), as
 // Python data. Warnings go into its "warnings", not to stderr.
-py::object info(const std::string& path, const py::object& anim) {
-  ReadOptions o;
-  if (!anim.is_none()) o.animation = py::str(anim).cast<std::string>();
+py::object info(const std::string& path, const py::object& anim, const py::object& unit) {
+  ReadOptions o = read_options(anim, unit);
   o.on_warning = [](const std::string&) {};
   std::string text;
   Result<ClipFileInfo> r = make_error("");
@@ -206,8 +223,8 @@ Clip clip_or_path(const py::object& input) {
 }
 
 void bind_commands(py::module_& m) {
-  m.def("read_clip", &read_path, py::arg("path"), py::arg("anim") = py::none());
-  m.def("info", &info, py::arg("path"), py::arg("anim") = py::none());
+  m.def("read_clip", &read_path, py::arg("path"), py::arg("anim") = py::none(), py::arg("unit") = py::none());
+  m.def("info", &info, py::arg("path"), py::arg("anim") = py::none(), py::arg("unit") = py::none());
   m.def("write_clip", &write_path, py::arg("clip"), py::arg("path"), py::arg("bvh_order") = "ZXY");
   m.def("resample", &resample, py::arg("clip"), py::arg("fps") = py::none(), py::arg("keep_every") = py::none(),
         py::arg("method") = std::string(kDefaultResampleMethod),

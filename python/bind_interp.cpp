@@ -50,7 +50,7 @@ py::array interpolate(const py::handle& times_in, const py::handle& quats_in, co
   const Doubles quats = unit_quats(quats_in, in_scalar_first, "quats");
   const auto k = static_cast<std::size_t>(times.shape(0));
   const std::size_t joints = joints_of(quats, k);
-  if (!find_method(method)) value_error("unknown method '" + method + "' (valid: " + method_names() + ")");
+  if (!find_method(method)) value_error(unknown_method_message(method));
   const auto n = static_cast<std::size_t>(new_times.shape(0));
   const std::size_t jn = joints == 0 ? 1 : joints;
   std::vector<py::ssize_t> shape = {static_cast<py::ssize_t>(n)};

@@ -33,7 +33,7 @@ std::vector<std::string> render(const py::object& input, const std::optional<std
   }
   if (o.methods.empty()) value_error("methods: no method given (valid: " + method_names() + ")");
   for (const std::string& m : o.methods)
-    if (!find_method(m)) value_error("methods: unknown method '" + m + "' (valid: " + method_names() + ")");
+    if (!find_method(m)) value_error("methods: " + unknown_method_message(m));
   if (keep_every < 1) value_error("keep_every must be a whole number >= 1, got " + std::to_string(keep_every));
   o.keep_every = static_cast<std::size_t>(keep_every);
   if (frames) o.frames = checked(render::parse_frame_range(*frames));

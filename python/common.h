@@ -128,16 +128,14 @@ inline RotationTrack track_of(const double* times, const double* quats, std::siz
   return track;
 }
 
-// Metres per clip unit, the one place the module reads a clip's unit from:
-// Clip::unit_scale, and for BVH (which states none) centimetres, as reduce takes it.
-inline double metres_per_unit(const Clip& c) {
-  if (c.source_format == "bvh") return 0.01;
-  return std::isfinite(c.unit_scale) && c.unit_scale > 0.0 ? c.unit_scale : 1.0;
-}
+// Metres per clip unit, the one place the module reads a clip's unit from: the unit
+// the reader settled (clip/units.h: declared, given, inferred or assumed).
+inline double metres_per_unit(const Clip& c) { return c.unit.metres_per_unit; }
 
 // read_clip's reading (bind_commands.cpp): the clip at `path`, its animation `anim`
-// (None, a name or an index); raises OSError subclasses or ValueError.
-Clip read_path(const std::string& path, const py::object& anim);
+// (None, a name or an index) and its unit (None: the file's or inferred; "cm", …, or
+// metres per unit as a number); raises OSError subclasses or ValueError.
+Clip read_path(const std::string& path, const py::object& anim, const py::object& unit = py::none());
 // A clip given as a rotinterp.Clip or read from a path.
 Clip clip_or_path(const py::object& input);
 

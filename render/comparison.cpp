@@ -249,7 +249,7 @@ Result<CameraMode> parse_camera(std::string_view name) {
 
 Result<std::vector<FrameError>> comparison_errors(const Clip& clip, const std::string& method, std::size_t keep_every) {
   if (Status s = clip.validate(); !s) return make_error(s.error());
-  if (!find_method(method)) return make_error("unknown method '" + method + "' (valid: " + method_names() + ")");
+  if (!find_method(method)) return make_error(unknown_method_message(method));
   auto rebuild = Rebuild::build(clip, {method}, std::max<std::size_t>(keep_every, 1));
   if (!rebuild) return make_error(rebuild.error());
   std::vector<FrameError> errors(rebuild->frames());
@@ -265,8 +265,8 @@ Result<std::vector<std::size_t>> comparison_frames(const Clip& clip, const Compa
   if (options.frames) {
     const FrameRange& r = *options.frames;
     if (r.end >= count)
-      return make_error(fmt::format("--frames {}:{}:{} is outside the clip (frames 0…{})", r.start, r.end, r.step,
-                                    count - 1));
+      return make_error(fmt::format("--frames {}:{}:{} runs past the clip's end (ends at frame {}, {:g} s)", r.start,
+                                    r.end, r.step, count - 1, clip.end_time() - clip.start_time()));
     for (std::size_t k = r.start; k <= r.end; k += r.step) frames.push_back(k);
     return frames;
   }
@@ -413,7 +413,7 @@ Result<ComparisonResult> render_comparison(const Clip& clip, const fs::path& out
   if (Status s = clip.validate(); !s) return make_error(s.error());
   if (options.methods.empty()) return make_error("no methods to compare");
   for (const std::string& m : options.methods)
-    if (!find_method(m)) return make_error("unknown method '" + m + "' (valid: " + method_names() + ")");
+    if (!find_method(m)) return make_error(unknown_method_message(m));
   if (options.keep_every < 1) return make_error("--keep-every must be at least 1");
   if (!options.pngs && options.video.empty()) return make_error("nothing to write: no frame images and no video");
   if (!options.pngs && options.sheet) return make_error("--sheet needs an output directory");
@@ -529,8 +529,11 @@ Result<ComparisonResult> render_comparison(const Clip& clip, const fs::path& out
 
   std::error_code ec;
   if (options.pngs) {
+    if (fs::exists(out_dir, ec) && !fs::is_directory(out_dir, ec))
+      return make_error(out_dir.string() + ": is an existing file, not a directory for the frames");
     fs::create_directories(out_dir, ec);
-    if (ec || !fs::is_directory(out_dir)) return make_error(out_dir.string() + ": cannot create the output directory");
+    if (ec || !fs::is_directory(out_dir))
+      return make_error(out_dir.string() + ": cannot create the output directory" + (ec ? ": " + ec.message() : ""));
   }
 
   auto context = create_context(backend);
@@ -552,6 +555,10 @@ Result<ComparisonResult> render_comparison(const Clip& clip, const fs::path& out
   PngWriters writers(options.pngs ? options.progress : ProgressFn{}, total);
   bool writing = true;  // no write has failed yet
   std::vector<Panel> sheet(options.sheet ? frames.size() * options.methods.size() : 0);
+  // The sheet's cells are coloured on one scale, its largest error, once all are known
+  // (a frame's own scale made colours incomparable from column to column).
+  std::vector<std::vector<double>> sheet_errors(sheet.size());
+  double sheet_max = 0.0;
   std::vector<std::vector<double>> joint_error(options.methods.size());
   for (std::size_t i = 0; i < frames.size(); ++i) {
     const std::size_t f = frames[i];
@@ -613,6 +620,8 @@ Result<ComparisonResult> render_comparison(const Clip& clip, const fs::path& out
         cell.title = fmt::format("{} #{}  {:.2f}° / {:.2f}°", options.methods[m], f, error.mean, error.max);
         cell.corner.clear();
         sheet[m * frames.size() + i] = std::move(cell);
+        sheet_errors[m * frames.size() + i] = joint_error[m];
+        sheet_max = std::max(sheet_max, frame_max);
       }
     }
     auto image = (*renderer)->render(panels, options.width, options.height, columns);
@@ -627,6 +636,14 @@ Result<ComparisonResult> render_comparison(const Clip& clip, const fs::path& out
     if (!writers.push(std::move(path), std::move(image).value())) {
       writing = false;
       break;
+    }
+  }
+  if (options.sheet && options.colouring == Colouring::error) {
+    const double scale = error_scale(sheet_max);
+    for (std::size_t c = 0; c < sheet.size(); ++c) {
+      sheet[c].colour_scale_deg = scale;
+      sheet[c].joint_colors.clear();
+      for (double e : sheet_errors[c]) sheet[c].joint_colors.push_back(error_colour(e, scale));
     }
   }
   if (options.sheet && writing) {

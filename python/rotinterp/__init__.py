@@ -65,11 +65,14 @@ def make_interpolator(times, quats, method=default_method, scalar_first=False):
     return _rotinterp.make_interpolator(times, quats, method, scalar_first)
 
 
-def read_clip(path, anim=None):
+def read_clip(path, anim=None, unit=None):
     """Read a clip (BVH, FBX, glTF/GLB, Collada, ...). ``anim``: an animation's name or
-    index (default: the first). Raises FileNotFoundError/IsADirectoryError for a path
-    that is not a file, ValueError for a file that is not a clip."""
-    return _rotinterp.read_clip(str(path), anim)
+    index (default: the first). ``unit``: what one clip unit is, as ``--unit`` takes it
+    ("m", "cm", "mm", "in", "ft") or metres per unit as a number; default the file's,
+    else inferred from the figure's size (``clip.unit`` says which and why). Raises
+    FileNotFoundError/IsADirectoryError for a path that is not a file, ValueError for a
+    file that is not a clip."""
+    return _rotinterp.read_clip(str(path), anim, unit)
 
 
 def write_clip(clip, path, bvh_order="ZXY"):
@@ -79,30 +82,29 @@ def write_clip(clip, path, bvh_order="ZXY"):
     _rotinterp.write_clip(clip, str(path), bvh_order)
 
 
-def info(path, anim=None):
+def info(path, anim=None, unit=None):
     """What a clip file holds, as a dict: the document ``rotinterp info --json PATH``
     prints (format, animations, frames, rate, duration, unit, joints with their channels
     and key counts, oddities, warnings). Raises as ``read_clip`` does."""
-    return _rotinterp.info(str(path), anim)
+    return _rotinterp.info(str(path), anim, unit)
 
 
-def reduce(clip, method="slerp", tolerance_deg=None, tolerance_mm=None, shell_distance_cm=None, tolerance_for=None,
-           translation="cubic", metres_per_unit=None):
+def reduce(clip, method="slerp", tolerance=None, shell_distance=None, tolerance_for=None, translation="cubic",
+           metres_per_unit=None):
     """Keep the fewest keys per joint that rebuild ``clip`` with ``method`` within a
-    budget, as ``rotinterp reduce`` does (the same keys). Budgets as the command's
-    options: ``tolerance_deg`` (each joint's local rotation, degrees), ``tolerance_mm``
-    (the shell of virtual vertices at ``shell_distance_cm``, default 10, in object space,
-    and the translation tracks, millimetres), ``tolerance_for`` ``{joint: {"deg": ..,
-    "mm": ..}}``; neither tolerance: 1 mm at 10 cm. ``metres_per_unit``: the clip's unit
-    unless given (a BVH is taken as centimetres, as by the command).
+    budget, as ``rotinterp reduce`` does (the same keys), with its options in its forms:
+    ``tolerance`` items with their units, an angle ("0.5deg", "0.01rad") on each joint's
+    local rotation and/or a length ("1mm", "0.1cm") on the shell of virtual vertices in
+    object space and the translation tracks, as "0.5deg,1mm" or a list (default 1mm);
+    ``shell_distance`` a length ("10cm", the default) or a number of metres;
+    ``tolerance_for`` ``{joint: items}``. ``metres_per_unit``: ``clip.unit``'s unless given.
 
     Returns a dict: ``clip`` (the reduced Clip: each track holding only its kept keys),
     ``joints`` (per joint: ``name``, ``rotation_frames`` and ``translation_frames``, the
     kept frame indices, and the largest errors over every frame in degrees and mm),
     ``frames``, ``source_keys``, ``kept_keys``, ``metres_per_unit`` and the largest
     errors over all joints. Releases the GIL."""
-    return _rotinterp.reduce(clip, method, tolerance_deg, tolerance_mm, shell_distance_cm, tolerance_for, translation,
-                             metres_per_unit)
+    return _rotinterp.reduce(clip, method, tolerance, shell_distance, tolerance_for, translation, metres_per_unit)
 
 
 def render(input, out_dir=None, methods=None, keep_every=10, frames=None, size="960x540", trail="", trail_window=1.0,

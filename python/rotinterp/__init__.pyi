@@ -24,6 +24,12 @@ class MethodInfo(TypedDict):
     exact_on_constant_velocity: bool
     preserves_holds: bool
 
+class ClipUnit:
+    metres_per_unit: float
+    origin: Literal["declared", "given", "inferred", "assumed"]
+    reason: str
+    name: str                                     # "cm", "in", … or "0.0652 m"
+
 class Clip:
     def __init__(self, names: Sequence[str], parents: ArrayLike, offsets: ArrayLike, times: ArrayLike,
                  rotations: QuatLike, translations: Mapping[str, ArrayLike] | None = None,
@@ -54,7 +60,9 @@ class Clip:
     @property
     def unit_scale(self) -> float: ...            # metres per clip unit
     @property
-    def metres_per_unit(self) -> float: ...       # what positions() and reduce() use
+    def unit(self) -> ClipUnit: ...
+    @property
+    def metres_per_unit(self) -> float: ...       # = unit.metres_per_unit: what positions() and reduce() use
     @property
     def joint_names(self) -> list[str]: ...       # = names
     def positions(self, frames: int | ArrayLike | None = None) -> np.ndarray: ...  # (F, J, 3) world, metres
@@ -82,7 +90,7 @@ def interpolate(times: ArrayLike, quats: QuatLike, new_times: ArrayLike, method:
                 scalar_first: bool = False) -> np.ndarray: ...
 def make_interpolator(times: ArrayLike, quats: QuatLike, method: str = ...,
                       scalar_first: bool = False) -> Interpolator: ...
-def read_clip(path: Path, anim: str | int | None = None) -> Clip: ...
+def read_clip(path: Path, anim: str | int | None = None, unit: str | float | None = None) -> Clip: ...
 def write_clip(clip: Clip, path: Path, bvh_order: str = "ZXY") -> None: ...
 def resample(clip: Clip, fps: float | str | Fraction | None = None, keep_every: int | None = None,
              method: str = ..., method_for: Mapping[str, str] | None = None, translation: str = "cubic",
@@ -90,9 +98,9 @@ def resample(clip: Clip, fps: float | str | Fraction | None = None, keep_every: 
 def evaluate(inputs: Path | Clip | Sequence[Path | Clip], methods: Sequence[str] | None = None,
              keep_every: Sequence[int] = (2, 4, 8, 16), subframe: int = 0,
              shell_distance: float = 0.03) -> dict[str, np.ndarray]: ...
-def info(path: Path, anim: str | int | None = None) -> dict[str, Any]: ...
-def reduce(clip: Clip, method: str = "slerp", tolerance_deg: float | None = None, tolerance_mm: float | None = None,
-           shell_distance_cm: float | None = None, tolerance_for: Mapping[str, Mapping[str, float]] | None = None,
+def info(path: Path, anim: str | int | None = None, unit: str | float | None = None) -> dict[str, Any]: ...
+def reduce(clip: Clip, method: str = "slerp", tolerance: str | Sequence[str] | None = None,
+           shell_distance: str | float | None = None, tolerance_for: Mapping[str, str | Sequence[str]] | None = None,
            translation: str = "cubic", metres_per_unit: float | None = None) -> dict[str, Any]: ...
 def render(input: Path | Clip, out_dir: Path | None = None, methods: Sequence[str] | None = None, keep_every: int = 10,
            frames: str | None = None, size: str = "960x540", trail: str = "", trail_window: float = 1.0,

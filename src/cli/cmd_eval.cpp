@@ -1,5 +1,6 @@
 // rotinterp eval PATH... | eval --merge DIR... -o DIR: batch angular-error evaluation.
 #include "common.h"
+#include "rotinterp/clip/units.h"
 #include "rotinterp/eval/batch.h"
 #include "rotinterp/io/dataset.h"
 #include "rotinterp/eval/plots.h"
@@ -34,16 +35,17 @@ struct EvalArgs {
   std::string shard;
   std::vector<std::string> merge;
   int subframe = 0;
-  double shell_m = kDefaultShellDistanceMetres;
+  // Lengths as the user writes them, their defaults the library's (metres → cm text).
+  std::string shell_distance = fmt::format("{}cm", kDefaultShellDistanceMetres * 100);
   bool no_plots = false;
   bool truth = false;
   bool quiet = false;
   std::string anim;
   long long min_frames = 0;
   std::string feet;
-  double contact_height_m = kDefaultContactHeightMetres;
-  double contact_speed_mps = kDefaultContactSpeedMps;
-  std::optional<double> floor_m;
+  std::string contact_height = fmt::format("{}cm", kDefaultContactHeightMetres * 100);
+  std::string contact_speed = fmt::format("{}m/s", kDefaultContactSpeedMps);
+  std::string floor, unit;
   std::string per_frame;
   std::string table = "text";
 };
@@ -55,8 +57,9 @@ Result<PerFrameRequest> parse_per_frame(const std::string& text) {
   PerFrameRequest q;
   q.clip = text.substr(0, a);
   q.method = text.substr(a + 1, b - a - 1);
-  if (!find_method(q.method))
-    return make_error("--per-frame: unknown method '" + q.method + "' (valid: " + method_names() + ")");
+  const MethodInfo* m = find_method(q.method);
+  if (!m) return make_error("--per-frame: " + unknown_method_message(q.method));
+  q.method = m->name;
   auto n = parse_whole_option("--per-frame", text.substr(b + 1), 1, kMaxKeepEvery);
   if (!n) return make_error(n.error());
   q.keep_every = static_cast<int>(*n);
@@ -65,7 +68,11 @@ Result<PerFrameRequest> parse_per_frame(const std::string& text) {
 
 int run(const EvalArgs& a) {
   const bool quiet = a.quiet;
-  auto print_failure = [](const EvalFailure& f) { std::fprintf(stderr, "rotinterp: %s\n", f.message.c_str()); };
+  // A file without animation is said at the end: alone, it is the one line of a run
+  // that had nothing to evaluate (a static mesh), not an empty table.
+  auto print_failure = [](const EvalFailure& f) {
+    if (f.kind != ErrorKind::no_animation) std::fprintf(stderr, "rotinterp: %s\n", f.message.c_str());
+  };
   Result<EvalReport> report = make_error("");
   // No output file may be one of the inputs (a shard merged into itself, -o where a
   // clip of the same name is read).
@@ -91,16 +98,9 @@ int run(const EvalArgs& a) {
     EvalOptions o;
     o.inputs.assign(a.paths.begin(), a.paths.end());
     o.output_dir = a.output;
-    if (a.methods == "all") {
-      for (const MethodInfo& m : methods()) o.clip.methods.push_back(m.name);
-    } else {
-      for (const std::string& m : split_comma_list(a.methods)) {
-        if (!find_method(m)) return fail_usage("--methods: unknown method '" + m + "' (valid: " + method_names() + ")");
-        if (std::find(o.clip.methods.begin(), o.clip.methods.end(), m) == o.clip.methods.end())
-          o.clip.methods.push_back(m);
-      }
-    }
-    if (o.clip.methods.empty()) return fail("no methods to evaluate");
+    auto names = parse_methods(a.methods, true);
+    if (!names) return fail_usage(names.error());
+    o.clip.methods = *names;
     for (const std::string& k : split_comma_list(a.keep_every)) {
       auto n = parse_whole_option("--keep-every", k, 1, kMaxKeepEvery);
       if (!n) return fail_usage(n.error());
@@ -110,7 +110,9 @@ int run(const EvalArgs& a) {
     o.clip.keep_every.erase(std::unique(o.clip.keep_every.begin(), o.clip.keep_every.end()), o.clip.keep_every.end());
     if (o.clip.keep_every.empty()) return fail_usage("--keep-every needs at least one value");
     o.clip.subframe = a.subframe;
-    o.clip.shell_distance_m = a.shell_m;
+    auto shell = parse_length(a.shell_distance);
+    if (!shell) return fail_usage("--shell-distance: " + shell.error());
+    o.clip.shell_distance_m = *shell;
     o.jobs = a.jobs;
     if (!a.shard.empty()) {
       auto s = parse_shard(a.shard);
@@ -122,9 +124,20 @@ int run(const EvalArgs& a) {
     o.animation = a.anim;
     o.clip.min_frames = static_cast<std::size_t>(a.min_frames);
     o.clip.feet.feet = split_comma_list(a.feet);
-    o.clip.feet.contact_height_m = a.contact_height_m;
-    o.clip.feet.contact_speed_mps = a.contact_speed_mps;
-    o.clip.feet.floor_m = a.floor_m;
+    auto contact_height = parse_length(a.contact_height);
+    if (!contact_height) return fail_usage("--contact-height: " + contact_height.error());
+    auto contact_speed = parse_speed(a.contact_speed);
+    if (!contact_speed) return fail_usage("--contact-speed: " + contact_speed.error());
+    o.clip.feet.contact_height_m = *contact_height;
+    o.clip.feet.contact_speed_mps = *contact_speed;
+    if (!a.floor.empty()) {
+      auto floor = parse_signed_length(a.floor);
+      if (!floor) return fail_usage("--floor: " + floor.error());
+      o.clip.feet.floor_m = *floor;
+    }
+    auto unit = parse_unit_option(a.unit);
+    if (!unit) return fail_usage(unit.error());
+    o.unit = *unit;
     if (!a.per_frame.empty()) {
       auto q = parse_per_frame(a.per_frame);
       if (!q) return fail_usage(q.error());
@@ -138,6 +151,16 @@ int run(const EvalArgs& a) {
     end_progress(quiet);
   }
   if (!report) return fail(report.error());
+  const auto static_files = std::count_if(report->failures.begin(), report->failures.end(),
+                                          [](const EvalFailure& f) { return f.kind == ErrorKind::no_animation; });
+  if (report->clips_evaluated == 0 && static_files > 0 && static_cast<std::size_t>(static_files) == report->failures.size()) {
+    std::string files;
+    for (const EvalFailure& f : report->failures) files += (files.empty() ? "" : ", ") + f.file;
+    return fail(fmt::format("nothing to evaluate: {} {} no animation (a static mesh or scene); eval needs animated clips",
+                            files, static_files == 1 ? "holds" : "hold"));
+  }
+  for (const EvalFailure& f : report->failures)
+    if (f.kind == ErrorKind::no_animation) std::fprintf(stderr, "rotinterp: %s\n", f.message.c_str());
   for (const ShortClip& c : report->too_short) {
     if (quiet) break;
     std::string ns;
@@ -173,53 +196,46 @@ void add_eval_command(CLI::App& app, int& exit_code) {
       "eval", "Decimate clips, rebuild them with each method and measure the error: DIR/errors.csv, clips.csv, summary.json, "
       "plots");
   sub->add_option("paths", args->paths, "Clip files or directories (searched recursively for every format assimp reads)");
-  sub->add_option("--methods", args->methods, "Comma-separated methods, or 'all'")->capture_default_str();
-  sub->add_option("--keep-every", args->keep_every, "Comma-separated key spacings N: keys at every Nth frame and the last")
-      ->capture_default_str();
-  sub->add_option("-j,--jobs", args->jobs, "Worker threads over (clip, method) pairs (0 = all cores)")->capture_default_str()
-      ->check(CLI::Range(0, 4096));
-  sub->add_option("-o,--output", args->output, "Output directory")->capture_default_str();
-  sub->add_option("--shard", args->shard, "Evaluate shard I of N (I/N) of the sorted inputs, for a cluster");
-  sub->add_option("--merge", args->merge, "Combine the output directories of shard runs into -o DIR");
+  add_method_option(*sub, args->methods, true, "all");
+  add_keep_every_option(*sub, args->keep_every, true, "each measured on its own")->capture_default_str();
+  add_jobs_option(*sub, args->jobs, "Worker threads over (clip, method) pairs");
+  add_output_option(*sub, args->output, "Output directory")->capture_default_str();
+  sub->add_option("--shard", args->shard,
+                  "Evaluate shard I of N (I/N) of the sorted inputs, for a cluster (default: all)");
+  sub->add_option("--merge", args->merge, "Combine the output directories of shard runs into -o DIR (default: off)");
   sub->add_option("--subframe", args->subframe,
                   "Also measure K evenly spaced times between frames, against the original's slerp")
       ->capture_default_str()->check(CLI::Range(0, 1000));
-  sub->add_option("--shell-distance", args->shell_m,
-                  "Virtual-vertex distance in metres (converted by each clip's unit scale)")
-      ->capture_default_str()->check(CLI::PositiveNumber);
+  sub->add_option("--shell-distance", args->shell_distance,
+                  "Virtual-vertex distance: a length (3cm); a bare number is metres (converted by each clip's unit)")
+      ->capture_default_str();
   sub->add_flag("--truth", args->truth,
                 "Compare with the analytic motion of synth clips (CLIP.synth, from rotinterp synth) at every "
-                "frame and subframe; a clip without one fails");
-  sub->add_option("--anim", args->anim,
-                  "Takes to evaluate: a name or 0-based index, or 'all'; a file of several takes gives one clip per "
-                  "take, named FILE#TAKE (default: the first take)");
+                "frame and subframe; a clip without one fails (default: off, compare with the source frames)");
+  add_anim_option(*sub, args->anim, true);
   sub->add_option("--min-frames", args->min_frames,
                   "Skip clips with fewer frames (listed); spacings N need at least 2N+1 frames in any case")
       ->capture_default_str()->check(CLI::Range(0LL, 1000000000LL));
   sub->add_option("--feet", args->feet,
                   "Comma-separated foot joints for foot skating (default: found by name, CMU/Mixamo/Bandai/Blender rigs)");
-  sub->add_option("--floor", args->floor_m,
-                  "Floor height (Y up) in metres, converted by each clip's unit (default: the lowest foot height)")
-      ->check(CLI::Validator(
-          [](std::string& text) {
-            char* end = nullptr;
-            const double v = std::strtod(text.c_str(), &end);
-            return end != text.c_str() && *end == '\0' && std::isfinite(v) ? std::string() : "must be a finite number";
-          },
-          "METRES"));
-  sub->add_option("--contact-height", args->contact_height_m,
-                  "Foot contact: height above the floor below which a foot may touch it, metres")
-      ->capture_default_str()->check(CLI::PositiveNumber);
-  sub->add_option("--contact-speed", args->contact_speed_mps,
-                  "Foot skating: horizontal speed of a foot in contact above which it slides, m/s")
-      ->capture_default_str()->check(CLI::PositiveNumber);
+  sub->add_option("--floor", args->floor,
+                  "Floor height (Y up): a length (-2cm); a bare number is metres (default: the lowest foot height)");
+  sub->add_option("--contact-height", args->contact_height,
+                  "Foot contact: height above the floor below which a foot may touch it: a length; a bare number is "
+                  "metres")
+      ->capture_default_str();
+  sub->add_option("--contact-speed", args->contact_speed,
+                  "Foot skating: horizontal speed of a foot in contact above which it slides: m/s, cm/s or mm/s; a "
+                  "bare number is m/s")
+      ->capture_default_str();
+  add_unit_option(*sub, args->unit);
   sub->add_option("--per-frame", args->per_frame,
                   "Also write DIR/per_frame.csv: the angle error of every joint at every sample, for CLIP,METHOD,N "
-                  "(CLIP as in errors.csv)");
+                  "(CLIP as in errors.csv); default none");
   sub->add_option("--table", args->table, "The results table on stdout: text, md (Markdown) or latex")
       ->capture_default_str();
-  sub->add_flag("--no-plots", args->no_plots, "Skip the plots");
-  sub->add_flag("-q,--quiet", args->quiet, "No progress and no table on stdout");
+  sub->add_flag("--no-plots", args->no_plots, "Skip the plots (default: PNG and SVG plots in -o DIR)");
+  add_quiet_option(*sub, args->quiet);
   sub->callback([args, &exit_code] { exit_code = run(*args); });
 }
 

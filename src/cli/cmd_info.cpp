@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <future>
@@ -31,7 +32,7 @@ namespace {
 
 struct InfoArgs {
   std::vector<std::string> paths;
-  std::string anim;
+  std::string anim, unit;
   bool json = false;
   bool summary = false;
   int jobs = 0;
@@ -46,7 +47,26 @@ struct FileSummary {
   std::optional<Rate> rate;  // as recognized
   double duration = 0.0;
   std::vector<std::string> notes;  // oddities, the rate label, empty clip, copies
+  ClipUnit unit;
 };
+
+// The clip's unit as info --json gives it (one shape for one file and --summary).
+nlohmann::json unit_json(const ClipUnit& u) {
+  return {{"name", unit_name(u.metres_per_unit)},
+          {"metres_per_unit", u.metres_per_unit},
+          {"origin", unit_origin_name(u.origin)},
+          {"reason", u.reason}};
+}
+
+// The reading options of both forms of info: --anim and --unit.
+Result<ReadOptions> info_read_options(const InfoArgs& args) {
+  ReadOptions options;
+  options.animation = args.anim;
+  auto unit = parse_unit_option(args.unit);
+  if (!unit) return unit.failure();
+  options.unit = *unit;
+  return options;
+}
 
 FileSummary summarize(const std::string& file, const ReadOptions& options) {
   FileSummary s;
@@ -65,6 +85,7 @@ FileSummary summarize(const std::string& file, const ReadOptions& options) {
   s.frame_time = frame_time_text(clip);
   s.rate = clip_rate(clip);
   s.duration = clip.end_time() - clip.start_time();
+  s.unit = clip.unit;
   if (!(s.duration > 0.0)) s.notes.push_back(fmt::format("zero-length clip ({} frame{})", s.frames, s.frames == 1 ? "" : "s"));
   if (std::string note = rate_label_note(clip); !note.empty()) s.notes.push_back(note);
   for (const std::string& o : clip_oddities(clip)) s.notes.push_back(o);
@@ -74,12 +95,12 @@ FileSummary summarize(const std::string& file, const ReadOptions& options) {
 std::string rate_key(const FileSummary& s) { return s.rate ? s.rate->to_string() + " Hz" : "no uniform rate"; }
 
 int run_summary(const InfoArgs& args) {
-  if (args.jobs < 0) return fail_usage("-j " + std::to_string(args.jobs) + ": must be ≥ 0 (0 = one per core)");
   std::vector<std::filesystem::path> named(args.paths.begin(), args.paths.end());
   auto files = discover_inputs(named);
   if (!files) return fail(files.error());
-  ReadOptions options;
-  options.animation = args.anim;
+  auto read_options = info_read_options(args);
+  if (!read_options) return fail_usage(read_options.error());
+  ReadOptions options = *read_options;
   // Warnings belong to the files' rows, not to stderr.
   options.on_warning = [](const std::string&) {};
   WorkQueue queue(static_cast<unsigned>(args.jobs));
@@ -140,6 +161,7 @@ int run_summary(const InfoArgs& args) {
                     {"frame_rate", s.rate ? nlohmann::json(s.rate->to_string()) : nlohmann::json(nullptr)},
                     {"frame_rate_hz", s.rate ? nlohmann::json(s.rate->hz()) : nlohmann::json(nullptr)},
                     {"duration_s", s.duration},
+                    {"unit", unit_json(s.unit)},
                     {"joints", s.joints},
                     {"notes", s.notes}});
       }
@@ -154,8 +176,8 @@ int run_summary(const InfoArgs& args) {
   } else {
     std::size_t width = 4;
     for (const FileSummary& s : rows) width = std::max(width, s.file.size());
-    fmt::print("{:<{}}  {:<6} {:>12} {:>10} {:>8} {:>10} {:>6}  {}\n", "file", width, "format", "rate", "frame time",
-               "frames", "duration", "joints", "notes");
+    fmt::print("{:<{}}  {:<6} {:>12} {:>10} {:>8} {:>10} {:>6}  {:<17} {}\n", "file", width, "format", "rate",
+               "frame time", "frames", "duration", "joints", "unit", "notes");
     for (const FileSummary& s : rows) {
       if (!s.error.empty()) {
         fmt::print("{:<{}}  unreadable: {}\n", s.file, width, s.error);
@@ -163,9 +185,10 @@ int run_summary(const InfoArgs& args) {
       }
       std::string notes;
       for (const std::string& n : s.notes) notes += (notes.empty() ? "" : "; ") + n;
-      fmt::print("{:<{}}  {:<6} {:>12} {:>10} {:>8} {:>9.3f}s {:>6}  {}\n", s.file, width, s.format,
+      fmt::print("{:<{}}  {:<6} {:>12} {:>10} {:>8} {:>9.3f}s {:>6}  {:<17} {}\n", s.file, width, s.format,
                  s.rate ? s.rate->to_string() + " Hz" : "none", s.frame_time.empty() ? "-" : s.frame_time, s.frames,
-                 s.duration, s.joints, notes);
+                 s.duration, s.joints,
+                 unit_name(s.unit.metres_per_unit) + " (" + unit_origin_name(s.unit.origin) + ")", notes);
     }
     fmt::print("\n{} file{}: {} read, {} unreadable, {} with notes, {} group{} of identical files\n", rows.size(),
                rows.size() == 1 ? "" : "s", rows.size() - unreadable, unreadable, flagged, copies.size(),
@@ -174,6 +197,36 @@ int run_summary(const InfoArgs& args) {
     for (const auto& [rate, count] : rates) fmt::print("  {:>16}  {} file{}\n", rate, count, count == 1 ? "" : "s");
   }
   return unreadable > 0 ? kExitPartial : kExitOk;
+}
+
+// A file without animation (a static mesh) is still described: what it holds, exit 0.
+int describe_static(const std::string& path, const std::string& error, bool json) {
+  std::string format = std::filesystem::path(path).extension().string();
+  if (!format.empty()) format.erase(0, 1);
+  for (char& c : format) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string holds = static_scene_contents(error);
+  if (json) {
+    const nlohmann::json out = {{"file", path},           {"format", format},
+                                {"animations", nlohmann::json::array()}, {"holds", holds},
+                                {"no_animation", true}};
+    fmt::print("{}\n", out.dump(2));
+  } else {
+    fmt::print("file:        {}\n", path);
+    fmt::print("format:      {}\n", format);
+    fmt::print("animations:  0 (no animation: a static file, nothing to resample, render or evaluate)\n");
+    if (!holds.empty()) fmt::print("holds:       {}\n", holds);
+  }
+  return kExitOk;
+}
+
+// BVH speaks its own words: frames, Frame Time and the CHANNELS lines' count (not
+// assimp's ticks and node channels).
+std::string bvh_take_text(const Clip& clip) {
+  std::size_t channels = 0;
+  for (std::size_t j = 0; j < clip.skeleton.joints.size(); ++j) channels += bvh_channels(clip, j).size();
+  const std::string frame_time = frame_time_text(clip);
+  return fmt::format("{} frames, Frame Time {}, {} channels (CHANNELS)", clip.frame_count(),
+                     frame_time.empty() ? fmt::format("{:.9g}", clip.frame_time) : frame_time, channels);
 }
 
 std::string layout_text(const std::vector<Channel>& channels) {
@@ -187,11 +240,13 @@ int run_info(const InfoArgs& args) {
   std::error_code ec;
   if (args.paths.size() != 1 || std::filesystem::is_directory(args.paths.front(), ec))
     return fail_usage("info describes one clip; for several files or a folder add --summary");
-  ReadOptions options;
-  options.animation = args.anim;
+  auto read_options = info_read_options(args);
+  if (!read_options) return fail_usage(read_options.error());
+  ReadOptions options = *read_options;
   options.on_warning = warn;
   const std::string& path = args.paths.front();
   Result<ClipFileInfo> info = inspect_clip(path, options);
+  if (!info && info.error_kind() == ErrorKind::no_animation) return describe_static(path, info.error(), args.json);
   if (!info) return fail(info.error());
   const Clip& clip = info->clip;
   const Skeleton& sk = clip.skeleton;
@@ -199,8 +254,7 @@ int run_info(const InfoArgs& args) {
   const double duration = clip.end_time() - clip.start_time();
   // The rate every command uses (resample too): BVH ".0333330" is 30 Hz, NTSC 30000/1001.
   const std::optional<Rate> rate = clip_rate(clip);
-  // BVH has no unit.
-  const bool has_unit = info->format != "bvh";
+  const double size_m = first_pose_size(clip) * clip.unit.metres_per_unit;
   std::vector<int> depth(sk.joints.size(), 0);
   for (std::size_t j = 0; j < sk.joints.size(); ++j)
     if (sk.joints[j].parent >= 0) depth[j] = depth[static_cast<std::size_t>(sk.joints[j].parent)] + 1;
@@ -215,8 +269,11 @@ int run_info(const InfoArgs& args) {
   fmt::print("animations:  {}\n", info->animations.size());
   for (std::size_t a = 0; a < info->animations.size(); ++a) {
     const AnimationSummary& s = info->animations[a];
-    fmt::print("  {}{} '{}'  {:.6g} s  {:.9g} ticks/s{}  {} channels\n", a == info->selected ? "*" : " ", a, s.name,
-               s.duration, s.ticks_per_second, s.default_rate ? " (default)" : "", s.channels);
+    if (info->format == "bvh")
+      fmt::print("  {}{} '{}'  {:.6g} s  {}\n", a == info->selected ? "*" : " ", a, s.name, s.duration, bvh_take_text(clip));
+    else
+      fmt::print("  {}{} '{}'  {:.6g} s  {:.9g} ticks/s{}  {} channels\n", a == info->selected ? "*" : " ", a, s.name,
+                 s.duration, s.ticks_per_second, s.default_rate ? " (default)" : "", s.channels);
   }
   fmt::print("frames:      {}\n", clip.frame_count());
   if (rate)
@@ -227,7 +284,8 @@ int run_info(const InfoArgs& args) {
     fmt::print("frame rate:  none (keys not on a uniform grid){}\n",
                clip.file_rate_hz > 0 ? fmt::format("; the file's own: {:.9g} Hz (resample's default)", clip.file_rate_hz) : "");
   fmt::print("duration:    {:.6g} s (keys from {:.6g} s to {:.6g} s)\n", duration, clip.start_time(), clip.end_time());
-  fmt::print("unit:        {}\n", has_unit ? fmt::format("{:.6g} m per unit", clip.unit_scale) : std::string("none (BVH has no unit)"));
+  fmt::print("unit:        {}\n", describe_unit(clip.unit));
+  fmt::print("size:        {:.3g} m (the first pose's largest side)\n", size_m);
   if (info->folded_helpers > 0) fmt::print("helpers:     {} $AssimpFbx$ helper nodes folded into their bones\n", info->folded_helpers);
   fmt::print("joints:      {} (+{} End Sites)\n", sk.joints.size(), sk.end_sites.size());
   for (std::size_t j = 0; j < sk.joints.size(); ++j) {
@@ -259,12 +317,13 @@ void add_info_command(CLI::App& app, int& exit_code) {
                   "Clip file (BVH, FBX, glTF/GLB, Collada, … anything assimp imports); with --summary, several "
                   "files and folders (searched recursively)")
       ->required();
-  sub->add_option("--anim", args->anim, "Animation to describe: name or 0-based index (default: the first)");
-  sub->add_flag("--json", args->json, "Print JSON instead of text");
+  add_anim_option(*sub, args->anim, false);
+  add_unit_option(*sub, args->unit);
+  add_json_option(*sub, args->json);
   sub->add_flag("--summary", args->summary,
                 "One row per file (format, rate as read and as written, frames, duration, joints, notes), then the "
                 "rate histogram; flags rate labels that are not their rate, uneven keys, empty clips, identical files");
-  sub->add_option("-j,--jobs", args->jobs, "With --summary: files read at once (0 = one per core)")->capture_default_str();
+  add_jobs_option(*sub, args->jobs, "With --summary: files read at once");
   sub->callback([args, &exit_code] { exit_code = run_info(*args); });
 }
 

@@ -15,7 +15,7 @@ namespace rotinterp::cli {
 void add_methods_command(CLI::App& app, int& exit_code) {
   auto* sub = app.add_subcommand("methods", "List the interpolation methods: continuity and coordinate invariance");
   auto json = std::make_shared<bool>(false);
-  sub->add_flag("--json", *json, "Print JSON instead of a table");
+  add_json_option(*sub, *json);
   sub->callback([json, &exit_code] {
     if (*json) {
       nlohmann::json out = nlohmann::json::array();

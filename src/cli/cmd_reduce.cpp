@@ -1,7 +1,9 @@
-// rotinterp reduce IN -o OUT [--method NAME] [--tolerance-deg DEG] [--tolerance-mm MM [--shell-distance CM]]
-//                  [--tolerance-for JOINT=VALUE ...] [--methods LIST|all] [--report FILE.json] [--quiet]
+// rotinterp reduce IN -o OUT [-m NAME|LIST|all] [--tolerance 0.5deg,1mm] [--shell-distance 10cm]
+//                  [--tolerance-for JOINT=LIST ...] [--report FILE.json] [--unit U] [--quiet]
+// -m with several methods runs the selection for each and prints a table; -o OUT is
+// written with the first.
 #include "common.h"
-#include "rotinterp/clip/metrics.h"
+#include "rotinterp/clip/units.h"
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/io/atomic_file.h"
 #include "rotinterp/io/read.h"
@@ -28,14 +30,12 @@ namespace rotinterp::cli {
 namespace {
 
 constexpr double kDefaultToleranceMm = kDefaultReduceToleranceMm;
-constexpr double kDefaultShellCm = kDefaultReduceShellDistanceCm;
-// What a BVH's numbers are taken to be when --unit-scale is not given.
-constexpr double kBvhAssumedMetresPerUnit = 0.01;
+constexpr double kDefaultShellMetres = kDefaultReduceShellDistanceCm / 100.0;
 
 struct ReduceArgs {
-  std::string input, output, method = "slerp", methods, report, anim, translation = "cubic";
-  std::string tolerance_deg, tolerance_mm, shell_cm, unit_scale;
-  std::vector<std::string> tolerance_for;
+  std::string input, output, methods = "slerp", report, anim, translation = "cubic";
+  std::string shell_distance, unit;
+  std::vector<std::string> tolerance, tolerance_for;
   bool quiet = false;
 };
 
@@ -45,39 +45,45 @@ std::string lower_extension(const std::string& path) {
   return ext;
 }
 
-// A budget value: a finite number > 0.
-Result<double> parse_positive(const std::string& option, const std::string& text) {
-  errno = 0;
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE || !std::isfinite(v))
-    return make_error(option + " '" + text + "' is not a finite number");
-  if (!(v > 0.0)) return make_error(option + " '" + text + "' must be > 0");
-  return v;
+// A budget: an angle (0.5deg, 0.01rad) on each joint's local rotation and/or a
+// length (1mm, 0.1cm) on the shell and translation error. Each item needs its unit,
+// since the list takes both kinds.
+struct Budget {
+  double deg = 0.0, mm = 0.0;
+};
+Status add_budget_items(const std::string& option, const std::string& list, Budget& b) {
+  for (const std::string& part : split_comma_list(list)) {
+    const bool angle = part.size() > 3 && (part.compare(part.size() - 3, 3, "deg") == 0 ||
+                                           part.compare(part.size() - 3, 3, "rad") == 0);
+    if (angle) {
+      auto v = parse_angle_deg(part);
+      if (!v) return make_error(option + ": " + v.error());
+      b.deg = *v;
+      continue;
+    }
+    if (part.find_first_not_of("0123456789.+-eE") == std::string::npos)
+      return make_error(option + " '" + part + "' needs a unit: an angle (0.5deg) or a length (1mm)");
+    auto v = parse_length(part);
+    if (!v) return make_error(option + ": " + v.error() + "; or an angle (0.5deg)");
+    b.mm = *v * 1000.0;
+  }
+  if (b.deg == 0.0 && b.mm == 0.0) return make_error(option + " '" + list + "' gives no budget (e.g. 0.5deg,1mm)");
+  return Ok{};
 }
 
-// One --tolerance-for item: JOINT=0.5deg, JOINT=2mm or JOINT=0.5deg,2mm (mm: shell
-// and translation budget in millimetres).
+// One --tolerance-for item: JOINT=LIST, LIST as --tolerance takes it.
 struct JointBudget {
   std::string joint;
   double deg = 0.0, mm = 0.0;
 };
 Result<JointBudget> parse_joint_budget(const std::string& item) {
   const std::size_t eq = item.rfind('=');
-  const std::string form = "--tolerance-for '" + item + "' must be JOINT=DEGdeg, JOINT=MMmm or JOINT=DEGdeg,MMmm";
-  if (eq == std::string::npos || eq == 0 || eq + 1 == item.size()) return make_error(form);
-  JointBudget b;
-  b.joint = item.substr(0, eq);
-  for (const std::string& part : split_comma_list(item.substr(eq + 1))) {
-    const bool deg = part.size() > 3 && part.compare(part.size() - 3, 3, "deg") == 0;
-    const bool mm = part.size() > 2 && part.compare(part.size() - 2, 2, "mm") == 0;
-    if (!deg && !mm) return make_error(form);
-    auto v = parse_positive("--tolerance-for " + b.joint, part.substr(0, part.size() - (deg ? 3 : 2)));
-    if (!v) return make_error(v.error());
-    (deg ? b.deg : b.mm) = *v;
-  }
-  if (b.deg == 0.0 && b.mm == 0.0) return make_error(form);
-  return b;
+  if (eq == std::string::npos || eq == 0 || eq + 1 == item.size())
+    return make_error("--tolerance-for '" + item + "' must be JOINT=0.5deg, JOINT=2mm or JOINT=0.5deg,2mm");
+  Budget b;
+  if (Status s = add_budget_items("--tolerance-for " + item.substr(0, eq), item.substr(eq + 1), b); !s)
+    return s.failure();
+  return JointBudget{item.substr(0, eq), b.deg, b.mm};
 }
 
 struct MethodRun {
@@ -130,7 +136,8 @@ Status write_keys_json(const std::filesystem::path& path, const Clip& source, co
       {"method", run.method},
       {"translation", translation_interp_name(opt.translation)},
       {"frames", r.grid.size()},
-      {"frame_time", r.grid.frame_time},
+      {"frame_time", r.grid.frame_time},  // exact: 1/rate, as resample writes
+      {"frame_rate", r.grid.rate ? nlohmann::json(r.grid.rate->to_string()) : nlohmann::json(nullptr)},
       {"start_time", r.grid.start},
       {"metres_per_unit", metres_per_unit},
       {"quaternion_order", "xyzw"},
@@ -146,56 +153,41 @@ Status write_keys_json(const std::filesystem::path& path, const Clip& source, co
 
 int run_reduce(const ReduceArgs& a) {
   // Everything that can be checked without the input first (exit 2).
-  std::vector<std::string> names;
-  if (!a.methods.empty()) {
-    names = a.methods == "all" ? std::vector<std::string>{} : split_comma_list(a.methods);
-    if (a.methods == "all")
-      for (const MethodInfo& m : methods()) names.push_back(m.name);
-    if (names.empty()) return fail_usage("--methods '" + a.methods + "' names no method");
-    for (const std::string& m : names)
-      if (!find_method(m)) return fail_usage("unknown method '" + m + "' in --methods (valid: " + method_names() + ")");
-  }
-  if (!find_method(a.method)) return fail_usage("unknown method '" + a.method + "' (valid: " + method_names() + ")");
-  if (a.output.empty() && names.empty()) return fail_usage("give -o OUT (or --methods to compare methods)");
+  auto listed = parse_methods(a.methods, true);
+  if (!listed) return fail_usage(listed.error());
+  // The output's method is the first; the table lists them all when there are
+  // several, or when there is no output to write.
+  const std::string method = listed->front();
+  const std::vector<std::string> names = listed->size() > 1 || a.output.empty() ? *listed : std::vector<std::string>{};
   const std::string ext = a.output.empty() ? "" : lower_extension(a.output);
   const bool gltf = ext == ".glb" || ext == ".gltf";
   if (!a.output.empty() && !gltf && ext != ".json")
     return fail_usage("output '" + a.output + "': unknown format (use .json, .glb or .gltf)");
-  if (gltf && a.method != "slerp" && a.method != "gltf-cubic")
+  if (gltf && method != "slerp" && method != "gltf-cubic")
     return fail_usage("a glTF viewer replays only --method slerp (LINEAR) or gltf-cubic (CUBICSPLINE); write .json for " +
-                      a.method);
+                      method);
   if (!a.report.empty() && lower_extension(a.report) != ".json")
     return fail_usage("--report '" + a.report + "' must name a .json file");
   auto translation = parse_translation_interp(a.translation);
   if (!translation) return fail_usage("--translation: " + translation.error());
-  double deg = 0.0, mm = 0.0, shell_cm = kDefaultShellCm, unit = 0.0;
-  if (!a.tolerance_deg.empty()) {
-    auto v = parse_positive("--tolerance-deg", a.tolerance_deg);
-    if (!v) return fail_usage(v.error());
-    deg = *v;
+  Budget budget;
+  for (const std::string& list : a.tolerance)
+    if (Status s = add_budget_items("--tolerance", list, budget); !s) return fail_usage(s.error());
+  double deg = budget.deg, mm = budget.mm, shell_m = kDefaultShellMetres;
+  if (!a.shell_distance.empty()) {
+    if (mm == 0.0) return fail_usage("--shell-distance needs a length budget (--tolerance 1mm)");
+    auto v = parse_length(a.shell_distance);
+    if (!v) return fail_usage("--shell-distance: " + v.error());
+    shell_m = *v;
   }
-  if (!a.tolerance_mm.empty()) {
-    auto v = parse_positive("--tolerance-mm", a.tolerance_mm);
-    if (!v) return fail_usage(v.error());
-    mm = *v;
-  }
-  if (!a.shell_cm.empty()) {
-    if (a.tolerance_mm.empty()) return fail_usage("--shell-distance needs --tolerance-mm");
-    auto v = parse_positive("--shell-distance", a.shell_cm);
-    if (!v) return fail_usage(v.error());
-    shell_cm = *v;
-  }
-  if (!a.unit_scale.empty()) {
-    auto v = parse_positive("--unit-scale", a.unit_scale);
-    if (!v) return fail_usage(v.error());
-    unit = *v;
-  }
+  auto unit = parse_unit_option(a.unit);
+  if (!unit) return fail_usage(unit.error());
   if (deg == 0.0 && mm == 0.0) mm = kDefaultToleranceMm;  // neither: ozz's 1 mm at 10 cm
   std::vector<JointBudget> per_joint;
   for (const std::string& item : a.tolerance_for) {
     auto b = parse_joint_budget(item);
     if (!b) return fail_usage(b.error());
-    if (b->mm > 0.0 && mm == 0.0) return fail_usage("--tolerance-for " + item + ": a mm budget needs --tolerance-mm");
+    if (b->mm > 0.0 && mm == 0.0) return fail_usage("--tolerance-for " + item + ": a length budget needs one in --tolerance");
     per_joint.push_back(*b);
   }
   protect_input(a.input);
@@ -205,28 +197,23 @@ int run_reduce(const ReduceArgs& a) {
 
   ReadOptions read_options;
   read_options.animation = a.anim;
+  read_options.unit = *unit;
+  read_options.on_warning = warn;
   auto clip = read_clip(a.input, read_options);
   if (!clip) return fail(clip.error());
   for (const JointBudget& b : per_joint)
     if (clip->skeleton.find(b.joint) < 0)
       return fail_usage("--tolerance-for: " + a.input + " has no joint named '" + b.joint + "'");
 
-  // Millimetres in clip units: the clip's own unit, or for BVH (which has none) the assumption, said once.
-  if (unit == 0.0) {
-    unit = clip->unit_scale > 0.0 && std::isfinite(clip->unit_scale) ? clip->unit_scale : 1.0;
-    if (clip->source_format == "bvh") {
-      unit = kBvhAssumedMetresPerUnit;
-      if (!a.quiet && mm > 0.0)
-        warn(a.input + ": BVH states no unit; its numbers are taken as centimetres (--unit-scale METRES to change)");
-    }
-  }
-  auto units = [unit](double millimetres) { return millimetres / 1000.0 / unit; };
+  // Budgets in clip units, through the clip's one unit (clip/units.h).
+  const double metres_per_unit = clip->unit.metres_per_unit;
+  auto units = [&](double millimetres) { return in_clip_units(*clip, millimetres / 1000.0); };
   ReduceOptions opt;
   opt.translation = *translation;
   opt.budget.rotation_deg = deg;
   opt.budget.shell = units(mm);
   opt.budget.translation = units(mm > 0.0 ? mm : kDefaultToleranceMm);
-  opt.shell_distance = units(shell_cm * 10.0);
+  opt.shell_distance = in_clip_units(*clip, shell_m);
   for (const JointBudget& b : per_joint) {
     ReduceBudget rb;
     rb.rotation_deg = b.deg;
@@ -236,9 +223,10 @@ int run_reduce(const ReduceArgs& a) {
   }
   nlohmann::json budgets = {{"tolerance_deg", deg > 0.0 ? nlohmann::json(deg) : nlohmann::json(nullptr)},
                             {"tolerance_mm", mm > 0.0 ? nlohmann::json(mm) : nlohmann::json(nullptr)},
-                            {"shell_distance_cm", mm > 0.0 ? nlohmann::json(shell_cm) : nlohmann::json(nullptr)},
+                            {"shell_distance_cm", mm > 0.0 ? nlohmann::json(shell_m * 100.0) : nlohmann::json(nullptr)},
                             {"translation_tolerance_mm", translation_tolerance({deg, mm, mm > 0.0 ? mm : kDefaultToleranceMm})},
-                            {"metres_per_unit", unit}};
+                            {"metres_per_unit", metres_per_unit},
+                            {"unit", describe_unit(clip->unit)}};
   nlohmann::json per = nlohmann::json::object();
   for (const JointBudget& b : per_joint) {
     nlohmann::json& e = per[b.joint];
@@ -247,11 +235,9 @@ int run_reduce(const ReduceArgs& a) {
   }
   if (!per.empty()) budgets["per_joint"] = per;
 
-  // The runs: each of --methods in its order, then --method for the output if not among them.
-  std::vector<std::string> order = names;
-  if (!a.output.empty() && std::find(order.begin(), order.end(), a.method) == order.end()) order.push_back(a.method);
+  // The runs: each method listed, in its order.
   std::vector<MethodRun> runs;
-  for (const std::string& m : order) {
+  for (const std::string& m : *listed) {
     const auto started = std::chrono::steady_clock::now();
     opt.method = m;
     opt.progress = make_progress("reduce " + m, a.quiet);
@@ -263,8 +249,8 @@ int run_reduce(const ReduceArgs& a) {
     run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     for (const ReducedJoint& j : r->joints) {
       run.max_rotation_deg = std::max(run.max_rotation_deg, j.max_rotation_error * 180.0 / kPi);
-      run.max_shell_mm = std::max(run.max_shell_mm, j.max_shell_error * unit * 1000.0);
-      run.max_translation_mm = std::max(run.max_translation_mm, j.max_translation_error * unit * 1000.0);
+      run.max_shell_mm = std::max(run.max_shell_mm, j.max_shell_error * metres_per_unit * 1000.0);
+      run.max_translation_mm = std::max(run.max_translation_mm, j.max_translation_error * metres_per_unit * 1000.0);
       run.rotation_keys += j.rotation_frames.size();
       run.translation_keys += j.translation_frames.size();
     }
@@ -273,18 +259,18 @@ int run_reduce(const ReduceArgs& a) {
   }
 
   if (!a.output.empty()) {
-    const MethodRun& run = *std::find_if(runs.begin(), runs.end(), [&](const MethodRun& r) { return r.method == a.method; });
+    const MethodRun& run = runs.front();
     Status written = Ok{};
     if (gltf) {
       WriteOptions w;
       w.gltf_own_key_times = true;
-      w.gltf_cubic_rotations = a.method == "gltf-cubic";
+      w.gltf_cubic_rotations = method == "gltf-cubic";
       w.gltf_cubic_translations = opt.translation == TranslationInterp::cubic;
       w.on_warning = warn;
       written = write_clip(run.result.reduced, a.output, w);
     } else {
       opt.method = run.method;
-      written = write_keys_json(a.output, *clip, run, opt, unit, budgets);
+      written = write_keys_json(a.output, *clip, run, opt, metres_per_unit, budgets);
     }
     if (!written) return fail(written.error());
   }
@@ -315,7 +301,7 @@ int run_reduce(const ReduceArgs& a) {
     }
   }
   if (!a.quiet && !a.output.empty()) {
-    const MethodRun& r = *std::find_if(runs.begin(), runs.end(), [&](const MethodRun& x) { return x.method == a.method; });
+    const MethodRun& r = runs.front();
     fmt::print("{} → {}: method {}, {} frames, {} of {} keys kept ({:.2f} %), max {:.4f}° local{}, {:.3f} s\n", a.input,
                a.output, r.method, r.result.grid.size(), r.result.kept_keys, r.result.source_keys,
                100.0 * static_cast<double>(r.result.kept_keys) / static_cast<double>(std::max<std::size_t>(1, r.result.source_keys)),
@@ -330,26 +316,26 @@ void add_reduce_command(CLI::App& app, int& exit_code) {
   auto* sub = app.add_subcommand("reduce", "Keep the fewest keys per joint that rebuild the clip within an error budget");
   auto a = std::make_shared<ReduceArgs>();
   sub->add_option("IN", a->input, "Input clip (BVH, FBX, glTF/GLB, Collada, … — anything assimp reads)")->required();
-  sub->add_option("-o,--output", a->output,
-                  "Output: .json (per joint the kept key frames, times and values) or .glb/.gltf (sparse keys, "
-                  "LINEAR for slerp, CUBICSPLINE for gltf-cubic)");
-  sub->add_option("--method", a->method, "Interpolator the keys are chosen for (see 'rotinterp methods'); default slerp");
-  sub->add_option("--tolerance-deg", a->tolerance_deg, "Budget on each joint's local rotation error, degrees (> 0)");
-  sub->add_option("--tolerance-mm", a->tolerance_mm,
-                  "Budget on the virtual-vertex (shell) error in object space, millimetres, with the ancestors' rebuilt "
-                  "motion; also the translation tracks' budget (1 mm when only --tolerance-deg is given). Default 1 (at 10 cm) "
-                  "when no --tolerance-deg is given");
-  sub->add_option("--shell-distance", a->shell_cm, "Virtual-vertex distance from each joint, centimetres (default 10)");
+  add_output_option(*sub, a->output,
+                    "Output: .json (per joint the kept key frames, times and values) or .glb/.gltf (sparse keys, "
+                    "LINEAR for slerp, CUBICSPLINE for gltf-cubic); default none: print the table");
+  add_method_option(*sub, a->methods, true,
+                    "slerp. The keys are chosen for it; with several, each is run and tabled, and -o gets the first");
+  sub->add_option("--tolerance", a->tolerance,
+                  "Error budget, each item with its unit: an angle (0.5deg, 0.01rad) on each joint's local rotation, "
+                  "and/or a length (1mm, 0.1cm) on the virtual-vertex (shell) error in object space with the "
+                  "ancestors' rebuilt motion, also the translation tracks' budget (1mm when only an angle is given). "
+                  "Default 1mm");
+  sub->add_option("--shell-distance", a->shell_distance,
+                  "Virtual-vertex distance from each joint: a length (10cm); a bare number is metres. Default 10cm");
   sub->add_option("--tolerance-for", a->tolerance_for,
-                  "Per-joint budget JOINT=DEGdeg, JOINT=MMmm or JOINT=DEGdeg,MMmm (repeatable)");
-  sub->add_option("--methods", a->methods, "Run the selection for each method of LIST (or all) and print a table");
-  sub->add_option("--report", a->report, "Write the table as JSON to FILE.json");
+                  "Per-joint budget JOINT=LIST, LIST as --tolerance takes it (repeatable; default none)");
+  sub->add_option("--report", a->report, "Write the table as JSON to FILE.json (default none)");
   sub->add_option("--translation", a->translation,
                   "Translation curve: linear, or cubic (default: Steffen's, never overshoots)");
-  sub->add_option("--unit-scale", a->unit_scale,
-                  "Metres per clip unit, overriding the file's (BVH states none and is taken as centimetres: 0.01)");
-  sub->add_option("--anim", a->anim, "Animation to read: its name or index (default the first)");
-  sub->add_flag("-q,--quiet", a->quiet, "No progress and no summary line");
+  add_unit_option(*sub, a->unit);
+  add_anim_option(*sub, a->anim, false);
+  add_quiet_option(*sub, a->quiet);
   sub->callback([a, &exit_code] { exit_code = run_reduce(*a); });
 }
 

@@ -2,6 +2,7 @@
 // offscreen (render/comparison.h does the work). Built only with the renderer.
 #if ROTINTERP_HAVE_RENDER
 #include "common.h"
+#include "rotinterp/clip/frames.h"
 #include "rotinterp/clip/metrics.h"
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/io/atomic_file.h"
@@ -13,8 +14,12 @@
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,10 +43,47 @@ bool degenerate(const Clip& clip) {
   return skeleton_height(first) <= 1e-6;
 }
 
+// -o is the directory the frame PNGs go in: a name that reads as a file (out.png,
+// walk.bvh, clip.mp4) or an existing file is refused with why, before anything is drawn.
+Status check_output_directory(const std::string& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+    return make_error("-o '" + dir + "' is an existing file; -o names the directory the frame PNGs go in");
+  std::string ext = fs::path(dir).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  static const char* const kFileExtensions[] = {".png", ".jpg", ".jpeg", ".gif", ".bmp", ".tif", ".tiff", ".webp", ".mp4",
+                                                ".mov", ".mkv", ".webm", ".avi", ".bvh", ".fbx", ".glb", ".gltf", ".dae"};
+  if (!fs::is_directory(dir, ec))
+    for (const char* e : kFileExtensions)
+      if (ext == e)
+        return make_error("-o '" + dir + "' looks like a file name (" + ext +
+                          "); -o names the directory the frame PNGs go in (e.g. -o frames), --video FILE writes one "
+                          "clip");
+  return Ok{};
+}
+
+// Frames that are all keys show the source itself in every panel ("0.00° (key)"): say why.
+void warn_if_only_keys(const Clip& clip, const render::ComparisonOptions& options) {
+  auto frames = render::comparison_frames(clip, options);
+  if (!frames || frames->empty()) return;  // render_comparison reports it
+  const std::size_t count = frame_grid(clip).size(), n = options.keep_every, last = count - 1;
+  const auto keys = keep_every_indices(count, n);
+  for (std::size_t f : *frames)
+    if (!std::binary_search(keys.begin(), keys.end(), f)) return;
+  const std::string what = n == 1 ? "--keep-every 1 keeps every frame" : fmt::format("--keep-every {} keeps frames 0, {}, {}, …", n, n, 2 * n);
+  const std::string fix = n == 1 ? "give --keep-every 2 or more"
+                                 : fmt::format("draw frames between keys (e.g. --frames {}:{}:{}) or change --keep-every",
+                                               std::min(frames->front() + n / 2, last),
+                                               frames->back() + n / 2 <= last ? frames->back() + n / 2 : frames->back() - n / 2,
+                                               options.frames->step);
+  warn("every frame drawn is a key frame (" + what + "), so every method shows the source exactly (0° error); " + fix);
+}
+
 struct RenderArgs {
   std::string input;
   std::string out_dir;
-  std::string methods;
+  std::string methods = "all";
   std::string keep_every = "10";
   std::string frames;
   std::string size = "960x540";
@@ -49,27 +91,26 @@ struct RenderArgs {
   double trail_window = 1.0;
   bool sheet = false;
   std::string backend;
-  std::string anim;
+  std::string anim, unit;
   std::string colour = "error";
   std::string camera;
   std::string focus;
   bool no_strip = false;
   std::string video;
-  double video_fps = 0.0;
+  std::optional<double> video_fps;  // unset: the clip's rate over the frame step
   bool quiet = false;
 };
 
 int run_render(const RenderArgs& a) {
   render::ComparisonOptions options;
   if (a.out_dir.empty() && a.video.empty()) return fail_usage("render: give -o DIR (frame PNGs), --video FILE, or both");
-  if (a.methods.empty()) {
-    for (const MethodInfo& m : methods()) options.methods.push_back(m.name);
-  } else {
-    options.methods = split_comma_list(a.methods);
+  // Repeats stay: the same method twice draws two identical panels (a check of determinism).
+  for (const std::string& m : split_comma_list(a.methods)) {
+    auto one = parse_methods(m, true);
+    if (!one) return fail_usage(one.error());
+    options.methods.insert(options.methods.end(), one->begin(), one->end());
   }
-  if (options.methods.empty()) return fail_usage("--methods: no method given (valid: " + method_names() + ")");
-  for (const std::string& m : options.methods)
-    if (!find_method(m)) return fail_usage("--methods: unknown method '" + m + "' (valid: " + method_names() + ")");
+  if (options.methods.empty()) return fail_usage("--method '" + a.methods + "' names no method (valid: " + method_names() + ")");
   auto keep_every = parse_whole_option("--keep-every", a.keep_every, 1, kMaxKeepEvery);
   if (!keep_every) return fail_usage(keep_every.error());
   options.keep_every = static_cast<std::size_t>(*keep_every);
@@ -115,20 +156,30 @@ int run_render(const RenderArgs& a) {
     auto format = render::video_format(a.video);
     if (!format) return fail_usage(format.error());
     if (Status s = render::check_video_size(*format, options.width, options.height); !s) return fail_usage(s.error());
-    if (a.video_fps < 0.0 || a.video_fps > 1000.0 || !std::isfinite(a.video_fps))
-      return fail_usage("--video-fps must be within (0, 1000]");
+    // 0 is refused like -5: it would otherwise mean "unset" and write 30 fps without a word.
+    if (a.video_fps && !(*a.video_fps > 0.0 && *a.video_fps <= 1000.0))
+      return fail_usage(fmt::format("--video-fps {:g} must be within (0, 1000] frames per second", *a.video_fps));
     options.video = a.video;
-    options.video_fps = a.video_fps;
+    options.video_fps = a.video_fps.value_or(0.0);
+  } else if (a.video_fps) {
+    return fail_usage("--video-fps needs --video FILE");
   }
+  if (!a.out_dir.empty())
+    if (Status s = check_output_directory(a.out_dir); !s) return fail_usage(s.error());
 
   protect_input(a.input);  // no frame written may replace it
   ReadOptions read_options;
   read_options.animation = a.anim;
+  auto unit = parse_unit_option(a.unit);
+  if (!unit) return fail_usage(unit.error());
+  read_options.unit = *unit;
+  read_options.on_warning = warn;
   auto clip = read_clip(a.input, read_options);
   if (!clip) return fail(clip.error());
   if (degenerate(*clip))
     warn(fmt::format("{}: all {} joints lie within 1e-6 units of one point; the frames will show only the grid",
                      a.input, clip->skeleton.joints.size()));
+  if (options.frames) warn_if_only_keys(*clip, options);
   options.progress = make_progress("render", a.quiet);
   auto result = render::render_comparison(*clip, a.out_dir, options);
   end_progress(a.quiet);
@@ -152,42 +203,44 @@ void add_render_command(CLI::App& app, int& exit_code) {
   auto* sub = app.add_subcommand(
       "render", "Draw comparison frames offscreen: the clip rebuilt by several interpolators, side by side, as PNGs");
   sub->add_option("input", args->input, "Clip to read (BVH, FBX, glTF, Collada, …)")->required();
-  sub->add_option("-o,--out", args->out_dir,
-                  "Output directory for frame_NNNNNN.png (created if missing); optional with --video");
-  sub->add_option("--methods", args->methods, "Comma-separated interpolators to compare (default: all)");
-  sub->add_option("--keep-every", args->keep_every,
-                  "Keep every Nth source frame (and the last) as keys; the methods rebuild the rest")
-      ->default_val(10);
+  add_output_option(*sub, args->out_dir,
+                    "Output directory for frame_NNNNNN.png (created if missing); default none, then --video is needed");
+  add_method_option(*sub, args->methods, true, "all, one panel each");
+  add_keep_every_option(*sub, args->keep_every, false, "default 10");
   sub->add_option("--frames", args->frames,
                   "Frames to draw, START:END:STEP (END included; frame 0 = first frame). Default: 8 frames spread "
                   "over the clip, each halfway between two keys");
   sub->add_option("--size", args->size, "Image size WxH in pixels, at most 8192 per side")->default_val("960x540");
   sub->add_option("--trail", args->trail,
-                  "Also draw this joint's bone direction over the frames on a unit sphere (reference vs method)");
+                  "Also draw this joint's bone direction over the frames on a unit sphere (reference vs method); "
+                  "default: no trail");
   sub->add_option("--trail-window", args->trail_window,
                   "Seconds either side of the frame drawn on the trail, fading with distance in time; 0 = all the "
                   "frames drawn")
       ->default_val(1.0);
-  sub->add_flag("--sheet", args->sheet, "Also write sheet.png: a row per method, a column per frame");
-  sub->add_option("--anim", args->anim, "Animation to read: its name or 0-based index (default: the first)");
+  sub->add_flag("--sheet", args->sheet, "Also write sheet.png: a row per method, a column per frame (default: off)");
+  add_anim_option(*sub, args->anim, false);
+  add_unit_option(*sub, args->unit);
   sub->add_option("--colour", args->colour,
                   "error: each bone coloured by its joint's angular error (viridis, one scale per frame, shared by "
-                  "the panels); method: one colour per method")
+                  "the panels; sheet.png: one scale for the whole sheet); method: one colour per method")
       ->default_val("error")
       ->check(CLI::IsMember({"error", "method"}));
   sub->add_option("--camera", args->camera,
                   "fixed or follow (default: follow when the root travels farther than the skeleton's height over "
                   "the frames drawn, or with --focus)")
       ->check(CLI::IsMember({"fixed", "follow"}));
-  sub->add_option("--focus", args->focus, "Frame this joint and the joints below it (a hand, a foot), following it");
-  sub->add_flag("--no-strip", args->no_strip, "No error-over-time strip under the panels");
+  sub->add_option("--focus", args->focus,
+                  "Frame this joint and the joints below it (a hand, a foot), following it (default: the whole figure)");
+  sub->add_flag("--no-strip", args->no_strip, "No error-over-time strip under the panels (default: drawn)");
   sub->add_option("--video", args->video,
                   "Also (or, without -o, only) encode the frames into FILE.mp4 (H.264) or FILE.gif through ffmpeg; "
                   "default frames: every frame of the clip");
-  sub->add_option("--video-fps", args->video_fps, "Video frame rate (default: the clip's rate over the frame step)");
+  sub->add_option("--video-fps", args->video_fps,
+                  "Video frame rate, (0, 1000] (default: the clip's rate over the frame step)");
   sub->add_option("--backend", args->backend, "OpenGL context: osmesa or egl (default: osmesa where present)")
       ->check(CLI::IsMember({"osmesa", "egl"}));
-  sub->add_flag("-q,--quiet", args->quiet, "No progress or summary on stderr");
+  add_quiet_option(*sub, args->quiet);
   sub->callback([args, &exit_code] { exit_code = run_render(*args); });
 }
 

@@ -1,11 +1,13 @@
 // rotinterp resample IN -o OUT [--fps HZ | --keep-every N] [--method NAME] [--method-for JOINT=NAME ...]
-//                    [--translation linear|cubic] [--range START:END] [--anim NAME|INDEX] [--bvh-order ZXY] [--quiet]
+//                    [--translation linear|cubic] [--range START:END] [--anim NAME|INDEX] [--bvh-order ZXY]
+//                    [--unit U] [--out-unit U] [--quiet]
 // rotinterp resample PATH... -o OUTDIR [the same] [-j N] [--shard I/N] [--skip-existing] [--format EXT]
 //                    [--manifest FILE.csv]: a whole dataset, its layout mirrored under OUTDIR.
 #include "common.h"
 #include "rotinterp/clip/frames.h"
 #include "rotinterp/clip/bvh_layout.h"
 #include "rotinterp/clip/resample.h"
+#include "rotinterp/clip/units.h"
 #include "rotinterp/core/work_queue.h"
 #include "rotinterp/eval/error_row.h"  // csv_field: the one CSV quoting
 #include "rotinterp/interp/interpolator.h"
@@ -49,6 +51,8 @@ struct ResampleArgs {
   int jobs = 0;
   std::string shard, format, manifest;
   bool skip_existing = false;
+  std::string unit, out_unit;  // as written; parsed into:
+  std::optional<double> unit_m, out_unit_m;  // metres per unit
 };
 
 // One file's run: a row of the manifest.
@@ -63,18 +67,9 @@ struct FileRun {
   std::size_t frames = 0, joints = 0, output_frames = 0;
   double duration = 0.0, seconds = 0.0;
   std::uintmax_t bytes = 0;  // of the input
+  ClipUnit unit;             // the input's (clip/units.h)
+  double output_metres_per_unit = 0.0;
 };
-
-// A number of seconds ≥ 0, or nothing for an empty text.
-bool parse_seconds(const std::string& text, std::optional<double>& out) {
-  if (text.empty()) return true;
-  errno = 0;
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (end != text.c_str() + text.size() || errno == ERANGE || !std::isfinite(v) || v < 0.0) return false;
-  out = v;
-  return true;
-}
 
 bool valid_bvh_order(std::string order) {
   std::sort(order.begin(), order.end());
@@ -95,31 +90,25 @@ Result<ResampleOptions> resample_options(const ResampleArgs& a) {
     if (!n) return make_error(n.error());
     opt.keep_every = static_cast<std::size_t>(*n);
   }
-  if (!find_method(a.method)) return make_error("unknown method '" + a.method + "' (valid: " + method_names() + ")");
-  opt.method = a.method;
+  auto method = parse_methods(a.method, false);
+  if (!method) return make_error(method.error());
+  opt.method = method->front();
   for (const std::string& item : a.method_for) {
     const std::size_t eq = item.find('=');
     if (eq == std::string::npos || eq == 0 || eq + 1 == item.size())
       return make_error("--method-for '" + item + "' must be JOINT=METHOD");
-    const std::string joint = item.substr(0, eq), method = item.substr(eq + 1);
-    if (!find_method(method))
-      return make_error("unknown method '" + method + "' in --method-for " + item + " (valid: " + method_names() + ")");
-    opt.method_for.emplace_back(joint, method);
+    const std::string joint = item.substr(0, eq), name = item.substr(eq + 1);
+    const MethodInfo* m = find_method(name);
+    if (!m) return make_error("--method-for " + item + ": " + unknown_method_message(name));
+    opt.method_for.emplace_back(joint, m->name);
   }
   auto translation = parse_translation_interp(a.translation);
   if (!translation) return make_error("--translation: " + translation.error());
   opt.translation = *translation;
   if (!a.range.empty()) {
-    const std::size_t colon = a.range.find(':');
-    std::optional<double> s, e;
-    if (colon == std::string::npos || !parse_seconds(a.range.substr(0, colon), s) ||
-        !parse_seconds(a.range.substr(colon + 1), e))
-      return make_error("--range '" + a.range + "' must be START:END in seconds (either may be empty), e.g. 1.5:4");
-    TimeRange r;
-    if (s) r.start = *s;
-    if (e) r.end = *e;
-    if (!(r.end > r.start)) return make_error("--range '" + a.range + "': END must be after START");
-    opt.range = r;
+    auto r = parse_time_range(a.range);
+    if (!r) return make_error(r.error());
+    opt.range = *r;
   }
   if (!valid_bvh_order(a.bvh_order)) return make_error("--bvh-order '" + a.bvh_order + "' must be a permutation of XYZ, e.g. ZXY");
   return opt;
@@ -131,6 +120,8 @@ Status resample_file(FileRun& run, const ResampleArgs& a, const ResampleOptions&
   const auto started = std::chrono::steady_clock::now();
   ReadOptions read_options;
   read_options.animation = a.anim;
+  read_options.unit = a.unit_m;
+  read_options.on_warning = warn;
   stage("reading " + run.input);
   auto clip = read_clip(run.input, read_options);
   if (!clip) return clip.failure();
@@ -139,9 +130,12 @@ Status resample_file(FileRun& run, const ResampleArgs& a, const ResampleOptions&
   run.frames = clip->frame_count();
   run.joints = clip->skeleton.joints.size();
   run.duration = clip->end_time() - clip->start_time();
+  run.unit = clip->unit;
 
   auto out = resample_clip(*clip, opt);
   if (!out) return make_error(run.input + ": " + out.error());
+  if (a.out_unit_m) convert_unit(*out, *a.out_unit_m, "--out-unit " + a.out_unit);
+  run.output_metres_per_unit = out->unit.metres_per_unit;
   run.output_frames = out->frame_count();
   run.output_rate = clip_rate(*out);
 
@@ -187,8 +181,9 @@ int run_single(const ResampleArgs& a, ResampleOptions opt) {
     std::string methods = opt.method;
     if (!opt.method_for.empty()) methods += fmt::format(" (+{} per-joint override{})", opt.method_for.size(),
                                                         opt.method_for.size() == 1 ? "" : "s");
-    fmt::print("{} → {}: {} → {} frames ({}), method {}, translation {}, {:.3f} s\n", input, a.output, run.frames,
-               run.output_frames, how, methods, translation_interp_name(opt.translation), run.seconds);
+    fmt::print("{} → {}: {} → {} frames ({}), method {}, translation {}, {:.3f} s; unit {}{}\n", input, a.output,
+               run.frames, run.output_frames, how, methods, translation_interp_name(opt.translation), run.seconds,
+               describe_unit(run.unit), a.out_unit_m ? ", written in " + unit_name(*a.out_unit_m) : std::string());
   }
   return kExitOk;
 }
@@ -196,7 +191,7 @@ int run_single(const ResampleArgs& a, ResampleOptions opt) {
 Status write_manifest(const std::string& path, const std::vector<FileRun>& runs, const ResampleOptions& opt) {
   return write_file_atomically(path, [&](std::ostream& out) -> Status {
     out << "input,output,status,frame_time_written,rate_hz,rate,frames,duration_s,joints,output_frames,method,"
-           "seconds,message\n";
+           "seconds,message,metres_per_unit,unit\n";
     for (const FileRun& r : runs) {
       const bool read = r.status == "ok" || (r.status == "failed" && r.frames > 0);
       out << csv_field(r.input) << ',' << csv_field(r.output.string()) << ',' << r.status << ','
@@ -204,7 +199,9 @@ Status write_manifest(const std::string& path, const std::vector<FileRun>& runs,
           << (r.rate ? r.rate->to_string() : "") << ',' << (read ? std::to_string(r.frames) : "") << ','
           << (read ? fmt::format("{:.9g}", r.duration) : "") << ',' << (read ? std::to_string(r.joints) : "") << ','
           << (r.status == "ok" ? std::to_string(r.output_frames) : "") << ',' << csv_field(opt.method) << ','
-          << (r.status == "ok" ? fmt::format("{:.3f}", r.seconds) : "") << ',' << csv_field(r.message) << '\n';
+          << (r.status == "ok" ? fmt::format("{:.3f}", r.seconds) : "") << ',' << csv_field(r.message) << ','
+          << (read ? fmt::format("{}", r.unit.metres_per_unit) : "") << ','
+          << (read ? csv_field(describe_unit(r.unit)) : "") << '\n';
     }
     return Ok{};
   });
@@ -223,7 +220,6 @@ int run_folder(const ResampleArgs& a, ResampleOptions opt) {
     return fail_usage("output '" + a.output + "' is a file name; several inputs or a folder need an output directory");
   if (!a.format.empty() && !can_write_format(fs::path("x." + a.format)))
     return fail_usage("--format '" + a.format + "': unknown format (use bvh, fbx, glb, gltf or dae)");
-  if (a.jobs < 0) return fail_usage("-j " + std::to_string(a.jobs) + ": must be ≥ 0 (0 = one per core)");
   std::vector<fs::path> named(a.inputs.begin(), a.inputs.end());
   auto found = discover_inputs(named);
   if (!found) return fail(found.error());
@@ -327,10 +323,21 @@ int run_folder(const ResampleArgs& a, ResampleOptions opt) {
   return failed > 0 ? kExitPartial : kExitOk;
 }
 
-int run_resample(const ResampleArgs& a) {
+int run_resample(ResampleArgs a) {
   // Everything that can be checked without the input is checked first (exit 2).
   auto opt = resample_options(a);
   if (!opt) return fail_usage(opt.error());
+  auto unit = parse_unit_option(a.unit);
+  if (!unit) return fail_usage(unit.error());
+  a.unit_m = *unit;
+  if (!a.out_unit.empty()) {
+    auto out_unit = parse_unit(a.out_unit);
+    if (!out_unit) return fail_usage("--out-unit: " + out_unit.error());
+    a.out_unit_m = *out_unit;
+    const std::string out_ext = a.format.empty() ? std::filesystem::path(a.output).extension().string() : "." + a.format;
+    if (out_ext == ".glb" || out_ext == ".gltf")
+      return fail_usage("--out-unit: glTF is always in metres (its spec); --out-unit is for bvh, fbx and dae");
+  }
   std::error_code ec;
   // One file in, one out, as always; a folder run when given a folder, several
   // inputs, --format, or an existing directory (not named like a clip) as output.
@@ -354,37 +361,39 @@ void add_resample_command(CLI::App& app, int& exit_code) {
                   "Input clip (BVH, FBX, glTF/GLB, Collada, … — anything assimp reads); several, or folders "
                   "(searched recursively), with -o DIR")
       ->required();
-  sub->add_option("-o,--output", a->output,
-                  "Output file; the format follows the extension: bvh, fbx, glb, gltf, dae. For several inputs or "
-                  "a folder: the output directory, the inputs' layout mirrored under it")
+  add_output_option(*sub, a->output,
+                    "Output file; the format follows the extension: bvh, fbx, glb, gltf, dae. For several inputs or "
+                    "a folder: the output directory, the inputs' layout mirrored under it")
       ->required();
-  sub->add_option("--fps", a->fps,
-                  "Output rate in Hz: a decimal (30, 59.94) or a rational (30000/1001). Frames at start + k/HZ, "
-                  "k = 0 … floor(duration·HZ + 1e-9); Frame Time = 1/HZ");
-  sub->add_option("--keep-every", a->keep_every,
-                  "Keep every Nth frame (and the last) as keys and rebuild every frame from them (N ≥ 1)");
-  sub->add_option("--method", a->method,
-                  std::string("Rotation interpolator for every joint (see 'rotinterp methods'); default ") +
-                      kDefaultResampleMethod);
-  sub->add_option("--method-for", a->method_for, "Per-joint override JOINT=METHOD (repeatable)");
+  add_fps_option(*sub, a->fps,
+                 "the output rate: frames at start + k/HZ, k = 0 … floor(duration·HZ + 1e-9); default the source's "
+                 "rate (or --keep-every)");
+  add_keep_every_option(*sub, a->keep_every, false, "every source frame is rebuilt (default: unset, see --fps)");
+  add_method_option(*sub, a->method, false, std::string(kDefaultResampleMethod) + ", for every joint");
+  sub->add_option("--method-for", a->method_for, "Per-joint override JOINT=METHOD (repeatable; default none)");
   sub->add_option("--translation", a->translation,
                   "Translation tracks: linear, or cubic (default: C¹, Steffen tangents — never overshoots between keys)");
-  sub->add_option("--range", a->range,
-                  "Cut START:END (seconds from the first frame; either side may be empty) before resampling");
-  sub->add_option("--anim", a->anim, "Animation to read: its name or index (default the first)");
+  add_range_option(*sub, a->range, "cut before resampling (default: the whole clip)");
+  add_anim_option(*sub, a->anim, false);
+  add_unit_option(*sub, a->unit);
+  sub->add_option("--out-unit", a->out_unit,
+                  "Unit of the written file: m, cm, mm, in, ft or metres per unit (default: the input's; glTF is "
+                  "always metres)");
   sub->add_option("--bvh-order", a->bvh_order,
                   "Euler order for BVH output of joints without a BVH layout (non-BVH input); default ZXY");
   sub->add_flag("--fbx-ascii", a->fbx_ascii, "FBX output as ASCII FBX 7.4 (default: binary FBX 7.4, which Blender needs)");
-  sub->add_flag("-q,--quiet", a->quiet, "No progress and no summary line");
-  sub->add_option("-j,--jobs", a->jobs, "Folder runs: files resampled at once (0 = one per core)")->capture_default_str();
-  sub->add_option("--shard", a->shard, "Folder runs: only shard I of N (I/N) of the sorted inputs, for a cluster");
+  add_quiet_option(*sub, a->quiet);
+  add_jobs_option(*sub, a->jobs, "Folder runs: files resampled at once");
+  sub->add_option("--shard", a->shard,
+                  "Folder runs: only shard I of N (I/N) of the sorted inputs, for a cluster (default: all)");
   sub->add_flag("--skip-existing", a->skip_existing,
-                "Folder runs: leave outputs that exist (an output is only ever complete), to resume a run");
+                "Folder runs: leave outputs that exist (an output is only ever complete), to resume a run "
+                "(default: replace them)");
   sub->add_option("--format", a->format,
                   "Folder runs: output format bvh, fbx, glb, gltf or dae (default: the input's own, else bvh)");
   sub->add_option("--manifest", a->manifest,
                   "Folder runs: write a CSV row per file (rate as written and as read, frames, duration, joints, "
-                  "output frames, method, time, status)");
+                  "output frames, method, time, status); default none");
   sub->callback([a, &exit_code] { exit_code = run_resample(*a); });
 }
 

@@ -101,15 +101,17 @@ void add_synth_command(CLI::App& app, int& exit_code) {
   auto* sub = app.add_subcommand(
       "synth", "Write a synthetic clip whose motion is known analytically (random BVH rotation orders per joint)");
   auto a = std::make_shared<SynthArgs>();
-  sub->add_option("OUT", a->output, "Output file (bvh, fbx, glb, gltf, dae); OUT.synth gets the spec")->required();
+  add_output_option(*sub, a->output, "Output file (bvh, fbx, glb, gltf, dae), -o OUT or just OUT; OUT.synth gets the spec",
+                    "OUT")
+      ->required();
   sub->add_option("--kind", a->kind,
                   "constant (constant angular velocity per joint), smooth (random rotation-vector curves), "
                   "spin (past 2π, accelerating), walk (31-joint walking figure); default walk");
   sub->add_option("--seconds", a->seconds, "Duration in seconds (default 4)");
-  sub->add_option("--fps", a->fps, "Frame rate in Hz, decimal or rational (default 30)");
+  add_fps_option(*sub, a->fps, "default 30");
   sub->add_option("--seed", a->seed, "Random seed: rotation orders, axes, amplitudes (default 1)");
   sub->add_option("--joints", a->joints, "Joints for constant/smooth/spin (default 12; walk always has 31)");
-  sub->add_flag("-q,--quiet", a->quiet, "No summary line");
+  add_quiet_option(*sub, a->quiet);
   sub->callback([a, &exit_code] { exit_code = run_synth(*a); });
 }
 

@@ -1,5 +1,10 @@
 #include "common.h"
 
+#include "rotinterp/clip/units.h"
+#include "rotinterp/interp/interpolator.h"
+
+#include <CLI/CLI.hpp>
+
 #include <unistd.h>
 
 #include <algorithm>
@@ -20,8 +25,17 @@ int fail(std::string_view message) {
   return kExitFailure;
 }
 
+namespace {
+// The subcommand being parsed (set by its preparse callback): usage errors name its help.
+std::string current_command;  // NOLINT: one per process, written only by the parser's thread
+}  // namespace
+
+std::string help_hint() {
+  return current_command.empty() ? "run 'rotinterp --help'" : "see 'rotinterp " + current_command + " --help'";
+}
+
 int fail_usage(std::string_view message) {
-  fail(message);
+  fail(std::string(message) + " (" + help_hint() + ")");
   return kExitUsage;
 }
 
@@ -68,6 +82,19 @@ Result<long long> parse_whole_option(const std::string& option, const std::strin
   return static_cast<long long>(v);
 }
 
+void add_unit_option(CLI::App& sub, std::string& unit) {
+  sub.add_option("--unit", unit,
+                 "Unit of a file that states none (BVH): m, cm, mm, in, ft or metres per unit. Default: inferred "
+                 "from the figure's size (info shows it); a file that declares its unit (FBX, glTF) keeps it");
+}
+
+Result<std::optional<double>> parse_unit_option(const std::string& text) {
+  if (text.empty()) return std::optional<double>();
+  auto v = parse_unit(text);
+  if (!v) return make_error("--unit: " + v.error());
+  return std::optional<double>(*v);
+}
+
 std::vector<std::string> split_comma_list(std::string_view text) {
   std::vector<std::string> items;
   for (std::size_t begin = 0; begin <= text.size();) {
@@ -76,6 +103,85 @@ std::vector<std::string> split_comma_list(std::string_view text) {
     begin = comma + 1;
   }
   return items;
+}
+
+CLI::Option* add_output_option(CLI::App& sub, std::string& output, const std::string& what, const char* positional) {
+  return sub.add_option(positional ? std::string(positional) + ",-o,--output" : "-o,--output", output, what);
+}
+
+CLI::Option* add_method_option(CLI::App& sub, std::string& methods, bool several, const std::string& default_text) {
+  const std::string help = several ? "Interpolators: a name, a comma list or 'all' (see 'rotinterp methods'; any case); "
+                                   : "Interpolator (see 'rotinterp methods'; any case); ";
+  return sub.add_option("-m,--method,--methods", methods, help + "default " + default_text);
+}
+
+Result<std::vector<std::string>> parse_methods(const std::string& text, bool several) {
+  std::vector<std::string> names;
+  const std::vector<std::string> items = split_comma_list(text);
+  for (const std::string& item : items) {
+    if (several && (item == "all" || item == "ALL")) {  // every method not listed yet, in the registry's order
+      for (const MethodInfo& m : methods())
+        if (std::find(names.begin(), names.end(), m.name) == names.end()) names.push_back(m.name);
+      continue;
+    }
+    const MethodInfo* m = find_method(item);
+    if (!m) return make_error("--method: " + unknown_method_message(item));
+    if (std::find(names.begin(), names.end(), m->name) == names.end()) names.push_back(m->name);
+  }
+  if (names.empty()) return make_error("--method '" + text + "' names no method (valid: " + method_names() + ")");
+  if (!several && names.size() > 1) return make_error("--method '" + text + "': this command takes one method");
+  return names;
+}
+
+CLI::Option* add_fps_option(CLI::App& sub, std::string& fps, const std::string& what) {
+  return sub.add_option("--fps", fps, "Frame rate in Hz, a decimal (30, 59.94) or a rational (30000/1001); " + what);
+}
+
+CLI::Option* add_keep_every_option(CLI::App& sub, std::string& keep_every, bool several, const std::string& what) {
+  return sub.add_option("--keep-every", keep_every,
+                        std::string(several ? "Key spacings N, comma-separated" : "Key spacing N") +
+                            ": keep every Nth frame (and the last) as keys, rebuild the rest; " + what);
+}
+
+CLI::Option* add_range_option(CLI::App& sub, std::string& range, const std::string& what) {
+  return sub.add_option("--range", range,
+                        "START:END from the first frame, in seconds (1.5:4) or frames (120f:480f), either side may "
+                        "be empty; " + what);
+}
+
+CLI::Option* add_anim_option(CLI::App& sub, std::string& anim, bool all_takes) {
+  return sub.add_option("--anim", anim,
+                        std::string("Animation (take) to read: its name or 0-based index") +
+                            (all_takes ? ", or 'all' (one clip per take, named FILE#TAKE)" : "") +
+                            "; default the first");
+}
+
+CLI::Option* add_jobs_option(CLI::App& sub, int& jobs, const std::string& what) {
+  return sub.add_option("-j,--jobs", jobs, what + " (0 = one per core)")->capture_default_str()->check(CLI::Range(0, 4096));
+}
+
+CLI::Option* add_quiet_option(CLI::App& sub, bool& quiet) {
+  return sub.add_flag("-q,--quiet", quiet, "No progress and no summary (errors and warnings still print)");
+}
+
+CLI::Option* add_json_option(CLI::App& sub, bool& json) {
+  return sub.add_flag("--json", json, "Print JSON on stdout instead of text");
+}
+
+void add_commands(CLI::App& app, int& exit_code) {
+  add_methods_command(app, exit_code);
+  add_resample_command(app, exit_code);
+  add_synth_command(app, exit_code);
+  add_eval_command(app, exit_code);
+  add_info_command(app, exit_code);
+  add_reduce_command(app, exit_code);
+#if ROTINTERP_HAVE_RENDER
+  add_render_command(app, exit_code);
+#endif
+  for (CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) {
+    const std::string name = sub->get_name();
+    sub->preparse_callback([name](std::size_t) { current_command = name; });
+  }
 }
 
 static bool progress_visible(bool quiet) { return !quiet && ::isatty(STDERR_FILENO); }

@@ -5,12 +5,14 @@
 #include "rotinterp/core/progress.h"
 #include "rotinterp/core/result.h"
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace CLI {
 class App;
+class Option;
 }
 
 namespace rotinterp::cli {
@@ -26,8 +28,11 @@ constexpr long long kMaxKeepEvery = 1000000000;
 
 // Prints "rotinterp: <message>" on stderr and returns kExitFailure.
 int fail(std::string_view message);
-// The same for a bad option value: returns kExitUsage.
+// The same for a bad option value, pointing to the running subcommand's help
+// ("… (see 'rotinterp render --help')"): returns kExitUsage.
 int fail_usage(std::string_view message);
+// "see 'rotinterp render --help'" for the subcommand being parsed, else the top help.
+std::string help_hint();
 // Prints "rotinterp: warning: <message>" on stderr (the reader's and writer's
 // on_warning, and the commands' own warnings).
 void warn(const std::string& message);
@@ -40,6 +45,12 @@ Result<Rate> parse_rate_option(const std::string& option, const std::string& tex
 // not a number / not whole / too small / too large it is.
 Result<long long> parse_whole_option(const std::string& option, const std::string& text, long long min, long long max);
 
+// --unit, on every command that reads clips: the unit of a file that states none
+// (m, cm, mm, in, ft or metres per unit; clip/units.h). One declaration, one help text.
+void add_unit_option(CLI::App& sub, std::string& unit);
+// --unit's text as metres per unit; empty text (not given) is none.
+Result<std::optional<double>> parse_unit_option(const std::string& text);
+
 // "a,b,,c" → {"a", "b", "c"}: the items of a comma-separated option, empty ones dropped.
 std::vector<std::string> split_comma_list(std::string_view text);
 
@@ -48,6 +59,39 @@ std::vector<std::string> split_comma_list(std::string_view text);
 ProgressFn make_progress(std::string label, bool quiet);
 // Ends the progress line (if one was drawn).
 void end_progress(bool quiet);
+
+// ---- One vocabulary: every option that means the same in several subcommands is
+// declared here, once, with its names, its default and its help (STYLE rule 15).
+// `what` is the subcommand's own sentence; the shared part is appended.
+
+// -o,--output: a file or a directory, as `what` says; with `positional`, also the
+// positional argument of that name (synth OUT).
+CLI::Option* add_output_option(CLI::App& sub, std::string& output, const std::string& what,
+                               const char* positional = nullptr);
+// -m,--method (also --methods): one method name, or with `several` a comma list or
+// "all". Names are checked by parse_methods.
+CLI::Option* add_method_option(CLI::App& sub, std::string& methods, bool several, const std::string& default_text);
+// Names → the registry's spellings, in order, without repeats ("all": every method
+// not listed before it, so "gltf-cubic,all" puts gltf-cubic first).
+// Errors: unknown name (with "did you mean"), an empty list, or several where one is taken.
+Result<std::vector<std::string>> parse_methods(const std::string& text, bool several);
+// --fps HZ: an exact rate (decimal or rational), parsed by parse_rate_option.
+CLI::Option* add_fps_option(CLI::App& sub, std::string& fps, const std::string& what);
+// --keep-every N: keep every Nth frame (and the last) as keys; with `several` a comma list.
+CLI::Option* add_keep_every_option(CLI::App& sub, std::string& keep_every, bool several, const std::string& what);
+// --range START:END, seconds or frames ("1.5:4", "120f:480f"), parsed by parse_time_range (clip/resample.h).
+CLI::Option* add_range_option(CLI::App& sub, std::string& range, const std::string& what);
+// --anim NAME|INDEX (with `all_takes`, also "all").
+CLI::Option* add_anim_option(CLI::App& sub, std::string& anim, bool all_takes);
+// -j,--jobs N: worker threads, 0 = one per core.
+CLI::Option* add_jobs_option(CLI::App& sub, int& jobs, const std::string& what);
+// -q,--quiet: no progress and no summary; errors and warnings still print.
+CLI::Option* add_quiet_option(CLI::App& sub, bool& quiet);
+// --json: JSON on stdout instead of text.
+CLI::Option* add_json_option(CLI::App& sub, bool& json);
+
+// Every subcommand, added to `app` (main and the vocabulary test build the same app).
+void add_commands(CLI::App& app, int& exit_code);
 
 // Each subcommand adds itself to `app`; when it runs, it stores its exit code.
 void add_methods_command(CLI::App& app, int& exit_code);

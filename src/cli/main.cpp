@@ -47,15 +47,7 @@ int main(int argc, char** argv) {
   app.fallthrough(false);
 
   int exit_code = kExitOk;
-  add_methods_command(app, exit_code);
-  add_resample_command(app, exit_code);
-  add_synth_command(app, exit_code);
-  add_eval_command(app, exit_code);
-  add_info_command(app, exit_code);
-  add_reduce_command(app, exit_code);
-#if ROTINTERP_HAVE_RENDER
-  add_render_command(app, exit_code);
-#endif
+  add_commands(app, exit_code);
 
   try {
     app.parse(argc, argv);
@@ -70,7 +62,7 @@ int main(int argc, char** argv) {
     std::string message = e.what();
     for (char& c : message)
       if (c == '\n' || c == '\r') c = ' ';
-    std::fprintf(stderr, "rotinterp: %s (run 'rotinterp --help' for usage)\n", message.c_str());
+    std::fprintf(stderr, "rotinterp: %s (%s)\n", message.c_str(), help_hint().c_str());
     return kExitUsage;
   } catch (const std::bad_alloc&) {
     // Unwound: every AtomicOutput on the way removed its temporary.

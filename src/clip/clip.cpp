@@ -151,4 +151,35 @@ void forward_kinematics(const Skeleton& skeleton, const std::vector<Quat>& local
   }
 }
 
+WorldPose rest_pose(const Skeleton& skeleton) {
+  std::vector<Quat> r(skeleton.joints.size());
+  std::vector<Vec3> t(skeleton.joints.size());
+  for (std::size_t i = 0; i < skeleton.joints.size(); ++i) {
+    r[i] = normalized_or_identity(skeleton.joints[i].rest_rotation);
+    t[i] = skeleton.joints[i].offset;
+  }
+  WorldPose pose;
+  forward_kinematics(skeleton, r, t, pose);
+  return pose;
+}
+
+double skeleton_height(const WorldPose& pose) {
+  if (pose.position.empty() && pose.end_site_position.empty()) return 0.0;
+  Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
+  auto grow = [&](const Vec3& p) {
+    if (!p.allFinite()) return;
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  };
+  for (const Vec3& p : pose.position) grow(p);
+  for (const Vec3& p : pose.end_site_position) grow(p);
+  if (!(hi.x() >= lo.x())) return 0.0;
+  return (hi - lo).maxCoeff();
+}
+
+double in_clip_units(const Clip& clip, double metres) {
+  const double m = clip.unit.metres_per_unit;
+  return std::isfinite(m) && m > 0.0 ? metres / m : metres;
+}
+
 }  // namespace rotinterp

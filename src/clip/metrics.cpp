@@ -46,37 +46,6 @@ double RunningError::rms() const { return count ? std::sqrt(sum_sq / static_cast
 
 // ---- skeleton geometry -------------------------------------------------------------
 
-WorldPose rest_pose(const Skeleton& skeleton) {
-  std::vector<Quat> r(skeleton.joints.size());
-  std::vector<Vec3> t(skeleton.joints.size());
-  for (std::size_t i = 0; i < skeleton.joints.size(); ++i) {
-    r[i] = normalized_or_identity(skeleton.joints[i].rest_rotation);
-    t[i] = skeleton.joints[i].offset;
-  }
-  WorldPose pose;
-  forward_kinematics(skeleton, r, t, pose);
-  return pose;
-}
-
-double skeleton_height(const WorldPose& pose) {
-  if (pose.position.empty() && pose.end_site_position.empty()) return 0.0;
-  Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
-  auto grow = [&](const Vec3& p) {
-    if (!p.allFinite()) return;
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  };
-  for (const Vec3& p : pose.position) grow(p);
-  for (const Vec3& p : pose.end_site_position) grow(p);
-  if (!(hi.x() >= lo.x())) return 0.0;
-  return (hi - lo).maxCoeff();
-}
-
-double metres_in_clip_units(const Clip& clip, double metres) {
-  const double scale = (std::isfinite(clip.unit_scale) && clip.unit_scale > 0.0) ? clip.unit_scale : 1.0;
-  return metres / scale;
-}
-
 // ---- rotation error -------------------------------------------------------------------
 
 RotationError rotation_error(const Quat* ref, const Quat* test, std::size_t n, const Vec3& bone_axis_in,

@@ -7,7 +7,10 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cctype>
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <memory>
 #include <sstream>
 #include <thread>
@@ -24,6 +27,31 @@ std::string seconds_text(double s) {
   os.precision(6);
   os << s;
   return os.str();
+}
+
+// "1.5", "120f": a bound as the user wrote it.
+std::string bound_text(double v, bool in_frames) { return seconds_text(v) + (in_frames ? "f" : ""); }
+
+// A --range in seconds from the first frame, clamped to [0, duration] within round-off.
+Result<std::pair<double, double>> range_seconds(const TimeRange& range, const std::optional<Rate>& rate,
+                                                double duration) {
+  const std::string text = "range " + bound_text(range.start, range.start_in_frames) + ":" +
+                           (std::isinf(range.end) ? std::string() : bound_text(range.end, range.end_in_frames));
+  if ((range.start_in_frames || range.end_in_frames) && !rate)
+    return make_error(text + ": the clip has no frame rate, so no frames to count; give the range in seconds");
+  auto seconds = [&](double v, bool in_frames) {
+    return in_frames ? rate->time_of(static_cast<std::int64_t>(v)) : v;
+  };
+  const double ra = seconds(range.start, range.start_in_frames);
+  const double rb = std::isinf(range.end) ? duration : seconds(range.end, range.end_in_frames);
+  const double slack = 1e-9 * std::max(1.0, duration);
+  if (!std::isfinite(ra) || ra < -slack) return make_error(text + " starts before the clip's first frame");
+  if (std::isnan(rb) || rb > duration + slack) {
+    const std::string last = rate ? " / frame " + std::to_string(std::llround(duration * rate->hz())) : "";
+    return make_error(text + " runs past the clip's end (ends at " + seconds_text(duration) + " s" + last + ")");
+  }
+  if (!(rb > ra)) return make_error(text + " is empty: END must be after START");
+  return std::make_pair(std::max(0.0, ra), std::min(duration, rb));
 }
 
 // The time of output frame i in a clip that keeps the source's frame time: what a
@@ -146,6 +174,35 @@ Status resample_joint(const Clip& in, std::size_t j, const std::string& method, 
 
 }  // namespace
 
+Result<TimeRange> parse_time_range(std::string_view text) {
+  const std::string quoted = "--range '" + std::string(text) + "'";
+  const std::string form = quoted + " must be START:END in seconds (1.5:4) or frames (120f:480f); either side may be empty";
+  const std::size_t colon = text.find(':');
+  if (colon == std::string_view::npos || text.find(':', colon + 1) != std::string_view::npos) return make_error(form);
+  TimeRange r;
+  // One side: empty (open), seconds with an optional "s", or whole frames with "f".
+  auto side = [&](std::string_view s, double& value, bool& in_frames) -> Status {
+    if (s.empty()) return Ok{};
+    in_frames = s.back() == 'f';
+    if (in_frames || s.back() == 's') s.remove_suffix(1);
+    const std::string number(s);
+    char* end = nullptr;
+    errno = 0;
+    const double v = std::strtod(number.c_str(), &end);
+    if (number.empty() || end != number.c_str() + number.size() || errno == ERANGE || !std::isfinite(v) ||
+        std::isspace(static_cast<unsigned char>(number[0])))
+      return make_error(form);
+    if (v < 0.0) return make_error(quoted + ": a bound cannot be negative (0 is the first frame)");
+    if (in_frames && (v != std::floor(v) || v > 1e15)) return make_error(quoted + ": frames are whole numbers");
+    value = v;
+    return Ok{};
+  };
+  if (Status s = side(text.substr(0, colon), r.start, r.start_in_frames); !s) return s.failure();
+  if (Status s = side(text.substr(colon + 1), r.end, r.end_in_frames); !s) return s.failure();
+  if (r.start_in_frames == r.end_in_frames && !(r.end > r.start)) return make_error(quoted + ": END must be after START");
+  return r;
+}
+
 Result<Clip> resample_clip(const Clip& in, const ResampleOptions& options) {
   ResampleOptions opt = options;
   if (Status s = in.validate(); !s) return make_error(s.error());
@@ -156,13 +213,13 @@ Result<Clip> resample_clip(const Clip& in, const ResampleOptions& options) {
   // Methods per joint.
   const std::size_t n = in.skeleton.joints.size();
   if (!find_method(opt.method))
-    return make_error("unknown method '" + opt.method + "' (valid: " + method_names() + ")");
+    return make_error(unknown_method_message(opt.method));
   std::vector<std::string> method(n, opt.method);
   for (const auto& [joint, name] : opt.method_for) {
     const int j = in.skeleton.find(joint);
     if (j < 0) return make_error("no joint '" + joint + "' in the clip (method override " + joint + "=" + name + ")");
     if (!find_method(name))
-      return make_error("unknown method '" + name + "' for joint '" + joint + "' (valid: " + method_names() + ")");
+      return make_error(unknown_method_message(name) + " for joint '" + joint + "'");
     method[static_cast<std::size_t>(j)] = name;
   }
 
@@ -185,13 +242,10 @@ Result<Clip> resample_clip(const Clip& in, const ResampleOptions& options) {
   // The range, in seconds from the first frame.
   double a = 0.0, b = duration;
   if (opt.range) {
-    const double slack = 1e-9 * std::max(1.0, duration);
-    const double ra = opt.range->start, rb = std::isinf(opt.range->end) ? duration : opt.range->end;
-    if (!std::isfinite(ra) || std::isnan(rb) || ra < -slack || rb > duration + slack || !(rb > ra))
-      return make_error("range " + seconds_text(ra) + ":" + seconds_text(rb) + " s is outside the clip (0:" +
-                        seconds_text(duration) + " s)");
-    a = std::max(0.0, ra);
-    b = std::min(duration, rb);
+    auto r = range_seconds(*opt.range, grid ? grid->rate : std::nullopt, duration);
+    if (!r) return r.failure();
+    a = r->first;
+    b = r->second;
   }
 
   auto too_many = [n](std::size_t frames) {
@@ -203,7 +257,7 @@ Result<Clip> resample_clip(const Clip& in, const ResampleOptions& options) {
   out.name = in.name;
   out.skeleton = in.skeleton;
   out.bvh_layout = in.bvh_layout;
-  out.unit_scale = in.unit_scale;
+  out.unit = in.unit;
   out.source_format = in.source_format;
   out.source_meshes = in.source_meshes;
   out.file_rate_hz = in.file_rate_hz;

@@ -43,7 +43,7 @@ RunOptions run_options(const EvalOptions& e) {
   return {o.methods,          o.keep_every,           o.subframe,
           o.shell_distance_m, static_cast<bool>(e.truth_for), e.animation,
           o.min_frames,       o.feet.feet,            o.feet.contact_height_m,
-          o.feet.contact_speed_mps, o.feet.floor_m};
+          o.feet.contact_speed_mps, o.feet.floor_m, e.unit};
 }
 
 // errors.csv into an unnamed temporary, one clip's rows at a time; committed with
@@ -164,9 +164,11 @@ Result<std::vector<std::string>> files_of_shard(const EvalOptions& opt) {
 
 // The takes of `file` that `animation` selects (EvalOptions::animation), each with
 // its clip id, in the order of their ids.
-Result<std::vector<std::pair<std::string, Clip>>> read_takes(const std::string& file, const std::string& animation) {
+Result<std::vector<std::pair<std::string, Clip>>> read_takes(const std::string& file, const std::string& animation,
+                                                             std::optional<double> unit) {
   ReadOptions ro;
   ro.animation = animation == "all" ? "" : animation;
+  ro.unit = unit;
   auto info = inspect_clip(file, ro);
   if (!info) return info.failure();
   const std::vector<AnimationSummary>& anims = info->animations;
@@ -209,14 +211,14 @@ std::string per_frame_csv(const ClipReference& R, const PerFrameRequest& q, cons
 
 // Reads a file's takes and prepares their references, into its slot.
 void prepare_clip(const std::string& file, const EvalOptions& opt, ClipSlot& slot) {
-  auto takes = read_takes(file, opt.animation);
+  auto takes = read_takes(file, opt.animation, opt.unit);
   if (!takes) {
     // A mesh found next to the clips is not an error. The reader's error kind
     // says so: no second look at a file that may crash its importer.
     if (found_in_directory(file, opt.inputs) && takes.error_kind() == ErrorKind::no_animation)
       slot.skipped = true;
     else
-      slot.load_failure = EvalFailure{file, takes.error()};
+      slot.load_failure = EvalFailure{file, takes.error(), takes.error_kind()};
     return;
   }
   for (auto& [id, clip] : *takes) {

@@ -15,15 +15,15 @@ enum Col {
   kClip, kMethod, kKeepEvery, kJoint, kFrames, kMeanDeg, kRmsDeg, kP95Deg, kMaxDeg, kSwingRmsDeg, kTwistRmsDeg,
   kPosRms, kPosMax, kPosRmsPct, kPosMaxPct, kShellRms, kShellMax, kAccRms, kAccRmsRef, kVelJumpMax, kAccJumpMax,
   kSamples, kHeight, kKind, kKeys, kMotionDeg, kContactFrames, kSkateFrames, kSkateSpeed, kContactFramesRef,
-  kSkateFramesRef, kSkateSpeedRef, kColumnCount
+  kSkateFramesRef, kSkateSpeedRef, kMetresPerUnit, kUnit, kColumnCount
 };
 
 constexpr const char* kColumnNames[kColumnCount] = {
     "clip", "method", "keep_every", "joint", "frames", "mean_deg", "rms_deg", "p95_deg", "max_deg",
-    "swing_rms_deg", "twist_rms_deg", "pos_rms", "pos_max", "pos_rms_pct", "pos_max_pct", "shell_rms",
-    "shell_max", "acc_rms_dps2", "acc_rms_ref_dps2", "vel_jump_max_dps", "acc_jump_max_dps2", "samples",
-    "height", "kind", "keys", "motion_deg", "contact_frames", "skate_frames", "skate_speed_mps",
-    "contact_frames_ref", "skate_frames_ref", "skate_speed_ref_mps"};
+    "swing_rms_deg", "twist_rms_deg", "pos_rms_m", "pos_max_m", "pos_rms_pct", "pos_max_pct", "shell_rms_m",
+    "shell_max_m", "acc_rms_dps2", "acc_rms_ref_dps2", "vel_jump_max_dps", "acc_jump_max_dps2", "samples",
+    "height_m", "kind", "keys", "motion_deg", "contact_frames", "skate_frames", "skate_speed_mps",
+    "contact_frames_ref", "skate_frames_ref", "skate_speed_ref_mps", "metres_per_unit", "unit"};
 
 bool is_joint_only(int c) {
   return (c >= kMeanDeg && c <= kTwistRmsDeg) || (c >= kShellRms && c <= kAccJumpMax) || c == kKeys ||
@@ -52,7 +52,7 @@ constexpr Measured kMeasured[] = {
     {kMotionDeg, &ErrorRow::motion_deg},     {kContactFrames, &ErrorRow::contact_frames},
     {kSkateFrames, &ErrorRow::skate_frames}, {kSkateSpeed, &ErrorRow::skate_speed},
     {kContactFramesRef, &ErrorRow::contact_frames_ref}, {kSkateFramesRef, &ErrorRow::skate_frames_ref},
-    {kSkateSpeedRef, &ErrorRow::skate_speed_ref}};
+    {kSkateSpeedRef, &ErrorRow::skate_speed_ref}, {kMetresPerUnit, &ErrorRow::metres_per_unit}};
 
 // Shortest text that reads back as the same double; finite by construction.
 std::string number(double v) { return fmt::format("{}", std::isfinite(v) ? v : 0.0); }
@@ -95,11 +95,11 @@ std::string format_error_row(const ErrorRow& r) {
     if (!is_empty_for(r, c)) line += number(values[c]);
   }
   line += "," + std::to_string(r.samples) + "," + number(r.height) + "," + (r.end_site ? "end_site" : "joint");
-  for (int c = kKind + 1; c < kColumnCount; ++c) {
+  for (int c = kKind + 1; c < kUnit; ++c) {
     line += ',';
     if (!is_empty_for(r, c)) line += number(values[c]);
   }
-  return line;
+  return line + "," + csv_field(r.unit);
 }
 
 std::string csv_field(std::string_view s) {
@@ -165,6 +165,7 @@ Result<ErrorRow> ErrorRowParser::parse(std::string_view line) const {
   r.clip = field(kClip);
   r.method = field(kMethod);
   r.joint = field(kJoint);
+  r.unit = field(kUnit);
   if (r.clip.empty() || r.method.empty() || r.joint.empty()) return make_error("empty clip, method or joint");
   const std::string& kind = field(kKind);
   if (kind != "joint" && kind != "end_site") return make_error("kind is '" + kind + "', not joint or end_site");

@@ -254,7 +254,7 @@ Result<ClipReference> prepare_reference(const Clip& clip, const std::string& cli
   R.height = skeleton_height(rest_pose(skel));
   if (!(R.height > 0.0) && nf > 0) R.height = skeleton_height(R.world[0]);
   if (!(R.height > 0.0)) R.height = 1.0;
-  R.shell_distance = metres_in_clip_units(clip, options.shell_distance_m);
+  R.shell_distance = in_clip_units(clip, options.shell_distance_m);
   R.bone_axis = bone_axes(skel);
 
   // ---- the source's keys and range of motion, per joint ----
@@ -274,7 +274,8 @@ Result<ClipReference> prepare_reference(const Clip& clip, const std::string& cli
     if (!feet) return make_error(clip_id + ": " + feet.error());
     R.feet = std::move(*feet);
   }
-  R.metres_per_unit = metres_per_unit(clip, R.height, R.unit_estimated);
+  R.metres_per_unit = clip.unit.metres_per_unit;
+  R.unit = describe_unit(clip.unit);
   if (options.feet.floor_m) {
     R.floor = *options.feet.floor_m / R.metres_per_unit;
   } else if (!R.feet.empty() && nf > 0) {
@@ -320,6 +321,7 @@ Result<std::vector<ErrorRow>> evaluate_method(const ClipReference& R, const std:
   const std::size_t nj = skel.joints.size(), ne = skel.end_sites.size();
   const std::size_t nf = R.frames.size(), ns = R.samples;
   const double pct = 100.0 / R.height;
+  const double mpu = R.metres_per_unit;  // the rows are in metres
   for (int n : options.keep_every)
     if (n < 1) return make_error(R.clip_id + ": keep_every must be at least 1");
 
@@ -447,17 +449,19 @@ Result<std::vector<ErrorRow>> evaluate_method(const ClipReference& R, const std:
       r.max_deg = e.angle.max * kRadToDeg;
       r.swing_rms_deg = e.swing.rms() * kRadToDeg;
       r.twist_rms_deg = e.twist.rms() * kRadToDeg;
-      r.pos_rms = pose.joint_position[j].rms();
-      r.pos_max = pose.joint_position[j].max;
-      r.pos_rms_pct = r.pos_rms * pct;
-      r.pos_max_pct = r.pos_max * pct;
-      r.shell_rms = pose.joint_shell[j].rms();
-      r.shell_max = pose.joint_shell[j].max;
+      r.pos_rms = pose.joint_position[j].rms() * mpu;
+      r.pos_max = pose.joint_position[j].max * mpu;
+      r.pos_rms_pct = pose.joint_position[j].rms() * pct;
+      r.pos_max_pct = pose.joint_position[j].max * pct;
+      r.shell_rms = pose.joint_shell[j].rms() * mpu;
+      r.shell_max = pose.joint_shell[j].max * mpu;
       r.acc_rms = smooth[j].rms() * kRadToDeg;
       r.acc_rms_ref = R.reference_acc_rms[j] * kRadToDeg;
       r.vel_jump_max = jumps.velocity * kRadToDeg;
       r.acc_jump_max = jumps.acceleration * kRadToDeg;
-      r.height = R.height;
+      r.height = R.height * mpu;
+      r.metres_per_unit = mpu;
+      r.unit = R.unit;
       r.keys = R.keys[j];
       r.motion_deg = R.motion_deg[j];
       rows.push_back(std::move(r));
@@ -485,11 +489,13 @@ Result<std::vector<ErrorRow>> evaluate_method(const ClipReference& R, const std:
       r.end_site = true;
       r.frames = nf;
       r.samples = ns;
-      r.pos_rms = pose.end_site_position[e].rms();
-      r.pos_max = pose.end_site_position[e].max;
-      r.pos_rms_pct = r.pos_rms * pct;
-      r.pos_max_pct = r.pos_max * pct;
-      r.height = R.height;
+      r.pos_rms = pose.end_site_position[e].rms() * mpu;
+      r.pos_max = pose.end_site_position[e].max * mpu;
+      r.pos_rms_pct = pose.end_site_position[e].rms() * pct;
+      r.pos_max_pct = pose.end_site_position[e].max * pct;
+      r.height = R.height * mpu;
+      r.metres_per_unit = mpu;
+      r.unit = R.unit;
       rows.push_back(std::move(r));
     }
   }

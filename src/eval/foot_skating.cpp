@@ -92,13 +92,6 @@ Result<std::vector<std::size_t>> feet_by_name(const Skeleton& skeleton, const st
   return feet;
 }
 
-double metres_per_unit(const Clip& clip, double skeleton_height, bool& estimated) {
-  estimated = clip.source_format == "bvh";
-  if (!estimated) return std::isfinite(clip.unit_scale) && clip.unit_scale > 0.0 ? clip.unit_scale : 1.0;
-  return std::isfinite(skeleton_height) && skeleton_height > 0.0 ? kAssumedSkeletonHeightMetres / skeleton_height
-                                                                  : 1.0;
-}
-
 FootContact foot_contact(const Vec3* position, const double* times, std::size_t n, double floor,
                          double metres_per_unit, const FootContactOptions& options) {
   FootContact c;

@@ -42,8 +42,11 @@ int dash(std::size_t i) { return 1 + static_cast<int>(i % 8); }  // PLplot's eig
 // Character heights relative to PLplot's default: text, and the markers.
 constexpr double kTextScale = 0.8, kMarkerScale = 0.6;
 
-// The y range of a log₁₀ axis over the positive values (decades, `headroom` decades
-// above for a legend inside the frame); `any` false when none is positive.
+// Angles stop at 180°: no angle axis runs past it (bar `headroom`).
+const double kMaxLogDeg = std::log10(180.0);
+
+// The y range of a log₁₀ axis over the positive values (decades, capped at 180°,
+// `headroom` decades above for a legend inside the frame); `any` false when none is positive.
 struct LogRange {
   bool log = false;
   bool any = false;
@@ -58,7 +61,7 @@ LogRange log_range(const std::vector<double>& values, double headroom) {
   r.any = std::isfinite(lo);
   if (!r.any) lo = 0, hi = 1;
   r.lo = std::floor(lo);
-  r.hi = std::max(std::ceil(hi), r.lo + 1) + headroom;
+  r.hi = std::min(std::max(std::ceil(hi), r.lo + 1), std::max(kMaxLogDeg, hi)) + headroom;
   return r;
 }
 
@@ -155,8 +158,9 @@ void log_labels(PLINT axis, PLFLT value, char* label, PLINT length, PLPointer) {
   std::snprintf(label, static_cast<std::size_t>(length), "%g", v);
 }
 
-// The methods' legend, inside the frame at `position` (PL_POSITION_*), in `columns` columns.
-void legend(const std::vector<std::string>& names, PLINT position, int columns) {
+// The methods' legend at `position` (PL_POSITION_*), in `columns` columns, `y_offset`
+// (fraction of the viewport's height) from the edge.
+void legend(const std::vector<std::string>& names, PLINT position, int columns, double y_offset = 0.01) {
   const std::size_t n = names.size();
   std::vector<PLINT> opt(n, PL_LEGEND_LINE | PL_LEGEND_SYMBOL), colours(n), lstyle(n), nsym(n, 1);
   std::vector<PLFLT> widths(n, 2.0), sscale(n, 0.8);
@@ -171,7 +175,7 @@ void legend(const std::vector<std::string>& names, PLINT position, int columns) 
   const PLINT ncol = std::max(1, columns), nrow = static_cast<PLINT>((static_cast<int>(n) + ncol - 1) / ncol);
   PLFLT w = 0, h = 0;
   pllegend(&w, &h, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX | (ncol > 1 ? PL_LEGEND_ROW_MAJOR : 0), position, 0.01,
-           0.01, ncol > 1 ? 0.04 : 0.1, 0, kText, 1, nrow, ncol, static_cast<PLINT>(n), opt.data(), 0.8, 0.75, 1.8,
+           y_offset, ncol > 1 ? 0.04 : 0.1, 0, kText, 1, nrow, ncol, static_cast<PLINT>(n), opt.data(), 0.8, 0.75, 1.8,
            0.0, text_colours.data(), text.data(), nullptr, nullptr,
            nullptr, nullptr, colours.data(), lstyle.data(), widths.data(), colours.data(), sscale.data(), nsym.data(),
            sym.data());
@@ -253,17 +257,19 @@ Status spacing_plot(const Summary& s) {
   if (!std::isfinite(xmin)) xmin = 0, xmax = 1;
   const double dx = 0.05;  // sideways offset between methods, log₂ units
   const double half = dx * 0.5 * static_cast<double>(methods.size());
-  plvpor(0.07, 0.955, 0.12, 0.86);
+  // The legend goes below the panels (issue 28: room made for it inside the first
+  // panel stretched its axis to ~30 000°).
+  constexpr double kBottom = 0.24, kTop = 0.86;
+  plvpor(0.07, 0.955, kBottom, kTop);
   plmtex("t", 3.2, 0.5, 0.5,
          fmt::format("Angular error vs key spacing — {} clip{}", s.clips, s.clips == 1 ? "" : "s").c_str());
   plmtex("b", 3.2, 0.5, 0.5, "keys every N frames (log scale)");
   for (int p = 0; p < 3; ++p) {
     std::vector<double> values;
     for (const SummaryEntry& e : s.entries) values.push_back(e.*panels[p].value);
-    LogRange yr = log_range(values, 0.0);
-    if (p == 0) yr.hi = yr.lo + (yr.hi - yr.lo) / 0.55;  // the top 45 % for the legend
+    const LogRange yr = log_range(values, 0.0);
     const double left = 0.08 + 0.31 * p;
-    plvpor(left, left + 0.255, 0.12, 0.86);
+    plvpor(left, left + 0.255, kBottom, kTop);
     plwind(xmin - 0.3 - half, xmax + 0.3 + half, yr.lo, yr.hi);
     log_axes(true);
     plmtex("t", 1.0, 0.5, 0.5, panels[p].title);
@@ -278,8 +284,10 @@ Status spacing_plot(const Summary& s) {
       draw_series(mi, x, y, yr, true);
     }
     if (!yr.any) plmtex("t", -4.0, 0.5, 0.5, "all zero");
-    if (p == 0) legend(methods, PL_POSITION_INSIDE | PL_POSITION_TOP | PL_POSITION_LEFT, 1);
   }
+  plvpor(0.07, 0.955, kBottom, kTop);
+  // Below the tick labels and the x axis title (about 4.5 lines of text).
+  legend(methods, PL_POSITION_OUTSIDE | PL_POSITION_BOTTOM, std::min<int>(5, static_cast<int>(methods.size())), 0.17);
   return Ok{};
 }
 

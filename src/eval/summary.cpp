@@ -46,6 +46,8 @@ std::vector<ClipResult> clip_results_of(const std::vector<ErrorRow>& rows) {
       c.method = r.method;
       c.keep_every = r.keep_every;
       c.frames = r.frames;
+      c.metres_per_unit = r.metres_per_unit;
+      c.unit = r.unit;
       out.push_back(std::move(c));
       sums.emplace_back();
     }
@@ -353,6 +355,8 @@ json clips_json(const Summary& s) {
       clips.push_back({{"clip", c.clip},
                        {"frames", c.frames},
                        {"joints", c.joints},
+                       {"metres_per_unit", c.metres_per_unit},
+                       {"unit", c.unit},
                        {"keys", c.keys},
                        {"motion_deg", c.motion_deg},
                        {"results", json::array()}});
@@ -394,7 +398,8 @@ std::string summary_json(const RunRecord& r, const Summary& summary) {
               {"feet", r.options.feet},
               {"contact_height_m", r.options.contact_height_m},
               {"contact_speed_mps", r.options.contact_speed_mps},
-              {"floor_m", r.options.floor_m ? json(*r.options.floor_m) : json(nullptr)}}},
+              {"floor_m", r.options.floor_m ? json(*r.options.floor_m) : json(nullptr)},
+              {"unit_metres_per_unit", r.options.unit ? json(*r.options.unit) : json(nullptr)}}},
             {"started", r.started},
             {"seconds", r.seconds},
             {"failed", failed},
@@ -419,6 +424,7 @@ std::string summary_json(const RunRecord& r, const Summary& summary) {
       "intervals over all feet of all clips";
   j["clips"] = clips_json(summary);
   j["units"] = {{"angles", "degrees"},
+                {"distances", "metres, through each clip's unit (clips[].unit)"},
                 {"pct", "percent of each clip's skeleton height"},
                 {"acc", "deg/s^2"},
                 {"vel", "deg/s"},
@@ -452,6 +458,8 @@ Result<RunRecord> read_summary_json(const std::filesystem::path& file) {
     r.options.contact_height_m = o.value("contact_height_m", 0.0);
     r.options.contact_speed_mps = o.value("contact_speed_mps", 0.0);
     if (o.contains("floor_m") && !o["floor_m"].is_null()) r.options.floor_m = o["floor_m"].get<double>();
+    if (o.contains("unit_metres_per_unit") && !o["unit_metres_per_unit"].is_null())
+      r.options.unit = o["unit_metres_per_unit"].get<double>();
     for (const auto& c : j.value("too_short", json::array()))
       r.too_short.push_back({c.at("clip").get<std::string>(), c.at("frames").get<std::size_t>(),
                              c.at("keep_every_skipped").get<std::vector<int>>()});

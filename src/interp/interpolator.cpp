@@ -9,6 +9,8 @@
 #include "rotinterp/interp/slerp.h"
 #include "rotinterp/interp/squad.h"
 
+#include <algorithm>
+
 namespace rotinterp {
 
 void Interpolator::evaluate(const double* t, std::size_t n, Quat* out) const {
@@ -47,10 +49,51 @@ const std::vector<MethodInfo>& methods() {
   return all;
 }
 
+namespace {
+
+char lower(char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c; }
+
+bool equal_ignoring_case(std::string_view a, std::string_view b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (lower(a[i]) != lower(b[i])) return false;
+  return true;
+}
+
+// Levenshtein distance, case-insensitive (names are a few characters: O(|a|·|b|) is nothing).
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (lower(a[i - 1]) == lower(b[j - 1]) ? 0 : 1)});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+}  // namespace
+
 const MethodInfo* find_method(std::string_view name) {
   for (const MethodInfo& m : methods())
-    if (m.name == name) return &m;
+    if (equal_ignoring_case(m.name, name)) return &m;
   return nullptr;
+}
+
+std::string unknown_method_message(std::string_view name) {
+  const MethodInfo* best = nullptr;
+  std::size_t best_distance = 0;
+  for (const MethodInfo& m : methods()) {
+    const std::size_t d = edit_distance(name, m.name);
+    if (!best || d < best_distance) best = &m, best_distance = d;
+  }
+  const std::size_t allowed = std::max<std::size_t>(2, name.size() / 3);
+  const std::string guess = best && best_distance <= allowed ? "did you mean " + best->name + "? " : "";
+  return "unknown method '" + std::string(name) + "' (" + guess + "valid: " + method_names() + ")";
 }
 
 std::string method_names() {
@@ -61,7 +104,7 @@ std::string method_names() {
 
 Result<std::unique_ptr<Interpolator>> make_interpolator(std::string_view method, const RotationTrack& track) {
   const MethodInfo* m = find_method(method);
-  if (!m) return make_error("unknown method '" + std::string(method) + "' (valid: " + method_names() + ")");
+  if (!m) return make_error(unknown_method_message(method));
   // Every method validates the track itself (rules 1–3 of RotationTrack; signs
   // are aligned there, so keys may come in either hemisphere).
   return m->make(track);

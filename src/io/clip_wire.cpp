@@ -14,7 +14,7 @@ namespace rotinterp::wire {
 namespace {
 
 // Also the format's version: bytes from another build fail here, not in a field.
-constexpr std::string_view kMagic = "rotinterp-clip-wire-2";
+constexpr std::string_view kMagic = "rotinterp-clip-wire-3";
 
 class Writer {
  public:
@@ -172,7 +172,9 @@ void put(Writer& w, const Clip& clip) {
   }
   w.f64(clip.frame_time);
   w.str(frame_time_text(clip));
-  w.f64(clip.unit_scale);
+  w.f64(clip.unit.metres_per_unit);
+  w.u8(static_cast<std::uint8_t>(clip.unit.origin));
+  w.str(clip.unit.reason);
   w.str(clip.source_format);
   w.u64(clip.source_meshes);
   w.f64(clip.file_rate_hz);
@@ -221,7 +223,11 @@ void get(Reader& r, Clip& clip) {
   clip.frame_time = r.f64();
   layout.frame_time_text = r.str();
   if (has_layout || !layout.frame_time_text.empty()) clip.bvh_layout = std::make_shared<const BvhLayout>(std::move(layout));
-  clip.unit_scale = r.f64();
+  clip.unit.metres_per_unit = r.f64();
+  const std::uint8_t origin = r.u8();
+  if (origin > static_cast<std::uint8_t>(UnitOrigin::assumed)) r.fail();
+  clip.unit.origin = static_cast<UnitOrigin>(origin);
+  clip.unit.reason = r.str();
   clip.source_format = r.str();
   clip.source_meshes = r.size();
   clip.file_rate_hz = r.f64();

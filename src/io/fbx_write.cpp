@@ -1,6 +1,7 @@
 #include "fbx_write.h"
 
 #include "fbx_encode.h"
+#include "fbx_rest.h"
 #include "rotinterp/clip/bvh_layout.h"
 #include "rotinterp/clip/frames.h"
 #include "rotinterp/clip/sampling.h"
@@ -188,6 +189,8 @@ Result<std::string> encode_fbx(const Clip& clip, FbxEncoding encoding) {
       }
   }
 
+  const std::vector<Vec3> rest_translation = fbx_rest_translations(clip);  // Blender-safe (fbx_rest.h)
+
   Document doc(encoding);
   FbxEncoder& e = doc.enc();
   const std::string creator = std::string("rotinterp ") + ROTINTERP_VERSION;
@@ -219,8 +222,8 @@ Result<std::string> encode_fbx(const Clip& clip, FbxEncoding encoding) {
                          {"FrontAxisSign", 1}, {"CoordAxis", 0}, {"CoordAxisSign", 1}, {"OriginalUpAxis", 1},
                          {"OriginalUpAxisSign", 1}})
     doc.p_int(name, "int", "Integer", v);
-  doc.p_double("UnitScaleFactor", 100.0 * clip.unit_scale);
-  doc.p_double("OriginalUnitScaleFactor", 100.0 * clip.unit_scale);
+  doc.p_double("UnitScaleFactor", 100.0 * clip.unit.metres_per_unit);
+  doc.p_double("OriginalUnitScaleFactor", 100.0 * clip.unit.metres_per_unit);
   doc.p("TimeMode", "enum", "", "").i32(rate ? fbx_time_mode(rate->num, rate->den) : kTimeModeDefault);
   e.end();
   doc.p_time("TimeSpanStart", first);
@@ -305,7 +308,7 @@ Result<std::string> encode_fbx(const Clip& clip, FbxEncoding encoding) {
     doc.p_int("RotationActive", "bool", "", 1);
     doc.p_int("InheritType", "enum", "", 1);
     doc.p_int("DefaultAttributeIndex", "int", "Integer", 0);
-    doc.p_vec("Lcl Translation", joint.offset);
+    doc.p_vec("Lcl Translation", rest_translation[j]);
     doc.p_vec("Lcl Rotation", rest_euler[j]);
     doc.p_vec("Lcl Scaling", Vec3::Ones());
     e.end();

@@ -2,13 +2,15 @@
 // on request. What it writes (README "Formats" has the user's view):
 //  * every joint as a `Model` of type `LimbNode` with a `NodeAttribute` of type
 //    `LimbNode` (TypeFlags "Skeleton"), parented through `Connections` (roots under
-//    the scene root), its rest transform as Lcl Translation / Lcl Rotation. Rest
+//    the scene root), its rest transform as Lcl Translation / Lcl Rotation (a
+//    translated joint on its parent's +Y axis moved off it by 1e-5 of the
+//    skeleton's reach, so that Blender keeps its motion: fbx_rest.h). Rest
 //    rotations are baked: no PreRotation is written, Lcl Rotation carries the whole
 //    local rotation, so every reader composes the same transform;
 //  * one AnimationStack and AnimationLayer spanning exactly the clip's first to last
 //    key; `GlobalSettings` with the clip's rate (TimeMode where FBX has a mode for
 //    it, else custom + CustomFrameRate), Y up, Z front, X right (right-handed,
-//    as BVH), UnitScaleFactor = centimetres per clip unit (100 × unit_scale);
+//    as BVH), UnitScaleFactor = centimetres per clip unit (100 × metres per unit);
 //  * per joint an AnimationCurveNode "R" (and "T" where the joint has a translation
 //    track) with one AnimationCurve per axis and a key at every key time of the
 //    clip (the union over all joints), linear; Euler angles in degrees in the

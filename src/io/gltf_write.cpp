@@ -2,7 +2,7 @@
 
 #include "little_endian.h"
 
-#include "rotinterp/clip/metrics.h"
+#include "rotinterp/clip/clip.h"
 #include "rotinterp/clip/resample.h"
 #include "rotinterp/clip/translation_curve.h"
 #include "rotinterp/interp/gltf_cubic.h"
@@ -11,8 +11,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cctype>
 #include <cstdint>
 #include <cstdio>
+#include <fstream>
 #include <cstring>
 #include <optional>
 
@@ -149,7 +151,7 @@ Result<Document> build(const Clip& clip, const GltfKeys& keys) {
   const std::vector<double> times = keys.own_times ? std::vector<double>{} : all_key_times(clip);
   // glTF's unit is the metre: translations are converted with the clip's unit scale
   // (an FBX in centimetres keeps its real size; BVH, which has none, is taken as is).
-  const double metres = 1.0 / metres_in_clip_units(clip, 1.0);
+  const double metres = 1.0 / in_clip_units(clip, 1.0);
   Builder b;
 
   const int input = keys.own_times ? -1 : time_accessor(b, times);
@@ -223,6 +225,26 @@ Result<Document> build(const Clip& clip, const GltfKeys& keys) {
   return Document{std::move(doc), std::move(b.bin)};
 }
 
+// The buffer an existing .gltf at `path` names, when it is one this writer named
+// (STEM-<16 hex>.bin beside it): a re-run replaces it instead of leaving it behind.
+// Anything else (no file, another writer's .gltf, a shared buffer name) is left alone.
+std::optional<std::filesystem::path> previous_buffer(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  const nlohmann::json old = nlohmann::json::parse(in, nullptr, false);
+  if (old.is_discarded() || !old.contains("buffers") || !old["buffers"].is_array() || old["buffers"].size() != 1)
+    return std::nullopt;
+  const nlohmann::json& uri = old["buffers"][0]["uri"];
+  if (!uri.is_string()) return std::nullopt;
+  const std::string name = uri.get<std::string>(), stem = path.stem().string() + "-";
+  if (name.size() != stem.size() + 16 + 4 || name.compare(0, stem.size(), stem) != 0 ||
+      name.compare(name.size() - 4, 4, ".bin") != 0)
+    return std::nullopt;
+  for (std::size_t i = stem.size(); i < stem.size() + 16; ++i)
+    if (!std::isxdigit(static_cast<unsigned char>(name[i]))) return std::nullopt;
+  return std::filesystem::path(path).replace_filename(name);
+}
+
 }  // namespace
 
 Status write_gltf(const Clip& clip, const std::filesystem::path& path, bool binary, const GltfKeys& keys) {
@@ -253,7 +275,8 @@ Status write_gltf(const Clip& clip, const std::filesystem::path& path, bool bina
   }
   // The buffer is named by its bytes: a .gltf never names a buffer another run
   // wrote. Both are written and synced to temporaries first, then committed
-  // together (buffer first), so a failure leaves the previous pair as it was.
+  // together (buffer first), so a failure leaves the previous pair as it was; once
+  // the new pair is in place, the buffer the replaced .gltf named is removed.
   char hash[17];
   std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(fnv1a(doc->buffer)));
   const std::filesystem::path bin_path = std::filesystem::path(path).replace_filename(path.stem().string() + "-" + hash + ".bin");
@@ -265,7 +288,11 @@ Status write_gltf(const Clip& clip, const std::filesystem::path& path, bool bina
   if (Status s = gltf_out.write(json.data(), json.size()); !s) return make_error(label + ": " + s.error());
   if (Status s = bin_out.finish(); !s) return make_error(label + ": " + s.error());
   if (Status s = gltf_out.finish(); !s) return s;
-  return commit_together({&bin_out, &gltf_out});
+  const std::optional<std::filesystem::path> old_bin = previous_buffer(path);
+  if (Status s = commit_together({&bin_out, &gltf_out}); !s) return s;
+  std::error_code ec;
+  if (old_bin && *old_bin != bin_path) std::filesystem::remove(*old_bin, ec);  // a leftover at worst
+  return Ok{};
 }
 
 }  // namespace rotinterp

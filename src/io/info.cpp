@@ -34,6 +34,13 @@ bool uniform(const std::vector<double>& t) {
 
 }  // namespace
 
+std::string static_scene_contents(const std::string& no_animation_error) {
+  const std::size_t at = no_animation_error.rfind(std::string("(") + kHoldsPrefix);
+  if (at == std::string::npos || no_animation_error.back() != ')') return "";
+  const std::size_t from = at + 1 + std::string(kHoldsPrefix).size();
+  return no_animation_error.substr(from, no_animation_error.size() - 1 - from);
+}
+
 std::vector<std::string> clip_oddities(const Clip& clip) {
   std::vector<std::string> out;
   const Skeleton& sk = clip.skeleton;

@@ -2,6 +2,7 @@
 // Python module (rotinterp.info), so that both give the same document.
 #include "rotinterp/clip/bvh_layout.h"
 #include "rotinterp/clip/frames.h"
+#include "rotinterp/clip/units.h"
 #include "rotinterp/io/info.h"
 
 #include <nlohmann/json.hpp>
@@ -19,8 +20,7 @@ std::string clip_info_json(const std::string& path, const ClipFileInfo& info) {
   const double duration = clip.end_time() - clip.start_time();
   // The rate every command uses (resample too): BVH ".0333330" is 30 Hz, NTSC 30000/1001.
   const std::optional<Rate> rate = clip_rate(clip);
-  // BVH has no unit.
-  const bool has_unit = info.format != "bvh";
+  const double size_m = first_pose_size(clip) * clip.unit.metres_per_unit;
   nlohmann::json out;
   out["file"] = path;
   out["format"] = info.format;
@@ -39,7 +39,12 @@ std::string clip_info_json(const std::string& path, const ClipFileInfo& info) {
   out["start_s"] = clip.start_time();
   out["end_s"] = clip.end_time();
   out["duration_s"] = duration;
-  out["unit_scale_m"] = has_unit ? nlohmann::json(clip.unit_scale) : nlohmann::json(nullptr);
+  // The same shape as --summary's rows give (cmd_info.cpp).
+  out["unit"] = {{"name", unit_name(clip.unit.metres_per_unit)},
+                 {"metres_per_unit", clip.unit.metres_per_unit},
+                 {"origin", unit_origin_name(clip.unit.origin)},
+                 {"reason", clip.unit.reason}};
+  out["figure_size_m"] = size_m;
   out["folded_helpers"] = info.folded_helpers;
   nlohmann::json joints = nlohmann::json::array();
   nlohmann::json translated = nlohmann::json::array();

@@ -48,6 +48,26 @@ Result<ClipFileInfo> load(const fs::path& path, const ReadOptions& options) {
   return info;
 }
 
+// The clip's unit, decided once for every reader (clip/units.h): FBX states its own
+// (the importer read UnitScaleFactor); glTF is metres by its spec and Collada's
+// <unit> is applied by assimp, so both are in metres; any other file states none.
+void settle_unit(ClipFileInfo& info, const fs::path& path, const ReadOptions& options) {
+  ClipUnit& unit = info.clip.unit;
+  if (unit.origin != UnitOrigin::declared && (info.format == "gltf" || info.format == "glb" || info.format == "dae"))
+    unit = {1.0, UnitOrigin::declared, "declared by the format: " + info.format + " is in metres"};
+  if (unit.origin == UnitOrigin::declared) {
+    if (options.unit && options.on_warning)
+      options.on_warning(path.string() + ": the file declares its unit (" + unit_name(unit.metres_per_unit) +
+                         "); --unit is ignored");
+    return;
+  }
+  if (options.unit) {
+    unit = {*options.unit, UnitOrigin::given, "given: --unit " + unit_name(*options.unit)};
+    return;
+  }
+  unit = infer_unit(info.clip);
+}
+
 }  // namespace
 
 bool importable_extension(std::string extension) {
@@ -69,7 +89,9 @@ bool importable_extension(std::string extension) {
 
 Result<ClipFileInfo> inspect_clip(const fs::path& path, const ReadOptions& options) {
   try {
-    return load(path, options);
+    Result<ClipFileInfo> info = load(path, options);
+    if (info) settle_unit(*info, path, options);
+    return info;
   } catch (const std::bad_alloc&) {
     return make_error(path.string() + ": out of memory while reading");
   } catch (const std::exception& e) {

@@ -60,6 +60,26 @@ Result<std::size_t> select_animation(const aiScene* scene, const std::string& wa
   return make_error(label + ": no animation named '" + want + "' (the file has " + names + ")");
 }
 
+// "1 mesh, 2 nodes: RootNode, Cube": what a file without animation holds (info
+// shows it; every other command just says there is no animation).
+std::string scene_contents(const aiScene* scene) {
+  std::vector<std::string> names;
+  std::vector<const aiNode*> todo = {scene->mRootNode};
+  while (!todo.empty()) {
+    const aiNode* n = todo.back();
+    todo.pop_back();
+    if (!n) continue;
+    names.push_back(n->mName.C_Str());
+    for (unsigned c = n->mNumChildren; c-- > 0;) todo.push_back(n->mChildren[c]);
+  }
+  std::string s = std::to_string(scene->mNumMeshes) + (scene->mNumMeshes == 1 ? " mesh, " : " meshes, ") +
+                  std::to_string(names.size()) + (names.size() == 1 ? " node" : " nodes");
+  constexpr std::size_t kNamesShown = 6;
+  for (std::size_t i = 0; i < names.size() && i < kNamesShown; ++i) s += (i ? ", " : ": ") + names[i];
+  if (names.size() > kNamesShown) s += ", …";
+  return s;
+}
+
 // Every format but BVH: the import, the animations, and the clip built from the
 // scene. `info` comes with its format set.
 Status read_with_assimp(const fs::path& path, const ReadOptions& options, const std::string& ext, ClipFileInfo& info,
@@ -75,7 +95,9 @@ Status read_with_assimp(const fs::path& path, const ReadOptions& options, const 
                         ErrorKind::unreadable);
     return make_error(label + ": cannot read: " + assimp_error, ErrorKind::unreadable);
   }
-  if (scene->mNumAnimations == 0) return make_error(label + ": the file has no animation", ErrorKind::no_animation);
+  if (scene->mNumAnimations == 0)
+    return make_error(label + ": the file has no animation (" + kHoldsPrefix + scene_contents(scene) + ")",
+                      ErrorKind::no_animation);
   for (unsigned a = 0; a < scene->mNumAnimations; ++a) {
     const aiAnimation* an = scene->mAnimations[a];
     AnimationSummary s;

@@ -13,6 +13,7 @@
 #include <map>
 #include <optional>
 #include <set>
+#include <cstdio>
 #include <string_view>
 #include <utility>
 #include <vector>
@@ -379,6 +380,12 @@ double detect_frame_time(const KeyTimes& times, double tps) {
   return 0.0;
 }
 
+std::string short_number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
 // What the scene states beside its keys: its meshes (no writer keeps them), FBX's
 // frame rate (GlobalSettings: assimp's metadata FrameRate, the TimeMode, with ticks
 // per second = that rate; TimeMode 0 states none) and FBX's unit (centimetres per
@@ -392,7 +399,8 @@ void add_scene_facts(const aiScene* scene, const aiAnimation* anim, double tps, 
     double f = 0.0;
     float ff = 0.0f;
     if (scene->mMetaData->Get("UnitScaleFactor", f) || (scene->mMetaData->Get("UnitScaleFactor", ff) && (f = ff, true)))
-      if (f > 0.0 && std::isfinite(f)) clip.unit_scale = f * 0.01;
+      if (f > 0.0 && std::isfinite(f))
+        clip.unit = {f * 0.01, UnitOrigin::declared, "declared by the file: FBX UnitScaleFactor " + short_number(f)};
   }
 }
 

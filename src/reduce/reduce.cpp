@@ -238,10 +238,22 @@ std::vector<std::vector<Quat>> smoothed(const DenseClip& d) {
   return out;
 }
 
+// The source's frames at their exact times, start + k/rate (BVH "Frame Time:
+// 0.0333333" is 1/30 s, not 0.0333333 s): kept keys sit where resample puts frames,
+// and a long clip's last key is not 1e-7·k early.
+DenseClip exact_dense_clip(const Clip& clip) {
+  DenseClip d = dense_clip(clip);
+  if (d.grid.rate) {
+    for (std::size_t k = 0; k < d.grid.size(); ++k) d.grid.times[k] = d.grid.exact_time(k);
+    d.grid.frame_time = d.grid.rate->period();
+  }
+  return d;
+}
+
 class Reducer {
  public:
   Reducer(const Clip& clip, const ReduceOptions& o, std::vector<ReduceBudget> budgets)
-      : clip_(clip), o_(o), budget_(std::move(budgets)), dense_(dense_clip(clip)), value_(dense_.rotation),
+      : clip_(clip), o_(o), budget_(std::move(budgets)), dense_(exact_dense_clip(clip)), value_(dense_.rotation),
         start_(smoothed(dense_)) {
     children_.resize(clip.skeleton.joints.size());
     for (std::size_t j = 0; j < clip.skeleton.joints.size(); ++j)
@@ -707,7 +719,7 @@ double translation_tolerance(const ReduceBudget& b) {
 
 Result<ReduceResult> reduce_clip(const Clip& clip, const ReduceOptions& o) {
   if (Status s = clip.validate(); !s) return make_error(s.error());
-  if (!find_method(o.method)) return make_error("unknown method '" + o.method + "' (valid: " + method_names() + ")");
+  if (!find_method(o.method)) return make_error(unknown_method_message(o.method));
   const std::size_t n = clip.skeleton.joints.size();
   std::vector<ReduceBudget> budgets(n, o.budget);
   for (const auto& [name, b] : o.budget_for) {

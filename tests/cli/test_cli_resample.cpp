@@ -116,7 +116,7 @@ TEST_F(ResampleCli, UsageErrorsExitTwoWithOneLineAndNoOutput) {
 TEST_F(ResampleCli, InputProblemsExitOneWithOneLineAndNoOutput) {
   const std::string in = walk(), out = path("never.bvh");
   expect_errors({{path("missing.bvh") + " -o " + out, "missing.bvh"},
-                 {in + " -o " + out + " --range 1:5", "outside the clip"},
+                 {in + " -o " + out + " --range 1:5", "runs past the clip's end"},
                  {in + " -o " + out + " --method-for Tail=slerp", "no joint 'Tail'"}},
                 1, out);
   const std::string unwritable = path("no/such/dir/out.bvh");

@@ -1,69 +1,100 @@
 #include "client_fixture.h"
 
-#include <cmath>
-
-#include "rotinterp/io/read.h"
-
-#include <Eigen/Geometry>
-
 #include <algorithm>
-#include <map>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <stdexcept>
 
 namespace rotinterp::test {
 
-Reference load_reference(const std::filesystem::path& bvh, const std::vector<std::string>& without_translation) {
-  Reference ref;
-  auto clip = read_clip(bvh);
-  if (!clip) throw std::runtime_error(clip.error());
-  ref.clip = *clip;
-  for (const std::string& name : without_translation) {
-    const int j = ref.clip.skeleton.find(name);
-    if (j < 0) throw std::runtime_error("no joint " + name);
-    ref.clip.translations[static_cast<std::size_t>(j)].reset();
+namespace {
+
+std::vector<std::vector<Vec3>> points(const nlohmann::json& rows) {
+  std::vector<std::vector<Vec3>> out;
+  for (const auto& row : rows) {
+    out.emplace_back();
+    for (const auto& p : row) out.back().emplace_back(p[0].get<double>(), p[1].get<double>(), p[2].get<double>());
   }
-  const std::size_t frames = ref.clip.frame_count();
-  for (std::size_t k = 0; k < frames; ++k)
-    ref.frames.push_back(pose_at(ref.clip, ref.clip.start_time() + static_cast<double>(k) * ref.clip.frame_time).position);
-  const std::size_t n = ref.clip.skeleton.joints.size();
-  std::vector<Quat> rest(n);
-  std::vector<Vec3> offsets(n);
-  for (std::size_t j = 0; j < n; ++j) {
-    rest[j] = ref.clip.skeleton.joints[j].rest_rotation;
-    offsets[j] = ref.clip.skeleton.joints[j].offset;
-  }
-  WorldPose w;
-  forward_kinematics(ref.clip.skeleton, rest, offsets, w);
-  Vec3 lo = w.position.front(), hi = lo;
-  for (const Vec3& p : w.position) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-  ref.height = (hi - lo).maxCoeff();
-  return ref;
+  return out;
 }
 
-Residual max_similarity_residual(const Reference& ref, const std::vector<std::string>& names,
-                                 const std::vector<std::vector<Vec3>>& positions) {
-  if (positions.size() != ref.frames.size()) return {};
-  std::vector<int> joint(names.size());
-  for (std::size_t b = 0; b < names.size(); ++b) {
-    joint[b] = ref.clip.skeleton.find(names[b]);
-    if (joint[b] < 0) return {};
+std::vector<std::string> strings(const nlohmann::json& r, const char* key) {
+  return r.contains(key) ? r[key].get<std::vector<std::string>>() : std::vector<std::string>{};
+}
+
+}  // namespace
+
+std::vector<BlenderImport> blender_imports(const std::vector<std::string>& files, const std::filesystem::path& dir) {
+  const auto json = dir / "blender.json", log = dir / "blender.log";
+  std::string cmd = "blender -b --factory-startup --python " + std::string(ROTINTERP_SOURCE_DIR) +
+                    "/tests/clients/blender_dump.py -- " + json.string();
+  for (const std::string& f : files) cmd += " '" + f + "'";
+  cmd += " >" + log.string() + " 2>&1";
+  if (std::system(cmd.c_str()) != 0)
+    throw std::runtime_error("Blender failed (is it installed? scripts/install-deps.sh adds it):\n" + read_text(log));
+  std::ifstream in(json);
+  const nlohmann::json all = nlohmann::json::parse(in);
+  std::vector<BlenderImport> out;
+  for (const std::string& f : files) {
+    const nlohmann::json& r = all.at(f);
+    BlenderImport b;
+    b.armatures = r.at("armatures").get<int>();
+    b.fps = r.at("fps").get<double>();
+    b.bones = strings(r, "bones");
+    b.connected = strings(r, "connected");
+    b.objects = strings(r, "objects");
+    if (r.contains("times")) b.times = r["times"].get<std::vector<double>>();
+    if (r.contains("positions")) b.heads = points(r["positions"]);
+    if (r.contains("object_positions")) b.origins = points(r["object_positions"]);
+    out.push_back(std::move(b));
   }
-  const std::size_t count = names.size() * positions.size();
-  Eigen::Matrix3Xd from(3, count), to(3, count);
-  std::size_t c = 0;
-  for (std::size_t k = 0; k < positions.size(); ++k)
-    for (std::size_t b = 0; b < names.size(); ++b, ++c) {
-      from.col(static_cast<Eigen::Index>(c)) = positions[k][b];
-      to.col(static_cast<Eigen::Index>(c)) = ref.frames[k][static_cast<std::size_t>(joint[b])];
+  return out;
+}
+
+double figure_height(const BlenderImport& source) {
+  if (source.heads.empty() || source.heads.front().empty()) return 0.0;
+  double lo = INFINITY, hi = -INFINITY;
+  for (const Vec3& p : source.heads.front()) lo = std::min(lo, p.z()), hi = std::max(hi, p.z());
+  return hi - lo;
+}
+
+Deviation worst_deviation(const BlenderImport& ours, const BlenderImport& source, double cut) {
+  Deviation d;
+  // Where each joint of ours is in `source`: a bone (index ≥ 0) or an object (−1 − index).
+  std::vector<long> where(ours.bones.size());
+  for (std::size_t b = 0; b < ours.bones.size(); ++b) {
+    const std::string& name = ours.bones[b];
+    const auto bone = std::find(source.bones.begin(), source.bones.end(), name);
+    const auto object = std::find(source.objects.begin(), source.objects.end(), name);
+    if (bone != source.bones.end()) {
+      where[b] = bone - source.bones.begin();
+    } else if (object != source.objects.end()) {
+      where[b] = -1 - (object - source.objects.begin());
+    } else {
+      d.problem += "no " + name + " in the source; ";
     }
-  const Eigen::Matrix4d t = Eigen::umeyama(from, to, true);
-  const Eigen::Matrix3Xd mapped = (t.topLeftCorner<3, 3>() * from).colwise() + t.topRightCorner<3, 1>();
-  Eigen::Index worst = 0;
-  Residual r;
-  r.distance = (mapped - to).colwise().norm().maxCoeff(&worst);
-  r.joint = names[static_cast<std::size_t>(worst) % names.size()];
-  r.frame = static_cast<std::size_t>(worst) / names.size();
-  r.scale = std::cbrt(t.topLeftCorner<3, 3>().determinant());
-  return r;
+  }
+  for (const std::string& name : source.bones)
+    if (std::find(ours.bones.begin(), ours.bones.end(), name) == ours.bones.end()) d.problem += "no bone " + name + "; ";
+  if (!d.problem.empty()) return d;
+  for (std::size_t k = 0; k < ours.times.size(); ++k) {
+    const double t = cut + ours.times[k];
+    const auto near = std::min_element(source.times.begin(), source.times.end(),
+                                       [t](double a, double b) { return std::abs(a - t) < std::abs(b - t); });
+    if (std::abs(*near - t) > kSameKeyTime) {
+      d.problem = "no source key at " + std::to_string(t) + " s";
+      return d;
+    }
+    const std::size_t s = static_cast<std::size_t>(near - source.times.begin());
+    for (std::size_t b = 0; b < ours.bones.size(); ++b) {
+      const Vec3& truth = where[b] >= 0 ? source.heads[s][static_cast<std::size_t>(where[b])]
+                                        : source.origins[s][static_cast<std::size_t>(-1 - where[b])];
+      const double distance = (ours.heads[k][b] - truth).norm();
+      if (distance > d.distance) d.distance = distance, d.joint = ours.bones[b], d.time = t;
+    }
+  }
+  return d;
 }
 
 }  // namespace rotinterp::test

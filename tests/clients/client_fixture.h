@@ -1,10 +1,11 @@
-// Shared by the client tests: clips resampled once by the CLI, each written both in
-// the format under test and as BVH (the reference: forward kinematics of the same
-// resample), and the checks every written file must pass.
+// Shared by the client tests: one Blender process imports a list of files
+// (tests/clients/blender_dump.py), and what it shows is compared with what it shows
+// for the source, at true size and with nothing fitted: Blender turns every format
+// Z-up in metres itself, so two imports of the same motion must coincide.
 #pragma once
 
 #include "io/io_test_util.h"
-#include "rotinterp/clip/clip.h"
+#include "rotinterp/core/rotation.h"
 
 #include <nlohmann/json.hpp>
 
@@ -14,34 +15,41 @@
 
 namespace rotinterp::test {
 
-// One resample of a shared clip: `args` are the resample options after IN -o OUT.
-struct ClientCase {
-  std::string name;    // e.g. "bandai_walk"
-  std::string source;  // path under ../shared/data
-  std::string args;    // e.g. "--fps 60 --range 0:1"
+// One file as Blender shows it (blender_dump.py documents the fields).
+struct BlenderImport {
+  int armatures = 0;
+  double fps = 0.0;                      // the scene's rate after the import
+  std::vector<std::string> bones;        // of the one armature
+  std::vector<std::string> connected;    // bones Blender connected to their parent
+  std::vector<double> times;             // s, the clip time of each key Blender shows
+  std::vector<std::vector<Vec3>> heads;  // [key][bone], world, metres
+  std::vector<std::string> objects;      // armature and empty objects (FBX Nulls)
+  std::vector<std::vector<Vec3>> origins;  // [key][object], their FBX node origins, metres
 };
 
-// World positions of every joint at every frame of a BVH reference.
-struct Reference {
-  Clip clip;
-  std::vector<std::vector<Vec3>> frames;  // [frame][joint]
-  double height = 0.0;  // largest side of the rest pose's bounding box
-};
-// `without_translation`: joints whose translation keys the client is known to drop
-// (their rest offset is used instead).
-Reference load_reference(const std::filesystem::path& bvh, const std::vector<std::string>& without_translation = {});
+// Runs Blender once on `files` (a BVH may end in "@SCALE", its global_scale;
+// default 0.01) and returns each import by its entry in `files`.
+std::vector<BlenderImport> blender_imports(const std::vector<std::string>& files, const std::filesystem::path& dir);
 
-// Largest distance, over every named joint and frame, between `positions` (one row
-// per frame, in `names` order) mapped by the best similarity transform (Umeyama:
-// rotation, uniform scale, translation) and the reference, and where it is;
-// distance -1 when a name is not a reference joint or the frame counts differ.
-struct Residual {
-  double distance = -1.0;
+// Blender's up axis is Z: the figure's height is the vertical extent of its bone
+// heads at the first key (metres).
+double figure_height(const BlenderImport& source);
+
+// Keys of `ours` and `source` lie at the same clip times when within this (s).
+constexpr double kSameKeyTime = 1e-4;
+
+// The largest distance between a joint of `ours` and the same node of `source` at
+// the same key time, over every key of `ours`, with nothing fitted. Joints are
+// matched by name: a bone of `source`, else an object (Blender makes FBX Nulls the
+// armature object or empties). `problem` is non-empty when a joint, a bone of
+// `source` or a key time of `ours` has no counterpart. `cut`: the key of `ours` at
+// t is the source's at cut + t (s; resample --range starts its output at 0).
+struct Deviation {
+  double distance = 0.0;  // metres
   std::string joint;
-  std::size_t frame = 0;
-  double scale = 0.0;  // of the similarity: reference units per unit of `positions`
+  double time = 0.0;  // s
+  std::string problem;
 };
-Residual max_similarity_residual(const Reference& ref, const std::vector<std::string>& names,
-                                 const std::vector<std::vector<Vec3>>& positions);
+Deviation worst_deviation(const BlenderImport& ours, const BlenderImport& source, double cut = 0.0);
 
 }  // namespace rotinterp::test

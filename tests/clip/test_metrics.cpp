@@ -277,12 +277,12 @@ TEST(Metrics, SkeletonHeightIsTheLargestRestExtent) {
 
 TEST(Metrics, ShellDistanceFollowsTheClipUnits) {
   Clip clip;
-  clip.unit_scale = 0.01;  // centimetres
-  EXPECT_DOUBLE_EQ(metres_in_clip_units(clip, kDefaultShellDistanceMetres), 3.0);
-  clip.unit_scale = 1.0;
-  EXPECT_DOUBLE_EQ(metres_in_clip_units(clip, kDefaultShellDistanceMetres), 0.03);
-  clip.unit_scale = 0.0;  // unknown: read as metres
-  EXPECT_DOUBLE_EQ(metres_in_clip_units(clip, 0.5), 0.5);
+  clip.unit.metres_per_unit = 0.01;  // centimetres
+  EXPECT_DOUBLE_EQ(in_clip_units(clip, kDefaultShellDistanceMetres), 3.0);
+  clip.unit.metres_per_unit = 1.0;
+  EXPECT_DOUBLE_EQ(in_clip_units(clip, kDefaultShellDistanceMetres), 0.03);
+  clip.unit.metres_per_unit = 0.0;  // not a unit: read as metres
+  EXPECT_DOUBLE_EQ(in_clip_units(clip, 0.5), 0.5);
 }
 
 TEST(Metrics, ConstantAngularVelocityHasZeroAccelerationAndUniformAccelerationReadsItsValue) {

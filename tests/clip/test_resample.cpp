@@ -6,6 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
 
 using namespace rotinterp;
 
@@ -237,6 +240,45 @@ TEST(Resample, RangeCutEqualsTheSameFramesOfAnUncutResample) {
     EXPECT_LT(angular_distance(rk->rotations[j].keys[0], in.rotations[j].keys[30]), 1e-12);
 }
 
+TEST(Resample, ARangeInFramesCutsTheSameFramesAsInSeconds) {
+  const Clip in = synth(SynthKind::walk, Rate{30, 1}, 3.0);
+  for (const char* text : {"30f:75f", "1:75f", "30f:2.5", "1s:2.5s"}) {
+    auto range = parse_time_range(text);
+    ASSERT_TRUE(range) << text << ": " << range.error();
+    ResampleOptions frames = at("50"), seconds = at("50");
+    frames.range = *range;
+    seconds.range = TimeRange{1.0, 2.5};
+    auto a = resample_clip(in, frames), b = resample_clip(in, seconds);
+    ASSERT_TRUE(a && b) << text;
+    ASSERT_EQ(a->frame_count(), b->frame_count()) << text;
+    for (std::size_t j = 0; j < in.rotations.size(); ++j)
+      for (std::size_t k = 0; k < a->rotations[j].keys.size(); ++k)
+        ASSERT_EQ(a->rotations[j].keys[k].coeffs(), b->rotations[j].keys[k].coeffs()) << text;
+  }
+  auto open = parse_time_range("120f:");
+  ASSERT_TRUE(open);
+  EXPECT_TRUE(open->start_in_frames);
+  EXPECT_TRUE(std::isinf(open->end));
+}
+
+TEST(Resample, ARangeTextThatIsNotOneIsRefusedWithItsForm) {
+  for (const char* bad : {"1", "a:b", "1:2:3", "-1:2", "1.5f:3f", "5f:2f", "2:1", "1x:2"}) {
+    auto r = parse_time_range(bad);
+    ASSERT_FALSE(r) << bad;
+    EXPECT_NE(r.error().find(std::string("--range '") + bad + "'"), std::string::npos) << r.error();
+  }
+}
+
+TEST(Resample, ARangePastTheEndSaysWhereTheClipEndsInSecondsAndFrames) {
+  const Clip in = synth(SynthKind::walk, Rate{30, 1}, 2.0);
+  ResampleOptions o = at("50");
+  o.range = *parse_time_range("10f:90f");
+  auto r = resample_clip(in, o);
+  ASSERT_FALSE(r);
+  EXPECT_NE(r.error().find("range 10f:90f runs past the clip's end (ends at 2 s / frame 60)"), std::string::npos)
+      << r.error();
+}
+
 TEST(Resample, ThreadCountDoesNotChangeTheResult) {
   const Clip in = synth(SynthKind::walk, Rate{120, 1}, 3.0);
   ResampleOptions one = at("50"), two = at("50");
@@ -270,10 +312,14 @@ TEST(Resample, BadRequestsAreOneLineErrors) {
   expect_error(o, "no joint 'Tail'");
   o.method_for = {{"Head", "nope"}};
   expect_error(o, "unknown method 'nope'");
-  for (TimeRange r : {TimeRange{-1.0, 1.0}, TimeRange{0.5, 3.0}, TimeRange{1.5, 1.0}, TimeRange{1.0, 1.0}}) {
+  for (const auto& [r, why] : std::vector<std::pair<TimeRange, std::string>>{
+           {TimeRange{-1.0, 1.0}, "starts before the clip's first frame"},
+           {TimeRange{0.5, 3.0}, "runs past the clip's end (ends at 2 s / frame"},
+           {TimeRange{1.5, 1.0}, "is empty"},
+           {TimeRange{1.0, 1.0}, "is empty"}}) {
     o = at("50");
     o.range = r;
-    expect_error(o, "outside the clip");
+    expect_error(o, why.c_str());
   }
   Clip no_rate = in;
   no_rate.frame_time = 0.0;

@@ -14,6 +14,8 @@ ErrorRow sample_row() {
   r.method = "squad";
   r.keep_every = 8;
   r.joint = "LeftHand";
+  r.metres_per_unit = 0.0254;
+  r.unit = "in (given: --unit in, \"quoted\")";
   r.frames = 2752;
   r.samples = 2752;
   r.mean_deg = 0.1 + 0.2;  // not exactly representable in short decimal
@@ -48,8 +50,9 @@ void expect_same(const ErrorRow& a, const ErrorRow& b) {
                  &ErrorRow::swing_rms_deg, &ErrorRow::twist_rms_deg, &ErrorRow::pos_rms, &ErrorRow::pos_max,
                  &ErrorRow::pos_rms_pct, &ErrorRow::pos_max_pct, &ErrorRow::shell_rms, &ErrorRow::shell_max,
                  &ErrorRow::acc_rms, &ErrorRow::acc_rms_ref, &ErrorRow::vel_jump_max, &ErrorRow::acc_jump_max,
-                 &ErrorRow::height})
+                 &ErrorRow::height, &ErrorRow::metres_per_unit})
     EXPECT_EQ(a.*m, b.*m);  // bit-exact
+  EXPECT_EQ(a.unit, b.unit);
 }
 
 TEST(ErrorRow, RowsReadBackBitExactThroughCsv) {
@@ -79,7 +82,7 @@ TEST(ErrorRow, EndSiteRowsLeaveAngleColumnsEmptyAndReadBack) {
 
 TEST(ErrorRow, HeaderStartsWithTheDocumentedColumns) {
   EXPECT_EQ(error_csv_header().rfind("clip,method,keep_every,joint,frames,mean_deg,rms_deg,p95_deg,max_deg,"
-                                     "swing_rms_deg,twist_rms_deg,pos_rms,pos_max,",
+                                     "swing_rms_deg,twist_rms_deg,pos_rms_m,pos_max_m,",
                                      0),
             0u);
 }

@@ -64,7 +64,7 @@ TEST(EvalCli, WritesCsvSummaryAndPlotsForADirectory) {
   const auto csv = lines_of(slurp(out / "errors.csv"));
   ASSERT_GT(csv.size(), 1u);
   EXPECT_EQ(csv[0].rfind("clip,method,keep_every,joint,frames,mean_deg,rms_deg,p95_deg,max_deg,swing_rms_deg,"
-                         "twist_rms_deg,pos_rms,pos_max",
+                         "twist_rms_deg,pos_rms_m,pos_max_m",
                          0),
             0u);
   EXPECT_EQ(slurp(out / "errors.csv").find("nan"), std::string::npos);

@@ -114,18 +114,5 @@ TEST(FootSkating, ThresholdsAreRealUnitsAtAnyFrameRateAndClipUnit) {
   EXPECT_NEAR(c.mean_speed(), 10.0, 1e-12);
 }
 
-TEST(FootSkating, UnitlessClipsTakeTheirUnitFromTheSkeletonHeight) {
-  Clip bvh;
-  bvh.source_format = "bvh";
-  bool estimated = false;
-  EXPECT_NEAR(metres_per_unit(bvh, 160.0, estimated), kAssumedSkeletonHeightMetres / 160.0, 1e-15);
-  EXPECT_TRUE(estimated);
-  Clip fbx;
-  fbx.source_format = "fbx";
-  fbx.unit_scale = 0.01;
-  EXPECT_EQ(metres_per_unit(fbx, 160.0, estimated), 0.01);
-  EXPECT_FALSE(estimated);
-}
-
 }  // namespace
 }  // namespace rotinterp

@@ -69,7 +69,10 @@ inline void expect_identical(const Clip& a, const Clip& b, const std::string& wh
   EXPECT_TRUE(same_bits(a.frame_time, b.frame_time)) << a.frame_time << " vs " << b.frame_time;
   EXPECT_EQ(a.bvh_layout == nullptr, b.bvh_layout == nullptr);
   EXPECT_EQ(frame_time_text(a), frame_time_text(b));
-  EXPECT_TRUE(same_bits(a.unit_scale, b.unit_scale)) << a.unit_scale << " vs " << b.unit_scale;
+  EXPECT_TRUE(same_bits(a.unit.metres_per_unit, b.unit.metres_per_unit))
+      << a.unit.metres_per_unit << " vs " << b.unit.metres_per_unit;
+  EXPECT_EQ(a.unit.origin, b.unit.origin);
+  EXPECT_EQ(a.unit.reason, b.unit.reason);
   EXPECT_EQ(a.source_format, b.source_format);
 }
 

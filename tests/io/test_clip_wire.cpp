@@ -45,7 +45,7 @@ ClipFileInfo every_field_set() {
        {},
        {Channel::Yrotation}},
       ".0083333"});
-  c.unit_scale = 0.01;
+  c.unit = {0.01, UnitOrigin::declared, "declared by the file: FBX UnitScaleFactor 1"};
   c.source_format = "bvh";
   return info;
 }

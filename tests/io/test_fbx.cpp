@@ -49,7 +49,7 @@ Differences compare(const Clip& a, const Clip& b, const std::string& only_under 
   }
   // b's positions in a's units: the same size in metres (a glTF is written in
   // metres, whatever the source's unit).
-  const double b_in_a_units = b.unit_scale / a.unit_scale;
+  const double b_in_a_units = b.unit.metres_per_unit / a.unit.metres_per_unit;
   for (double t : key_times(a)) {
     const WorldPose pa = test::pose_at(a, t), pb = test::pose_at(b, t);
     for (std::size_t j = 0; j < map.size(); ++j) {
@@ -231,11 +231,12 @@ TEST(Fbx, ToBvhWithoutResamplingIsRefusedAndWritesNothing) {
 TEST(Fbx, ReportsUnitScaleAndFrameRate) {
   Result<Clip> cm = read_clip(kData / "fbx" / "assimp_huesitos.fbx");
   ASSERT_TRUE(cm) << cm.error();
-  EXPECT_DOUBLE_EQ(cm->unit_scale, 0.01);
+  EXPECT_DOUBLE_EQ(cm->unit.metres_per_unit, 0.01);
+  EXPECT_EQ(cm->unit.origin, UnitOrigin::declared);
   EXPECT_DOUBLE_EQ(cm->frame_time, 1.0 / 25.0);
   Result<Clip> inch = read_clip(kData / "fbx" / "digitalrune_XboxAvatars_Jump.fbx");
   ASSERT_TRUE(inch) << inch.error();
-  EXPECT_NEAR(inch->unit_scale, 0.0254, 1e-7);
+  EXPECT_NEAR(inch->unit.metres_per_unit, 0.0254, 1e-7);
   EXPECT_LT(inch->start_time(), 0.0);  // first key at t = −1 tick is kept
 }
 

@@ -53,7 +53,7 @@ TEST(GltfWrite, SkinCoversEveryJointWithTheRestPosesInverseBindMatrices) {
   std::memcpy(m.data(), bin.data() + view["byteOffset"].get<std::size_t>(), m.size() * 4);
   // glTF's unit is the metre: this FBX is in centimetres (unit scale 0.01), so node
   // translations and the matrices' translations are its offsets × 0.01.
-  const double metres = clip.unit_scale;
+  const double metres = clip.unit.metres_per_unit;
   ASSERT_EQ(metres, 0.01);
   for (std::size_t j = 0; j < n; ++j)
     for (int a = 0; a < 3; ++a)
@@ -84,24 +84,28 @@ TEST(GltfWrite, SkinCoversEveryJointWithTheRestPosesInverseBindMatrices) {
   EXPECT_LT(worst, 1e-5);
 }
 
-// Two runs writing the same .gltf name: each buffer is named by its bytes, so a
-// .gltf always names its own run's buffer, and both files read back whole.
-TEST(GltfWrite, BufferIsNamedByItsContentSoRunsNeverMixBuffers) {
+// Runs writing the same .gltf name: each buffer is named by its bytes, so a .gltf
+// always names its own run's buffer; the buffer of the .gltf it replaces goes with
+// it (issue 28: three runs left three buffers), and other files' buffers stay.
+TEST(GltfWrite, ARerunReplacesItsBufferAndLeavesNoneBehind) {
   test::TempDir dir;
   const Clip a = resampled("bvh/NC_bandai2_raise-up-both-hands_active_031.bvh", "30");
   const Clip b = resampled("bvh/NC_bandai2_raise-up-both-hands_active_031.bvh", "60");
+  ASSERT_TRUE(write_clip(a, dir / "other.gltf"));  // a neighbour: its buffer is not ours to remove
   ASSERT_TRUE(write_clip(a, dir / "out.gltf"));
-  std::filesystem::copy_file(dir / "out.gltf", dir / "first.gltf");
   ASSERT_TRUE(write_clip(b, dir / "out.gltf"));
+  EXPECT_EQ(bin_files(dir).size(), 2u) << "out's first buffer removed, other's kept";
+  ASSERT_TRUE(write_clip(a, dir / "out.gltf"));
   EXPECT_EQ(bin_files(dir).size(), 2u);
-  Result<Clip> first = read_clip(dir / "first.gltf"), second = read_clip(dir / "out.gltf");
-  ASSERT_TRUE(first) << first.error();
-  ASSERT_TRUE(second) << second.error();
-  EXPECT_EQ(first->frame_count(), a.frame_count());
-  EXPECT_EQ(second->frame_count(), b.frame_count());
-  // The same clip again: the same buffer name, no new file.
-  ASSERT_TRUE(write_clip(b, dir / "out.gltf"));
+  Result<Clip> other = read_clip(dir / "other.gltf"), out = read_clip(dir / "out.gltf");
+  ASSERT_TRUE(other) << other.error();
+  ASSERT_TRUE(out) << out.error();
+  EXPECT_EQ(other->frame_count(), a.frame_count());
+  EXPECT_EQ(out->frame_count(), a.frame_count());
+  // The same clip again: the same buffer name, kept.
+  ASSERT_TRUE(write_clip(a, dir / "out.gltf"));
   EXPECT_EQ(bin_files(dir).size(), 2u);
+  EXPECT_TRUE(read_clip(dir / "out.gltf"));
 }
 
 // Float32 times at 60 Hz (and NTSC) come back on the exact grid: same joints,

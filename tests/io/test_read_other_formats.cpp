@@ -48,7 +48,9 @@ TEST(OtherFormats, StaticSceneIsRefusedWithAClearMessage) {
   test::write_text(path, text);
   Result<Clip> c = read_clip(path);
   ASSERT_FALSE(c);
-  EXPECT_EQ(c.error(), path.string() + ": the file has no animation");
+  EXPECT_EQ(c.error_kind(), ErrorKind::no_animation);
+  EXPECT_EQ(c.error().rfind(path.string() + ": the file has no animation (it holds ", 0), 0u) << c.error();
+  EXPECT_NE(static_scene_contents(c.error()).find(" node"), std::string::npos) << c.error();
 }
 
 }  // namespace

@@ -66,12 +66,17 @@ def test_positions_of_chosen_frames_are_those_frames():
         clip.positions([121])
 
 
-def test_a_bvh_is_in_centimetres_until_told_otherwise():
-    # The walk's legs: 42-unit thigh and shin bones, 0.42 m each.
-    clip = rotinterp.read_clip(SAMPLES / "walk.bvh")
-    p = clip.positions(0)[0]
-    leg, foot = clip.names.index("LeftLeg"), clip.names.index("LeftFoot")
-    assert np.linalg.norm(p[foot] - p[leg]) == pytest.approx(0.42, abs=1e-12)
+def test_positions_are_in_metres_through_the_clips_unit_inferred_or_given():
+    # The walk's legs: 42-unit shin bones; a figure 167 units tall is inferred as cm.
+    leg, foot = (rotinterp.read_clip(SAMPLES / "walk.bvh").names.index(n) for n in ("LeftLeg", "LeftFoot"))
+    for unit, metres in [(None, 0.01), ("cm", 0.01), ("m", 1.0), ("in", 0.0254), (0.02, 0.02)]:
+        clip = rotinterp.read_clip(SAMPLES / "walk.bvh", unit=unit)
+        assert clip.unit.metres_per_unit == clip.metres_per_unit == metres, unit
+        assert clip.unit.origin == ("inferred" if unit is None else "given"), unit
+        p = clip.positions(0)[0]
+        assert np.linalg.norm(p[foot] - p[leg]) == pytest.approx(42 * metres, rel=1e-12), unit
+    with pytest.raises(ValueError, match="furlong"):
+        rotinterp.read_clip(SAMPLES / "walk.bvh", unit="furlong")
 
 
 def bvh_channel_values(path):

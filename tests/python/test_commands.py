@@ -32,10 +32,10 @@ def test_info_raises_as_read_clip_does(tmp_path):
 
 
 @pytest.mark.parametrize("method, args, kwargs", [
-    ("slerp", ["--tolerance-deg", "0.5"], {"tolerance_deg": 0.5}),
+    ("slerp", ["--tolerance", "0.5deg"], {"tolerance": "0.5deg"}),
     ("c2", [], {}),  # the default budget: 1 mm at 10 cm
-    ("clamped", ["--tolerance-mm", "2", "--shell-distance", "5", "--tolerance-for", "Head=0.2deg"],
-     {"tolerance_mm": 2, "shell_distance_cm": 5, "tolerance_for": {"Head": {"deg": 0.2}}}),
+    ("clamped", ["--tolerance", "2mm", "--shell-distance", "5cm", "--tolerance-for", "Head=0.2deg"],
+     {"tolerance": ["2mm"], "shell_distance": 0.05, "tolerance_for": {"Head": "0.2deg"}}),
 ])
 def test_reduce_keeps_the_keys_the_command_keeps(method, args, kwargs, tmp_path):
     path = SAMPLES / "walk.bvh"
@@ -63,18 +63,18 @@ def test_reduce_keeps_the_keys_the_command_keeps(method, args, kwargs, tmp_path)
 
 def test_reduce_refuses_budgets_the_command_refuses():
     clip = rotinterp.read_clip(SAMPLES / "walk.bvh")
-    with pytest.raises(ValueError, match="tolerance_deg must be a finite number > 0"):
-        rotinterp.reduce(clip, tolerance_deg=-1)
+    with pytest.raises(ValueError, match="'0.5' needs a unit"):
+        rotinterp.reduce(clip, tolerance="0.5")
     with pytest.raises(ValueError, match="has no joint 'Tail'"):
-        rotinterp.reduce(clip, tolerance_deg=1, tolerance_for={"Tail": {"deg": 1}})
-    with pytest.raises(ValueError, match="a mm budget needs tolerance_mm"):
-        rotinterp.reduce(clip, tolerance_deg=1, tolerance_for={"Head": {"mm": 1}})
+        rotinterp.reduce(clip, tolerance="1deg", tolerance_for={"Tail": "1deg"})
+    with pytest.raises(ValueError, match="a length budget needs a length tolerance"):
+        rotinterp.reduce(clip, tolerance="1deg", tolerance_for={"Head": "1mm"})
 
 
 def test_render_writes_the_pngs_the_command_writes(tmp_path):
     if not hasattr(rotinterp._rotinterp, "render"):
         pytest.skip("built without the renderer")
-    options = ["--methods", "slerp,c2", "--keep-every", "6", "--frames", "3:30:9", "--size", "192x108", "--sheet",
+    options = ["--method", "slerp,c2", "--keep-every", "6", "--frames", "3:30:9", "--size", "192x108", "--sheet",
                "--trail", "LeftHand"]
     cli("render", SAMPLES / "walk.bvh", "-o", tmp_path / "cli", "-q", *options)
     files = rotinterp.render(SAMPLES / "walk.bvh", tmp_path / "py", methods=["slerp", "c2"], keep_every=6,
@@ -117,7 +117,7 @@ def test_commands_release_the_gil(name, tmp_path):
     clip = rotinterp.read_clip(BVH_CLIPS[0])
     if name == "render" and not hasattr(rotinterp._rotinterp, "render"):
         pytest.skip("built without the renderer")
-    call = {"reduce": lambda: rotinterp.reduce(clip, method="bf", tolerance_mm=0.1),
+    call = {"reduce": lambda: rotinterp.reduce(clip, method="bf", tolerance="0.1mm"),
             "render": lambda: rotinterp.render(clip, tmp_path, methods=["slerp", "c2"], size="320x180",
                                                frames="0:120:2")}[name]
     pause, total = largest_pause_of_another_thread(call)

@@ -157,6 +157,13 @@ def test_metrics_on_arrays():
 
 # ---- bad input raises with the message --------------------------------------------------------------
 
+def test_method_names_are_taken_in_any_case_and_a_near_miss_gets_did_you_mean():
+    t, q = smooth_track(5, 6, 2)
+    assert np.array_equal(rotinterp.interpolate(t, q, t, "SLERP"), rotinterp.interpolate(t, q, t, "slerp"))
+    with pytest.raises(ValueError, match="did you mean squad"):
+        rotinterp.interpolate(t, q, t, "sqaud")
+
+
 def test_bad_input_raises_value_error_with_the_message():
     t, q = smooth_track(5, 6, 2)
     with pytest.raises(ValueError, match=r"quats must be quaternions: .* got shape \(6, 2, 3\)"):

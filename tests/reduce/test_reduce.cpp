@@ -57,6 +57,15 @@ struct Measured {
   std::vector<double> angle;  // per joint, rad
   std::vector<double> shell;  // per joint, clip units
 };
+// The source's frames with each frame k at its exact time, start + k/rate (BVH's
+// printed "Frame Time: 0.0333333" is 1/30 s), where reduce and resample place frames;
+// the values are the source's own.
+DenseClip exact_frames(const Clip& clip) {
+  DenseClip d = dense_clip(clip);
+  for (std::size_t k = 0; k < d.grid.size(); ++k) d.grid.times[k] = d.grid.exact_time(k);
+  return d;
+}
+
 Measured measure(const Clip& source, const DenseClip& ref, const Motion& test, double shell_distance) {
   const std::size_t n = source.skeleton.joints.size(), frames = ref.grid.size();
   Measured m;
@@ -197,12 +206,13 @@ TEST(ReduceCli, EveryMethodKeepsEveryFrameWithinBothBudgetsRebuiltFromTheWritten
   const fs::path dir = temp_dir("json");
   auto source = read_clip(kBandai);
   ASSERT_TRUE(source) << source.error();
-  const DenseClip ref = dense_clip(*source);
-  const double unit = 0.01;  // BVH taken as centimetres
+  const DenseClip ref = exact_frames(*source);
+  const double unit = source->unit.metres_per_unit;  // inferred: centimetres
+  EXPECT_EQ(unit, 0.01);
   for (const MethodInfo& method : methods()) {
     const fs::path out = dir / (method.name + ".json");
     const auto r = run_cli("reduce " + kBandai + " -o " + out.string() + " --method " + method.name +
-                           " --tolerance-deg 0.5 --tolerance-mm 1 -q");
+                           " --tolerance 0.5deg,1mm -q");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const nlohmann::json doc = nlohmann::json::parse(slurp(out));
     const Motion test = rebuild_from_json(doc, ref, TranslationInterp::cubic);
@@ -237,13 +247,13 @@ TEST(ReduceCli, GltfReplayedWithTheSpecsInterpolationStaysWithinBudget) {
   const fs::path dir = temp_dir("gltf");
   auto source = read_clip(kBandai);
   ASSERT_TRUE(source) << source.error();
-  const DenseClip ref = dense_clip(*source);
-  const double unit = 0.01;
+  const DenseClip ref = exact_frames(*source);
+  const double unit = source->unit.metres_per_unit;  // inferred: centimetres
   for (const std::string method : {"slerp", "gltf-cubic"})
     for (const std::string translation : {"linear", "cubic"}) {
       const fs::path out = dir / (method + "_" + translation + ".glb");
       const auto r = run_cli("reduce " + kBandai + " -o " + out.string() + " --method " + method + " --translation " +
-                             translation + " --tolerance-deg 0.5 --tolerance-mm 1 -q");
+                             translation + " --tolerance 0.5deg,1mm -q");
       ASSERT_EQ(r.exit_code, 0) << r.err;
       const Glb g = read_glb(out);
       for (const auto& s : g.json["animations"][0]["samplers"]) {
@@ -251,8 +261,8 @@ TEST(ReduceCli, GltfReplayedWithTheSpecsInterpolationStaysWithinBudget) {
         const std::string interp = s["interpolation"];
         EXPECT_TRUE(interp == (rotation_cubic ? "CUBICSPLINE" : "LINEAR") || interp == (translation_cubic ? "CUBICSPLINE" : "LINEAR"));
       }
-      // The GLB of a BVH holds its numbers as they are (the writer's convention: BVH has no unit).
-      const Motion test = replay_glb(g, *source, ref, 1.0);
+      // The GLB is in metres (glTF's unit): the clip's numbers × its metres per unit.
+      const Motion test = replay_glb(g, *source, ref, unit);
       const Measured m = measure(*source, ref, test, 0.10 / unit);
       // Float key times and values: the replay differs from the double rebuild by float round-off.
       for (std::size_t j = 0; j < m.angle.size(); ++j) {
@@ -273,7 +283,7 @@ TEST(ReduceCli, AssimpReadsTheSparseGlbBackWithTheKeptKeysOfEveryJoint) {
   for (const std::string method : {"slerp", "gltf-cubic"}) {
     const fs::path glb = dir / (method + ".glb"), json = dir / (method + ".json");
     for (const fs::path& out : {glb, json}) {
-      const auto r = run_cli("reduce " + kBandai + " -o " + out.string() + " --method " + method + " --tolerance-deg 0.5 -q");
+      const auto r = run_cli("reduce " + kBandai + " -o " + out.string() + " --method " + method + " --tolerance 0.5deg -q");
       ASSERT_EQ(r.exit_code, 0) << r.err;
     }
     auto back = read_clip(glb);
@@ -441,7 +451,7 @@ TEST(Reduce, AHandDriftingBeyondTheShellBudgetIsCaughtThoughEveryJointIsWithinIt
     return m;
   });
   const Clip clip = motion.sample(3.0, Rate{60, 1}, "arm");
-  const DenseClip ref = dense_clip(clip);
+  const DenseClip ref = exact_frames(clip);
   auto rebuilt = [&](const ReduceResult& r) {
     Motion m{ref.rotation, ref.translation};
     for (std::size_t j = 0; j < r.joints.size(); ++j)
@@ -496,9 +506,9 @@ TEST(ReduceCli, BadBudgetsAreUsageErrorsAndLeaveThePreviousOutputIntact) {
   const fs::path out = dir / "keys.json";
   { std::ofstream(out) << "previous"; }
   for (const std::string args :
-       {"--tolerance-deg 0", "--tolerance-deg -1", "--tolerance-deg nan", "--tolerance-mm inf", "--tolerance-mm abc",
-        "--tolerance-deg 1 --tolerance-for Hips=0deg", "--tolerance-deg 1 --tolerance-for NoSuchJoint=1deg",
-        "--tolerance-deg 1 --tolerance-for Hips=1", "--tolerance-mm 1 --shell-distance 0", "--method nope",
+       {"--tolerance 0deg", "--tolerance -1deg", "--tolerance nandeg", "--tolerance infmm", "--tolerance abcmm",
+        "--tolerance 1deg --tolerance-for Hips=0deg", "--tolerance 1deg --tolerance-for NoSuchJoint=1deg",
+        "--tolerance 1deg --tolerance-for Hips=1", "--tolerance 1mm --shell-distance 0", "--method nope",
         "--methods slerp,nope"}) {
     const auto r = run_cli("reduce " + kBandai + " -o " + out.string() + " " + args);
     EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
@@ -517,7 +527,7 @@ TEST(ReduceCli, BadBudgetsAreUsageErrorsAndLeaveThePreviousOutputIntact) {
 TEST(ReduceCli, MethodsTableAndReportListEveryMethod) {
   const fs::path dir = temp_dir("report");
   const fs::path report = dir / "report.json";
-  const auto r = run_cli("reduce " + kBandai + " --methods all --tolerance-mm 1 --report " + report.string() + " -q");
+  const auto r = run_cli("reduce " + kBandai + " --methods all --tolerance 1mm --report " + report.string() + " -q");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json doc = nlohmann::json::parse(slurp(report));
   ASSERT_EQ(doc["methods"].size(), methods().size());

@@ -9,9 +9,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdint>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <vector>
 
 #include <unistd.h>
 
@@ -99,6 +103,42 @@ TEST(Comparison, SheetHasARowPerMethodAndAColumnPerFrame) {
   fs::remove_all(dir);
 }
 
+// One colour scale for the whole sheet (issue 28: it changed from column to column).
+// A frame's panel in its own PNG is on the frame's scale; its cell in the sheet is on
+// the sheet's, so only the frame with the smaller error is coloured differently there.
+// Coloured by method, panel and cell differ only in their titles (the control).
+TEST(Comparison, SheetCellsShareOneColourScale) {
+  const Clip clip = test::synthetic_clip();
+  std::size_t control[2] = {0, 0};
+  for (Colouring colouring : {Colouring::method, Colouring::error}) {
+    ComparisonOptions o = three_panel_options();  // frames 15 and 25
+    o.sheet = true;
+    o.strip = false;
+    o.colouring = colouring;
+    const fs::path dir = fresh_dir("one_scale");
+    auto result = render_comparison(clip, dir, o);
+    ASSERT_TRUE(result.ok()) << result.error();
+    const test::Pixels sheet = test::read_png(dir / "sheet.png");
+    const Rect panel = grid_layout(3, automatic_columns(3, 480, 200), 480, 200)[2];  // squad
+    const auto cells = grid_layout(6, 2, sheet.width, sheet.height);
+    std::size_t differing[2];
+    for (int f = 0; f < 2; ++f) {
+      const test::Pixels frame = test::read_png(dir / (f == 0 ? "frame_000015.png" : "frame_000025.png"));
+      differing[f] = test::differing_pixels(test::crop(frame, panel), test::crop(sheet, cells[4 + static_cast<std::size_t>(f)]));
+    }
+    fs::remove_all(dir);
+    if (colouring == Colouring::method) {
+      control[0] = differing[0], control[1] = differing[1];
+    } else {
+      // Panel and cell differ alike in both frames (titles, the worst joint's label)
+      // but for the recoloured bones of the frame with the smaller error: hundreds of
+      // pixels (none with a scale per frame).
+      const auto excess = [&](int f) { return static_cast<long>(differing[f]) - static_cast<long>(control[f]); };
+      EXPECT_GT(std::abs(excess(0) - excess(1)), 100) << "excess over the control: " << excess(0) << ", " << excess(1);
+    }
+  }
+}
+
 TEST(Comparison, ATrailIsDrawnWhenAsked) {
   const Clip clip = test::synthetic_clip();
   ComparisonOptions with = three_panel_options();
@@ -124,7 +164,7 @@ TEST(Comparison, BadRequestsFailWithOneLineNamingTheProblem) {
   };
   const Case cases[] = {
       {[](ComparisonOptions& o) { o.trail_joint = "Tail"; }, "no joint 'Tail'"},
-      {[](ComparisonOptions& o) { o.frames = FrameRange{10, 61, 1}; }, "outside the clip"},
+      {[](ComparisonOptions& o) { o.frames = FrameRange{10, 61, 1}; }, "runs past the clip's end"},
       {[](ComparisonOptions& o) { o.methods = {"slerp", "nonesuch"}; }, "unknown method 'nonesuch'"},
       {[](ComparisonOptions& o) { o.width = 60; }, "too small"},
       {[](ComparisonOptions& o) { o.height = 9000; }, "8192"},

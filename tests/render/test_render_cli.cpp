@@ -103,7 +103,7 @@ TEST(RenderCli, ErrorsGiveOneLineAndExitCode) {
   };
   const Case cases[] = {
       {render_args(dir, extra("--trail NoSuchJoint")), 1, "NoSuchJoint"},
-      {render_args(dir, frames("2700:2800")), 1, "outside the clip"},
+      {render_args(dir, frames("2700:2800")), 1, "runs past the clip's end"},
       {render_args(dir, size("100x30")), 2, "too small"},
       {render_args(dir, size("9000x100")), 2, "8192"},
       {render_args(dir, size("big")), 2, "WxH"},

@@ -10,6 +10,7 @@
 
 #include "rotinterp/core/result.h"
 #include "rotinterp/core/rotation.h"
+#include "rotinterp/clip/units.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -89,7 +90,7 @@ struct Clip {
   // One entry per joint; empty where the joint has no translation keys.
   std::vector<std::optional<TranslationTrack>> translations;
   double frame_time = 0.0;    // seconds per frame of the source (BVH Frame Time), 0 if none
-  double unit_scale = 1.0;    // metres per clip unit where the source says so (FBX cm → 0.01)
+  ClipUnit unit;              // metres per clip unit and where that came from (clip/units.h)
   std::string source_format;  // "bvh", "fbx", … (informational)
   std::size_t source_meshes = 0;  // meshes (with their skins) in the source: no writer keeps them
   // The file's own frame rate where it states one apart from its keys (FBX
@@ -120,5 +121,16 @@ struct WorldPose {
 };
 void forward_kinematics(const Skeleton& skeleton, const std::vector<Quat>& local_rotation,
                         const std::vector<Vec3>& local_translation, WorldPose& out);
+
+// The rest pose: every joint at its rest rotation and offset.
+WorldPose rest_pose(const Skeleton& skeleton);
+
+// The height used to express position errors as a percentage: the largest side of
+// the bounding box of all joint and End Site positions in `pose`. 0 for a skeleton
+// of one point (the caller then reports percentages against 1 unit).
+double skeleton_height(const WorldPose& pose);
+
+// `metres` in the clip's units (through Clip::unit).
+double in_clip_units(const Clip& clip, double metres);
 
 }  // namespace rotinterp

@@ -68,17 +68,7 @@ struct RunningError {
 
 // ---- skeleton geometry ------------------------------------------------------------
 
-// The rest pose: every joint at its rest rotation and offset.
-WorldPose rest_pose(const Skeleton& skeleton);
-
-// The height used to express position errors as a percentage: the largest side of
-// the bounding box of all joint and End Site positions in `pose`. 0 for a skeleton
-// of one point (the caller then reports percentages against 1 unit).
-double skeleton_height(const WorldPose& pose);
-
-// `metres` in the clip's units (Clip::unit_scale metres per unit; a unit_scale that
-// is not a positive finite number is read as 1).
-double metres_in_clip_units(const Clip& clip, double metres);
+// rest_pose(), skeleton_height() and in_clip_units() are in clip/clip.h.
 
 // ---- rotation error of one joint ----------------------------------------------------
 

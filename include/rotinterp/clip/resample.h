@@ -20,6 +20,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -29,12 +30,21 @@ namespace rotinterp {
 // real clips (README "rotinterp resample").
 inline constexpr const char* kDefaultResampleMethod = "clamped";
 
-// A time range in seconds measured from the clip's first frame (0 = first frame).
-// end = +∞ means "to the clip's end".
+// A time range measured from the clip's first frame (0 = first frame), each bound
+// in seconds or, when its *_in_frames is set, in source frames (whole numbers,
+// turned into seconds with the clip's exact rate). end = +∞ means "to the clip's end".
 struct TimeRange {
   double start = 0.0;
   double end = std::numeric_limits<double>::infinity();
+  bool start_in_frames = false;
+  bool end_in_frames = false;
 };
+
+// "START:END" (the --range text): each side empty, seconds ("1.5", "1.5s") or frames
+// ("120f"); mixed forms are allowed ("2:480f"). Errors (one line, naming the text):
+// no colon, a side that is neither, a negative bound, a fractional frame, END not after
+// START when both are in one unit.
+Result<TimeRange> parse_time_range(std::string_view text);
 
 struct ResampleOptions {
   // Output rate. Unset and keep_every unset: the source's own rate (a round trip
@@ -65,7 +75,9 @@ struct ResampleOptions {
 // frame_time = 1/HZ for --fps, else the source's frame time, else (keys on no grid)
 // the file's own rate (Clip::file_rate_hz, FBX) as if given as fps. Errors: both fps and
 // keep_every given, keep_every < 1, no source frame rate where one is needed,
-// unknown method (listing the valid names) or joint, a range outside the clip.
+// unknown method (listing the valid names) or joint, a range that starts before the
+// clip, runs past its end (the message gives the end in seconds and frames) or is empty,
+// a range in frames on a clip without a frame rate.
 Result<Clip> resample_clip(const Clip& clip, const ResampleOptions& options);
 
 }  // namespace rotinterp

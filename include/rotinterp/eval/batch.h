@@ -45,6 +45,8 @@ struct EvalOptions {
   // empty or not unique), even when only one of them is evaluated; a file of one
   // take keeps its plain path.
   std::string animation;
+  // Metres per unit of files that state no unit (--unit; io/read.h ReadOptions::unit).
+  std::optional<double> unit;
   std::optional<PerFrameRequest> per_frame;   // also write DIR/per_frame.csv
   // Analytic truth for a clip file (synth clips); an error fails that clip. Unset:
   // every clip is compared with its own frames. Called from worker threads.

@@ -25,14 +25,14 @@ struct ErrorRow {
   // Geodesic angle, degrees (joints only).
   double mean_deg = 0, rms_deg = 0, p95_deg = 0, max_deg = 0;
   double swing_rms_deg = 0, twist_rms_deg = 0;
-  // World position error by forward kinematics, clip units and % of skeleton height.
+  // World position error by forward kinematics, metres and % of skeleton height.
   double pos_rms = 0, pos_max = 0, pos_rms_pct = 0, pos_max_pct = 0;
-  // Virtual-vertex (shell) error at the shell distance, clip units (joints only).
+  // Virtual-vertex (shell) error at the shell distance, metres (joints only).
   double shell_rms = 0, shell_max = 0;
   // Smoothness (joints only): RMS angular acceleration of the rebuilt and of the
   // original curve (deg/s²), largest velocity (deg/s) and acceleration (deg/s²) jump at keys.
   double acc_rms = 0, acc_rms_ref = 0, vel_jump_max = 0, acc_jump_max = 0;
-  double height = 0;  // skeleton height used for the percentages, clip units
+  double height = 0;  // skeleton height used for the percentages, metres
   // The source (joints only): its largest key count, and the largest angle (degrees)
   // the joint turns away from its first frame — 0 for a joint that never moves.
   double keys = 0, motion_deg = 0;
@@ -42,6 +42,9 @@ struct ErrorRow {
   bool foot = false;
   double contact_frames = 0, skate_frames = 0, skate_speed = 0;
   double contact_frames_ref = 0, skate_frames_ref = 0, skate_speed_ref = 0;
+  // The clip's unit (clip/units.h): metres per unit, and its name and reason.
+  double metres_per_unit = 1;
+  std::string unit;
 };
 
 // A measured (floating-point) column of errors.csv: its name, the ErrorRow field
@@ -53,7 +56,7 @@ struct ErrorValueColumn {
   bool joint_only;
   bool foot_only;
 };
-// mean_deg … acc_jump_max_dps2, height, keys … skate_speed_ref_mps, in file order.
+// mean_deg … acc_jump_max_dps2, height_m, keys … skate_speed_ref_mps, metres_per_unit, in file order.
 const std::vector<ErrorValueColumn>& error_value_columns();
 
 // The CSV header line (no newline): clip,method,keep_every,joint,frames,mean_deg,…

@@ -29,7 +29,7 @@ struct ClipEvalOptions {
   std::vector<std::string> methods;  // registry names, evaluated in this order
   std::vector<int> keep_every;       // each ≥ 1, in this order
   int subframe = 0;                  // extra samples between consecutive frames (0 … 1000)
-  double shell_distance_m = kDefaultShellDistanceMetres;  // metres, converted by Clip::unit_scale
+  double shell_distance_m = kDefaultShellDistanceMetres;  // metres, converted by Clip::unit
   TruthFn truth;                     // optional reference instead of the clip's frames
   std::size_t min_frames = 0;        // clips with fewer frames are skipped (see skipped_spacings)
   FootContactOptions feet;           // foot joints, contact thresholds, floor
@@ -66,11 +66,11 @@ struct ClipReference {
   std::vector<std::optional<TranslationTrack>> translation_tracks;  // [joint]
   // The source: largest key count and largest angle from the first frame (degrees), [joint].
   std::vector<double> keys, motion_deg;
-  // Foot contact (foot_skating.h): the feet, the floor (clip units), metres per
-  // unit (estimated for a format without units), and the reference's contacts [foot].
+  // Foot contact (foot_skating.h): the feet, the floor (clip units), and the
+  // reference's contacts [foot]; the clip's metres per unit and its description.
   std::vector<std::size_t> feet;
   double floor = 0.0, metres_per_unit = 1.0;
-  bool unit_estimated = false;
+  std::string unit;
   std::vector<FootContact> foot_ref;
 };
 

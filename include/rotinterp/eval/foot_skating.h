@@ -8,7 +8,7 @@
 // `contact_speed_mps`. Y is up (BVH, and assimp's scenes). The floor is the lowest
 // height any foot reaches in the reference over the clip, or `floor_m`. Both
 // thresholds are metres and are converted with the clip's metres per unit
-// (metres_per_unit()). The defaults are those of the widely copied evaluation
+// (Clip::unit, clip/units.h). The defaults are those of the widely copied evaluation
 // scripts (5 cm, 0.5 m/s), which apply them per frame at a fixed 20 fps; here the
 // speed is measured over the clip's own frame times.
 #pragma once
@@ -27,11 +27,6 @@ namespace rotinterp {
 constexpr double kDefaultContactHeightMetres = 0.05;
 // Horizontal foot speed above which a foot in contact skates, metres per second.
 constexpr double kDefaultContactSpeedMps = 0.5;
-// A clip whose format states no unit (BVH) is taken to show a figure whose skeleton
-// height (metrics.h skeleton_height: the largest side of the rest pose's box,
-// joint centres, so about an adult's arm span or height less head and soles) is
-// this many metres.
-constexpr double kAssumedSkeletonHeightMetres = 1.6;
 
 struct FootContactOptions {
   std::vector<std::string> feet;        // joint names; empty: found by name (find_feet)
@@ -51,11 +46,6 @@ std::vector<std::size_t> find_feet(const Skeleton& skeleton);
 
 // The joints named in `names`; an error names one that is not in the skeleton.
 Result<std::vector<std::size_t>> feet_by_name(const Skeleton& skeleton, const std::vector<std::string>& names);
-
-// Metres per unit of `clip`: its unit_scale when its format states a unit (not BVH),
-// else kAssumedSkeletonHeightMetres / `skeleton_height` (clip units); `estimated`
-// says which.
-double metres_per_unit(const Clip& clip, double skeleton_height, bool& estimated);
 
 // One foot over a clip.
 struct FootContact {

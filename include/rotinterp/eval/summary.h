@@ -40,6 +40,8 @@ struct ClipResult {
   std::string clip, method;
   int keep_every = 1;
   std::size_t frames = 0, joints = 0, samples = 0;
+  double metres_per_unit = 1;      // the clip's unit (clip/units.h) …
+  std::string unit;                // … its name and where it came from
   double keys = 0;                 // largest key count of any joint in the source
   double motion_deg = 0;           // largest angle any joint turns from the first frame (0: static)
   double mean_deg = 0, rms_deg = 0;  // over all its joint samples
@@ -122,6 +124,7 @@ std::string clips_csv(const Summary& summary);
 struct EvalFailure {
   std::string file;
   std::string message;  // one line, names the file
+  ErrorKind kind = ErrorKind::other;  // the reader's kind where it failed to read (no_animation: a static mesh)
 };
 
 // A clip evaluated at fewer spacings than asked, or at none: too few frames
@@ -144,11 +147,12 @@ struct RunOptions {
   std::vector<std::string> feet;    // --feet; empty: by name
   double contact_height_m = 0, contact_speed_mps = 0;
   std::optional<double> floor_m;
+  std::optional<double> unit;       // --unit, metres per unit of files that state none
   friend bool operator==(const RunOptions& a, const RunOptions& b) {
     return a.methods == b.methods && a.keep_every == b.keep_every && a.subframe == b.subframe &&
            a.shell_distance_m == b.shell_distance_m && a.truth == b.truth && a.animation == b.animation &&
            a.min_frames == b.min_frames && a.feet == b.feet && a.contact_height_m == b.contact_height_m &&
-           a.contact_speed_mps == b.contact_speed_mps && a.floor_m == b.floor_m;
+           a.contact_speed_mps == b.contact_speed_mps && a.floor_m == b.floor_m && a.unit == b.unit;
   }
 };
 

@@ -54,10 +54,15 @@ struct MethodInfo {
 // All methods, in a stable order: slerp, squad, expmap, nlerp, bf, c2, expmap-c2, clamped,
 // gltf-cubic.
 const std::vector<MethodInfo>& methods();
-// The method called `name`, or nullptr.
+// The method called `name`, ignoring ASCII case ("SLERP" is slerp), or nullptr.
+// Callers that keep the name keep MethodInfo::name, the one spelling.
 const MethodInfo* find_method(std::string_view name);
 // Comma-separated names of all methods, for error messages.
 std::string method_names();
+// The one error line for a name find_method does not know: "unknown method 'slrep'
+// (did you mean slerp? valid: slerp, squad, …)"; the guess is the nearest name by
+// edit distance, given only when it is within a third of the name's length (≥ 2).
+std::string unknown_method_message(std::string_view name);
 // Builds `method` on `track`. The track must satisfy rules 1–3 of RotationTrack
 // (times strictly increasing, finite unit keys); rule 4 (sign continuity) is not
 // required: every method aligns neighbouring keys to one hemisphere itself and

@@ -30,6 +30,12 @@ struct ClipFileInfo {
   std::size_t folded_helpers = 0;     // `$AssimpFbx$` helper nodes folded into bones
 };
 
+// A file without animation is refused (ErrorKind::no_animation) with "FILE: the file
+// has no animation (it holds 1 mesh, 2 nodes: RootNode, Cube)".
+inline constexpr const char* kHoldsPrefix = "it holds ";
+// What such an error says the file holds ("1 mesh, 2 nodes: RootNode, Cube"), or "".
+std::string static_scene_contents(const std::string& no_animation_error);
+
 // Reads `path` like read_clip() and also reports what the file holds.
 Result<ClipFileInfo> inspect_clip(const std::filesystem::path& path, const ReadOptions& options = {});
 

@@ -17,6 +17,8 @@
 //    are exact. A uniform static scale on a node is baked into the translations of
 //    its descendants; other scale is ignored with a warning.
 //  * Every key is normalized and the track made sign-continuous.
+//  * The clip's unit (Clip::unit) is settled here, once: declared by the file, given
+//    (ReadOptions::unit) or inferred (clip/units.h).
 #pragma once
 
 #include "rotinterp/clip/clip.h"
@@ -25,6 +27,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 
 namespace rotinterp {
@@ -42,6 +45,10 @@ struct ReadOptions {
   std::string animation;
   // Where warnings go; empty = dropped. The CLI prints them on stderr.
   WarningFn on_warning;
+  // Metres per unit for a file that states no unit (BVH): the user's --unit. Empty =
+  // inferred from the figure's size (clip/units.h infer_unit). A file that declares
+  // its unit (FBX, glTF, Collada) keeps it, and a given unit is ignored with a warning.
+  std::optional<double> unit;
   // FBX: true (default) keeps assimp's `$AssimpFbx$` pivot helper nodes and folds them
   // into their bones here, which is exact. false sets AI_CONFIG_IMPORT_FBX_PRESERVE_PIVOTS
   // off so assimp folds them itself; it then leaves animation channels that target the

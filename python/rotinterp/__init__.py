@@ -1,11 +1,22 @@
 """rotinterp: resample, compare and evaluate keyframed 3-D orientations on numpy arrays.
 
-Quaternion layout, for every function here: float64 arrays whose last axis is 4,
+Quaternion layout, for every function here: arrays whose last axis is 4,
 scalar-last ``(x, y, z, w)`` by default (as scipy.spatial.transform.Rotation's
-``as_quat()``), scalar-first ``(w, x, y, z)`` with ``scalar_first=True``. Times are
-seconds. Angles are radians, except in ``evaluate``'s columns (degrees, as in
-``errors.csv``). Errors raise ``ValueError`` (bad input) or ``OSError`` (files)
-carrying the same one-line message as the ``rotinterp`` command.
+``as_quat()``), scalar-first ``(w, x, y, z)`` with ``scalar_first=True``.
+
+Quaternion input is taken as scipy's ``Rotation.from_quat`` takes it: any real dtype
+(float32 included), and every finite non-zero quaternion is normalized, so keys
+rounded to float32 or to 6 printed decimals are accepted as the rotations they
+stand for. A zero, NaN or infinite quaternion raises ``ValueError`` naming its index
+(``quats[3, 1] is zero``). A scipy ``Rotation`` (anything with ``as_quat()``) is
+accepted wherever quaternions are, whatever ``scalar_first`` says (it is the layout
+of the arrays returned). Times may be any real dtype. Outputs are float64 unit
+quaternions.
+
+Times are seconds. Angles are radians, except in ``evaluate``'s columns and
+``reduce``'s report (degrees, as in ``errors.csv`` and the keys file). Positions
+are metres. Errors raise ``ValueError`` (bad input) or ``OSError`` (files) carrying
+the same one-line message as the ``rotinterp`` command.
 """
 from . import _rotinterp
 from ._rotinterp import Clip, Interpolator
@@ -15,7 +26,7 @@ __version__ = _rotinterp.__version__
 default_method = _rotinterp.default_method
 
 __all__ = ["Clip", "Interpolator", "methods", "interpolate", "make_interpolator", "read_clip", "write_clip",
-           "resample", "evaluate", "angle", "swing_twist", "default_method"]
+           "resample", "evaluate", "info", "reduce", "render", "angle", "swing_twist", "default_method"]
 
 
 def methods():
@@ -39,17 +50,29 @@ def interpolate(times, quats, new_times, method=default_method, scalar_first=Fal
 
 def make_interpolator(times, quats, method=default_method, scalar_first=False):
     """Build one track's interpolator: ``f(t)`` gives (4,) for a number or (N, 4) for an
-    array of times, ``f.angular_velocity(t)`` the fixed-frame (world) angular velocity in
-    rad/s ((3,) or (N, 3)), in closed form. scipy's ``RotationSpline(t, 1)`` gives the
-    body-frame rate: ``Rotation.from_quat(f(t)).inv().apply(f.angular_velocity(t))``."""
+    array of times.
+
+    ``f.angular_velocity(t, frame="fixed")`` is the angular velocity in rad/s and
+    ``f.angular_acceleration(t, frame="fixed")`` its time derivative in rad/s², each (3,)
+    or (N, 3). frame="fixed": in the world frame; frame="body": in the moving frame,
+    q(t)^-1 applied to the fixed-frame vector, which is what scipy's
+    ``RotationSpline(t, 1)`` and ``(t, 2)`` return (for "c2", the same curve as
+    RotationSpline, they agree). The velocity is in closed form for every method; the
+    acceleration in closed form for "c2", "clamped" and "slerp" (zero inside segments),
+    for the others the difference quotient of the closed-form velocity inside the
+    segment (relative error about 1e-10). At a key both belong to the segment starting
+    there; outside the key range both are zero (the curve holds its end keys)."""
     return _rotinterp.make_interpolator(times, quats, method, scalar_first)
 
 
-def read_clip(path, anim=None):
+def read_clip(path, anim=None, unit=None):
     """Read a clip (BVH, FBX, glTF/GLB, Collada, ...). ``anim``: an animation's name or
-    index (default: the first). Raises FileNotFoundError/IsADirectoryError for a path
-    that is not a file, ValueError for a file that is not a clip."""
-    return _rotinterp.read_clip(str(path), anim)
+    index (default: the first). ``unit``: what one clip unit is, as ``--unit`` takes it
+    ("m", "cm", "mm", "in", "ft") or metres per unit as a number; default the file's,
+    else inferred from the figure's size (``clip.unit`` says which and why). Raises
+    FileNotFoundError/IsADirectoryError for a path that is not a file, ValueError for a
+    file that is not a clip."""
+    return _rotinterp.read_clip(str(path), anim, unit)
 
 
 def write_clip(clip, path, bvh_order="ZXY"):
@@ -57,6 +80,48 @@ def write_clip(clip, path, bvh_order="ZXY"):
     atomically, the same bytes as the ``rotinterp`` command writes. ``bvh_order``: the
     Euler order of joints without a BVH layout. Raises OSError when it cannot write."""
     _rotinterp.write_clip(clip, str(path), bvh_order)
+
+
+def info(path, anim=None, unit=None):
+    """What a clip file holds, as a dict: the document ``rotinterp info --json PATH``
+    prints (format, animations, frames, rate, duration, unit, joints with their channels
+    and key counts, oddities, warnings). Raises as ``read_clip`` does."""
+    return _rotinterp.info(str(path), anim, unit)
+
+
+def reduce(clip, method="slerp", tolerance=None, shell_distance=None, tolerance_for=None, translation="cubic",
+           metres_per_unit=None):
+    """Keep the fewest keys per joint that rebuild ``clip`` with ``method`` within a
+    budget, as ``rotinterp reduce`` does (the same keys), with its options in its forms:
+    ``tolerance`` items with their units, an angle ("0.5deg", "0.01rad") on each joint's
+    local rotation and/or a length ("1mm", "0.1cm") on the shell of virtual vertices in
+    object space and the translation tracks, as "0.5deg,1mm" or a list (default 1mm);
+    ``shell_distance`` a length ("10cm", the default) or a number of metres;
+    ``tolerance_for`` ``{joint: items}``. ``metres_per_unit``: ``clip.unit``'s unless given.
+
+    Returns a dict: ``clip`` (the reduced Clip: each track holding only its kept keys),
+    ``joints`` (per joint: ``name``, ``rotation_frames`` and ``translation_frames``, the
+    kept frame indices, and the largest errors over every frame in degrees and mm),
+    ``frames``, ``source_keys``, ``kept_keys``, ``metres_per_unit`` and the largest
+    errors over all joints. Releases the GIL."""
+    return _rotinterp.reduce(clip, method, tolerance, shell_distance, tolerance_for, translation, metres_per_unit)
+
+
+def render(input, out_dir=None, methods=None, keep_every=10, frames=None, size="960x540", trail="", trail_window=1.0,
+           sheet=False, colour="error", camera=None, focus="", strip=True, video=None, video_fps=0.0, backend=None):
+    """Draw comparison frames offscreen, as ``rotinterp render`` does (the same PNGs for
+    the same options): the clip (a Clip or a path) rebuilt by each method from every
+    ``keep_every``-th frame, side by side. Options as the command's, in its forms:
+    ``frames`` "START:END:STEP", ``size`` "WxH", ``colour`` "error" or "method", ``camera``
+    "fixed" or "follow", ``backend`` "osmesa" or "egl". Returns the paths written (frames,
+    then the sheet, then the video). Raises RuntimeError where the module was built
+    without the renderer. Releases the GIL."""
+    if not hasattr(_rotinterp, "render"):
+        raise RuntimeError("rotinterp was built without the renderer (ROTINTERP_BUILD_RENDER=OFF)")
+    return _rotinterp.render(input if isinstance(input, Clip) else str(input),
+                             None if out_dir is None else str(out_dir), None if methods is None else list(methods),
+                             keep_every, frames, size, trail, trail_window, sheet, colour, camera, focus, strip,
+                             None if video is None else str(video), video_fps, backend)
 
 
 def resample(clip, fps=None, keep_every=None, method=default_method, method_for=None, translation="cubic",

@@ -1,8 +1,9 @@
 # Type stub for the rotinterp package (signatures; the docstrings are in __init__.py).
-# Quaternions: float64 arrays with last axis 4, (x, y, z, w) unless scalar_first=True.
+# Quaternions: arrays with last axis 4, (x, y, z, w) unless scalar_first=True, any real
+# dtype, normalized on input; or a scipy Rotation (QuatLike).
 from fractions import Fraction
 from os import PathLike
-from typing import Mapping, Sequence, TypedDict
+from typing import Any, Literal, Mapping, Sequence, TypedDict
 
 import numpy as np
 import numpy.typing as npt
@@ -12,6 +13,8 @@ default_method: str
 
 ArrayLike = npt.ArrayLike
 Path = str | PathLike[str]
+QuatLike = ArrayLike  # or any object with as_quat(), e.g. scipy.spatial.transform.Rotation
+Frame = Literal["fixed", "body"]
 
 class MethodInfo(TypedDict):
     name: str
@@ -21,9 +24,15 @@ class MethodInfo(TypedDict):
     exact_on_constant_velocity: bool
     preserves_holds: bool
 
+class ClipUnit:
+    metres_per_unit: float
+    origin: Literal["declared", "given", "inferred", "assumed"]
+    reason: str
+    name: str                                     # "cm", "in", … or "0.0652 m"
+
 class Clip:
     def __init__(self, names: Sequence[str], parents: ArrayLike, offsets: ArrayLike, times: ArrayLike,
-                 rotations: ArrayLike, translations: Mapping[str, ArrayLike] | None = None,
+                 rotations: QuatLike, translations: Mapping[str, ArrayLike] | None = None,
                  frame_time: float | None = None, unit_scale: float = 1.0, scalar_first: bool = False,
                  name: str = "clip") -> None: ...
     @property
@@ -51,24 +60,37 @@ class Clip:
     @property
     def unit_scale(self) -> float: ...            # metres per clip unit
     @property
+    def unit(self) -> ClipUnit: ...
+    @property
+    def metres_per_unit(self) -> float: ...       # = unit.metres_per_unit: what positions() and reduce() use
+    @property
+    def joint_names(self) -> list[str]: ...       # = names
+    def positions(self, frames: int | ArrayLike | None = None) -> np.ndarray: ...  # (F, J, 3) world, metres
+    @property
+    def euler_orders(self) -> list[str]: ...      # each joint's order in its file ("ZXY"), first axis outermost
+    @property
+    def local_rotations(self) -> np.ndarray: ...  # (F, J, 3) radians, each joint in its file's order
+    def to_euler(self, order: str | None = None, degrees: bool = False) -> np.ndarray: ...  # (F, J, 3)
+    @property
     def source_format(self) -> str: ...
     @property
     def frame_count(self) -> int: ...
 
 class Interpolator:
     def __call__(self, t: float | ArrayLike) -> np.ndarray: ...
-    def angular_velocity(self, t: float | ArrayLike) -> np.ndarray: ...
+    def angular_velocity(self, t: float | ArrayLike, frame: Frame = "fixed") -> np.ndarray: ...      # rad/s
+    def angular_acceleration(self, t: float | ArrayLike, frame: Frame = "fixed") -> np.ndarray: ...  # rad/s²
     @property
     def method(self) -> str: ...
     @property
     def times(self) -> np.ndarray: ...
 
 def methods() -> list[MethodInfo]: ...
-def interpolate(times: ArrayLike, quats: ArrayLike, new_times: ArrayLike, method: str = ...,
+def interpolate(times: ArrayLike, quats: QuatLike, new_times: ArrayLike, method: str = ...,
                 scalar_first: bool = False) -> np.ndarray: ...
-def make_interpolator(times: ArrayLike, quats: ArrayLike, method: str = ...,
+def make_interpolator(times: ArrayLike, quats: QuatLike, method: str = ...,
                       scalar_first: bool = False) -> Interpolator: ...
-def read_clip(path: Path, anim: str | int | None = None) -> Clip: ...
+def read_clip(path: Path, anim: str | int | None = None, unit: str | float | None = None) -> Clip: ...
 def write_clip(clip: Clip, path: Path, bvh_order: str = "ZXY") -> None: ...
 def resample(clip: Clip, fps: float | str | Fraction | None = None, keep_every: int | None = None,
              method: str = ..., method_for: Mapping[str, str] | None = None, translation: str = "cubic",
@@ -76,5 +98,14 @@ def resample(clip: Clip, fps: float | str | Fraction | None = None, keep_every: 
 def evaluate(inputs: Path | Clip | Sequence[Path | Clip], methods: Sequence[str] | None = None,
              keep_every: Sequence[int] = (2, 4, 8, 16), subframe: int = 0,
              shell_distance: float = 0.03) -> dict[str, np.ndarray]: ...
-def angle(a: ArrayLike, b: ArrayLike, scalar_first: bool = False) -> np.ndarray: ...
-def swing_twist(q: ArrayLike, axis: ArrayLike, scalar_first: bool = False) -> tuple[np.ndarray, np.ndarray]: ...
+def info(path: Path, anim: str | int | None = None, unit: str | float | None = None) -> dict[str, Any]: ...
+def reduce(clip: Clip, method: str = "slerp", tolerance: str | Sequence[str] | None = None,
+           shell_distance: str | float | None = None, tolerance_for: Mapping[str, str | Sequence[str]] | None = None,
+           translation: str = "cubic", metres_per_unit: float | None = None) -> dict[str, Any]: ...
+def render(input: Path | Clip, out_dir: Path | None = None, methods: Sequence[str] | None = None, keep_every: int = 10,
+           frames: str | None = None, size: str = "960x540", trail: str = "", trail_window: float = 1.0,
+           sheet: bool = False, colour: str = "error", camera: str | None = None, focus: str = "",
+           strip: bool = True, video: Path | None = None, video_fps: float = 0.0,
+           backend: str | None = None) -> list[str]: ...
+def angle(a: QuatLike, b: QuatLike, scalar_first: bool = False) -> np.ndarray: ...
+def swing_twist(q: QuatLike, axis: ArrayLike, scalar_first: bool = False) -> tuple[np.ndarray, np.ndarray]: ...

@@ -260,47 +260,7 @@ int run_info(const InfoArgs& args) {
     if (sk.joints[j].parent >= 0) depth[j] = depth[static_cast<std::size_t>(sk.joints[j].parent)] + 1;
 
   if (args.json) {
-    nlohmann::json out;
-    out["file"] = path;
-    out["format"] = info->format;
-    out["animations"] = nlohmann::json::array();
-    for (std::size_t a = 0; a < info->animations.size(); ++a) {
-      const AnimationSummary& s = info->animations[a];
-      out["animations"].push_back({{"index", a}, {"name", s.name}, {"duration_s", s.duration},
-                                   {"ticks_per_second", s.ticks_per_second}, {"default_rate", s.default_rate},
-                                   {"channels", s.channels}, {"selected", a == info->selected}});
-    }
-    out["frames"] = clip.frame_count();
-    out["frame_time_s"] = clip.frame_time;
-    out["frame_rate_hz"] = rate ? rate->hz() : 0.0;
-    out["frame_rate"] = rate ? nlohmann::json(rate->to_string()) : nlohmann::json(nullptr);
-    out["file_frame_rate_hz"] = clip.file_rate_hz > 0 ? nlohmann::json(clip.file_rate_hz) : nlohmann::json(nullptr);
-    out["start_s"] = clip.start_time();
-    out["end_s"] = clip.end_time();
-    out["duration_s"] = duration;
-    out["unit"] = unit_json(clip.unit);
-    out["figure_size_m"] = size_m;
-    out["folded_helpers"] = info->folded_helpers;
-    nlohmann::json joints = nlohmann::json::array();
-    nlohmann::json translated = nlohmann::json::array();
-    for (std::size_t j = 0; j < sk.joints.size(); ++j) {
-      const Joint& jt = sk.joints[j];
-      nlohmann::json channels = nlohmann::json::array();
-      for (Channel c : bvh_channels(clip, j)) channels.push_back(channel_name(c));
-      joints.push_back({{"name", jt.name},
-                        {"parent", jt.parent >= 0 ? nlohmann::json(sk.joints[static_cast<std::size_t>(jt.parent)].name)
-                                                  : nlohmann::json(nullptr)},
-                        {"channels", channels},
-                        {"rotation_keys", clip.rotations[j].keys.size()},
-                        {"translation_keys", clip.translations[j] ? clip.translations[j]->keys.size() : 0}});
-      if (clip.translations[j]) translated.push_back(jt.name);
-    }
-    out["joints"] = joints;
-    out["end_sites"] = sk.end_sites.size();
-    out["translation_tracks"] = translated;
-    out["oddities"] = odd;
-    out["warnings"] = info->warnings;
-    fmt::print("{}\n", out.dump(2));
+    fmt::print("{}\n", clip_info_json(path, *info));
     return kExitOk;
   }
 

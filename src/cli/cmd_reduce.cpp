@@ -29,9 +29,8 @@ namespace rotinterp::cli {
 
 namespace {
 
-// ozz-animation's default hierarchical tolerance: 1 mm at 10 cm.
-constexpr double kDefaultToleranceMm = 1.0;
-constexpr double kDefaultShellMetres = 0.10;
+constexpr double kDefaultToleranceMm = kDefaultReduceToleranceMm;
+constexpr double kDefaultShellMetres = kDefaultReduceShellDistanceCm / 100.0;
 
 struct ReduceArgs {
   std::string input, output, methods = "slerp", report, anim, translation = "cubic";

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <set>
 #include <string>
 
@@ -27,7 +28,14 @@ Status RotationTrack::validate() const {
   if (Status s = validate_times(times, keys); !s) return s;
   for (std::size_t k = 0; k < keys.size(); ++k) {
     if (!keys[k].coeffs().allFinite()) return make_error("rotation key " + std::to_string(k) + " is not finite");
-    if (std::abs(keys[k].norm() - 1.0) > 1e-9) return make_error("rotation key " + std::to_string(k) + " is not unit");
+    // The message says by how much, so that a caller can tell rounding (float32,
+    // printed decimals: normalize at the boundary) from a wrong value.
+    if (const double norm = keys[k].norm(); std::abs(norm - 1.0) > kUnitNormTolerance) {
+      char text[96];
+      std::snprintf(text, sizeof text, " is not unit (|q| = %.9g, off by %.2g; the tolerance is %g)", norm,
+                    std::abs(norm - 1.0), kUnitNormTolerance);
+      return make_error("rotation key " + std::to_string(k) + text);
+    }
     if (k > 0 && keys[k].dot(keys[k - 1]) < 0.0)
       return make_error("rotation key " + std::to_string(k) + " is not sign-continuous with the previous key");
   }

@@ -43,12 +43,18 @@ class BodyCubic final : public SegmentInterpolator<BodyCubic> {
 
   // ω = q·J_r(r)·ṙ (body rate J_r(r)ṙ, rotated to the fixed frame).
   Vec3 segment_velocity(std::size_t i, double u) const {
-    const double h = dt(i);
-    const double u2 = u * u;
-    const Vec3 rdot = (6.0 * u - 6.0 * u2) * rho_[i] / h + (3.0 * u2 - 4.0 * u + 1.0) * w_start_[i] +
-                      (3.0 * u2 - 2.0 * u) * d_end_[i];
     const Vec3 rr = r(i, u);
-    return apply_moving(k_.q[i], RotVec(rr)) * so3_right_jacobian_times(rr, rdot);
+    return apply_moving(k_.q[i], RotVec(rr)) * so3_right_jacobian_times(rr, r_dot(i, u));
+  }
+  // α = q·(J_r(r)·r̈ + (d/dt J_r(r))·ṙ): the body acceleration (scipy's
+  // RotationSpline(t, 2)) rotated to the fixed frame.
+  Vec3 segment_acceleration(std::size_t i, double u) const {
+    const double h = dt(i);
+    const Vec3 rddot =
+        ((6.0 - 12.0 * u) * rho_[i] / h + (6.0 * u - 4.0) * w_start_[i] + (6.0 * u - 2.0) * d_end_[i]) / h;
+    const Vec3 rr = r(i, u), rdot = r_dot(i, u);
+    const Vec3 body = so3_right_jacobian_times(rr, rddot) + so3_right_jacobian_rate(rr, rdot);
+    return apply_moving(k_.q[i], RotVec(rr)) * body;
   }
 
  private:
@@ -56,6 +62,14 @@ class BodyCubic final : public SegmentInterpolator<BodyCubic> {
     const double h = dt(i);
     const double u2 = u * u, u3 = u2 * u;
     return (u3 - 2.0 * u2 + u) * h * w_start_[i] + (-2.0 * u3 + 3.0 * u2) * rho_[i] + (u3 - u2) * h * d_end_[i];
+  }
+
+  // ṙ in t (rad/s).
+  Vec3 r_dot(std::size_t i, double u) const {
+    const double h = dt(i);
+    const double u2 = u * u;
+    return (6.0 * u - 6.0 * u2) * rho_[i] / h + (3.0 * u2 - 4.0 * u + 1.0) * w_start_[i] +
+           (3.0 * u2 - 2.0 * u) * d_end_[i];
   }
 
   std::vector<Vec3> rho_;      // log(qᵢ⁻¹qᵢ₊₁)

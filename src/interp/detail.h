@@ -92,6 +92,8 @@ inline Where locate(const std::vector<double>& t, double x, std::size_t& hint) {
 // per-segment function of the derived class (CRTP, so batches inline it).
 //   Derived::segment(i, u)            orientation on segment i at u ∈ [0, 1]
 //   Derived::segment_velocity(i, u)   fixed-frame angular velocity there (rad/s)
+//   Derived::segment_acceleration(i, u)  optional: its derivative in t (rad/s²);
+//                                     without it, the difference quotient below
 template <class Derived>
 class SegmentInterpolator : public Interpolator {
  public:
@@ -123,8 +125,35 @@ class SegmentInterpolator : public Interpolator {
     const Vec3 v = self().segment_velocity(w.i, w.u);
     return v.allFinite() ? v : Vec3::Zero();
   }
+  bool has_angular_acceleration() const final { return true; }
+  Vec3 angular_acceleration(double t) const final {
+    if (k_.size() == 1 || !(t >= k_.t.front() && t <= k_.t.back())) return Vec3::Zero();
+    std::size_t hint = 0;
+    const Where w = locate(k_.t, t, hint);
+    const Vec3 a = self().segment_acceleration(w.i, w.u);
+    return a.allFinite() ? a : Vec3::Zero();
+  }
+
+  // For methods without a closed form (a derived class hides it with its own): the
+  // second-order difference quotient of the closed-form segment_velocity in u, inside
+  // the segment (one-sided three-point at its ends, so never across a key, where
+  // C¹ methods jump). Step 1e-5 of the segment, near ε^(1/3): truncation and
+  // round-off both about 1e-10 of the scale of ω.
+  Vec3 segment_acceleration(std::size_t i, double u) const {
+    return difference_quotient(i, u, [this, i](double x) { return self().segment_velocity(i, x); });
+  }
 
  protected:
+  // d/dt of velocity(u) on segment i, by the quotient described above.
+  template <class Velocity>
+  Vec3 difference_quotient(std::size_t i, double u, const Velocity& v) const {
+    constexpr double h = 1e-5;
+    const double per_u = 1.0 / dt(i);  // du/dt
+    if (u - h < 0.0) return (-3.0 * v(u) + 4.0 * v(u + h) - v(u + 2.0 * h)) * (per_u / (2.0 * h));
+    if (u + h > 1.0) return (3.0 * v(u) - 4.0 * v(u - h) + v(u - 2.0 * h)) * (per_u / (2.0 * h));
+    return (v(u + h) - v(u - h)) * (per_u / (2.0 * h));
+  }
+
   const Derived& self() const { return static_cast<const Derived&>(*this); }
   double dt(std::size_t i) const { return k_.t[i + 1] - k_.t[i]; }
   Keys k_;

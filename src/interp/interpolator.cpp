@@ -18,6 +18,7 @@ void Interpolator::evaluate(const double* t, std::size_t n, Quat* out) const {
 }
 
 Vec3 Interpolator::angular_velocity(double) const { return Vec3::Zero(); }
+Vec3 Interpolator::angular_acceleration(double) const { return Vec3::Zero(); }
 
 const std::vector<MethodInfo>& methods() {
   using Made = Result<std::unique_ptr<Interpolator>>;

@@ -295,6 +295,25 @@ TEST_P(Contract, AngularVelocityMatchesFiniteDifferencesOfTheCurve) {
   }
 }
 
+TEST_P(Contract, AngularAccelerationMatchesFiniteDifferencesOfTheCurve) {
+  // Inside segments and at keys, where it is the segment starting there: the second
+  // difference of the curve itself on that side (one_sided_acceleration, O(h³), step
+  // 1e-3 of the segment), so neither the closed forms nor the velocity's quotient
+  // are taken on trust.
+  const RotationTrack track = random_track(37, 8, 1.2, 0.1, 0.5);
+  auto p = build(method(), track);
+  ASSERT_TRUE(p && p->has_angular_acceleration());
+  for (std::size_t k = 0; k + 1 < track.times.size(); ++k)
+    for (double u : {0.0, 0.23, 0.5, 0.91}) {
+      const double d = track.times[k + 1] - track.times[k];
+      const double x = track.times[k] + u * d;
+      const Vec3 fd = test::one_sided_acceleration(*p, x, 1e-3 * d);
+      const Vec3 a = p->angular_acceleration(x);
+      EXPECT_LT((a - fd).norm(), 1e-5 * (1.0 + a.norm())) << "segment " << k << " u " << u << " α " << a.transpose();
+    }
+  EXPECT_EQ(p->angular_acceleration(track.times.back() + 1.0), Vec3::Zero());
+}
+
 // Velocity and acceleration jumps across interior keys, relative to the curve's
 // velocity / acceleration scale, measured by one-sided finite differences.
 struct Jumps {

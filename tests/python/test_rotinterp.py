@@ -166,9 +166,11 @@ def test_method_names_are_taken_in_any_case_and_a_near_miss_gets_did_you_mean():
 
 def test_bad_input_raises_value_error_with_the_message():
     t, q = smooth_track(5, 6, 2)
-    with pytest.raises(ValueError, match=r"shape \(K, 4\) or \(K, J, 4\)"):
+    with pytest.raises(ValueError, match=r"quats must be quaternions: .* got shape \(6, 2, 3\)"):
         rotinterp.interpolate(t, q[..., :3], t)
-    with pytest.raises(ValueError, match="non-finite"):
+    with pytest.raises(ValueError, match=r"shape \(K, 4\) or \(K, J, 4\)"):
+        rotinterp.interpolate(t, q[None], t)
+    with pytest.raises(ValueError, match=r"quats\[2, 1\] is not finite"):
         bad = q.copy()
         bad[2, 1, 0] = np.nan
         rotinterp.interpolate(t, bad, t)

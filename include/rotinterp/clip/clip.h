@@ -24,11 +24,17 @@ namespace rotinterp {
 
 struct BvhLayout;  // clip/bvh_layout.h
 
+// How far a key's norm may be from 1 (absolute): round-off of the library's own
+// arithmetic, far below float32 resolution (6e-8), so rounded input is caught.
+inline constexpr double kUnitNormTolerance = 1e-9;
+
 // Rotation keys of one joint.
 // Invariants (checked by validate()):
 //  1. times.size() == keys.size() ≥ 1;
 //  2. times are finite and strictly increasing;
-//  3. keys are finite unit quaternions (|q| − 1 < 1e-9);
+//  3. keys are finite unit quaternions (||q| − 1| ≤ kUnitNormTolerance); the
+//     library never normalizes silently: callers holding rounded data (float32,
+//     printed decimals) normalize at their boundary (the Python module does);
 //  4. sign continuity: keys[k].dot(keys[k−1]) ≥ 0 — interpolators may rely on it.
 struct RotationTrack {
   std::vector<double> times;  // seconds

@@ -33,6 +33,12 @@ class Interpolator {
   // Fixed-frame angular velocity (rad/s) at t, where the method has it in closed form.
   virtual bool has_angular_velocity() const { return false; }
   virtual Vec3 angular_velocity(double t) const;
+  // Fixed-frame angular acceleration dω/dt (rad/s²) at t, where the method has it:
+  // within the segment holding t (at a key, the segment starting there; zero
+  // outside [t₀, tₙ], where the curve is clamped). The body-frame acceleration is
+  // q(t)⁻¹·α(t): the frame's own turning adds ω × ω = 0.
+  virtual bool has_angular_acceleration() const { return false; }
+  virtual Vec3 angular_acceleration(double t) const;
 };
 
 struct MethodInfo {

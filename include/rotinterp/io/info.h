@@ -44,4 +44,9 @@ Result<ClipFileInfo> inspect_clip(const std::filesystem::path& path, const ReadO
 // negative times.
 std::vector<std::string> clip_oddities(const Clip& clip);
 
+// What `rotinterp info --json` prints for `info` read from `path` (written as
+// given): one JSON document, 2-space indented, the one definition the CLI and the
+// Python module's rotinterp.info share.
+std::string clip_info_json(const std::string& path, const ClipFileInfo& info);
+
 }  // namespace rotinterp

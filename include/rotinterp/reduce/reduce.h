@@ -63,6 +63,11 @@
 
 namespace rotinterp {
 
+// The defaults of `rotinterp reduce` and rotinterp.reduce when no budget is given:
+// ozz-animation's hierarchical tolerance, 1 mm at 10 cm.
+inline constexpr double kDefaultReduceToleranceMm = 1.0;      // millimetres
+inline constexpr double kDefaultReduceShellDistanceCm = 10.0;  // centimetres
+
 struct ReduceBudget {
   double rotation_deg = 0.0;  // local rotation error, degrees; 0 = not bounded
   double shell = 0.0;         // virtual-vertex error in object space, clip units; 0 = not bounded

@@ -1,0 +1,238 @@
+// The commands on clips: read_clip, write_clip, resample, evaluate.
+#include "common.h"
+#include "rotinterp/clip/frames.h"
+#include "rotinterp/clip/metrics.h"
+#include "rotinterp/clip/resample.h"
+#include "rotinterp/clip/units.h"
+#include "rotinterp/eval/error_row.h"
+#include "rotinterp/eval/evaluate_clip.h"
+#include "rotinterp/interp/interpolator.h"
+#include "rotinterp/io/info.h"
+#include "rotinterp/io/read.h"
+#include "rotinterp/io/write.h"
+
+#include <cerrno>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace rotinterp::python {
+namespace {
+
+namespace fs = std::filesystem;
+
+// ---- files ------------------------------------------------------------------------
+
+// The reader's error as a Python exception: OSError subclasses for what the file
+// system says (its kind), ValueError for a file that is not a clip.
+[[noreturn]] void raise_read_error(const Error& e, const fs::path& path) {
+  PyObject* type = PyExc_ValueError;
+  int err = 0;
+  switch (e.kind) {
+    case ErrorKind::no_file: type = PyExc_FileNotFoundError, err = ENOENT; break;
+    case ErrorKind::directory: type = PyExc_IsADirectoryError, err = EISDIR; break;
+    case ErrorKind::cannot_open: type = PyExc_OSError, err = EIO; break;
+    default: value_error(e.message);
+  }
+  PyErr_SetObject(type, py::make_tuple(err, e.message, path.string()).ptr());
+  throw py::error_already_set();
+}
+
+void write_path(const Clip& clip, const fs::path& path, const std::string& bvh_order) {
+  if (!can_write_format(path))
+    value_error("output '" + path.string() + "': unknown format (use .bvh, .fbx, .glb, .gltf or .dae)");
+  WriteOptions o;
+  o.bvh_order = bvh_order;
+  Status s = Ok{};
+  {
+    py::gil_scoped_release release;
+    s = write_clip(clip, path, o);
+  }
+  if (!s) {
+    PyErr_SetString(PyExc_OSError, s.error().c_str());
+    throw py::error_already_set();
+  }
+}
+
+// ---- resample ------------------------------------------------------------------------
+
+Rate rate_of(const py::handle& fps) {
+  // Fractions print as "30000/1001", numbers and strings as themselves.
+  return checked(parse_rate(py::str(fps).cast<std::string>()));
+}
+
+Clip resample(const Clip& clip, const py::object& fps, const py::object& keep_every, const std::string& method,
+              const std::map<std::string, std::string>& method_for, const std::string& translation,
+              const py::object& range) {
+  ResampleOptions o;
+  if (!fps.is_none()) o.fps = rate_of(fps);
+  if (!keep_every.is_none()) {
+    const long long n = keep_every.cast<long long>();
+    if (n < 1) value_error("keep_every must be a whole number >= 1, got " + std::to_string(n));
+    o.keep_every = static_cast<std::size_t>(n);
+  }
+  o.method = method;
+  for (const auto& [joint, m] : method_for) o.method_for.emplace_back(joint, m);
+  o.translation = checked(parse_translation_interp(translation));
+  if (!range.is_none()) {
+    const auto r = range.cast<std::pair<std::optional<double>, std::optional<double>>>();
+    TimeRange tr;
+    if (r.first) tr.start = *r.first;
+    if (r.second) tr.end = *r.second;
+    o.range = tr;
+  }
+  Result<Clip> out = make_error("");
+  {
+    py::gil_scoped_release release;
+    out = resample_clip(clip, o);
+  }
+  return checked(std::move(out));
+}
+
+// ---- evaluate --------------------------------------------------------------------------
+
+py::dict evaluate(const py::object& inputs, const std::optional<std::vector<std::string>>& method_names_in,
+                  const std::vector<int>& keep_every, int subframe, double shell_distance_m) {
+  ClipEvalOptions o;
+  if (method_names_in) {
+    o.methods = *method_names_in;
+  } else {
+    for (const MethodInfo& m : methods()) o.methods.push_back(m.name);
+  }
+  for (std::string& m : o.methods) {
+    if (!find_method(m)) value_error(unknown_method_message(m));
+    m = find_method(m)->name;  // one spelling in the results ("SLERP" is slerp)
+  }
+  for (int n : keep_every)
+    if (n < 1) value_error("keep_every values must be >= 1, got " + std::to_string(n));
+  o.keep_every = keep_every;
+  o.subframe = subframe;
+  o.shell_distance_m = shell_distance_m;
+  // One clip, one path, or a list of them; paths keep their text as the clip id (as
+  // in errors.csv), clips their name.
+  std::vector<py::object> items;
+  if (py::isinstance<py::list>(inputs) || py::isinstance<py::tuple>(inputs)) {
+    for (const auto& h : inputs) items.push_back(py::reinterpret_borrow<py::object>(h));
+  } else {
+    items.push_back(inputs);
+  }
+  std::vector<ErrorRow> rows;
+  for (const py::object& item : items) {
+    Clip clip;
+    std::string id;
+    if (py::isinstance<Clip>(item)) {
+      clip = item.cast<Clip>();
+      id = clip.name;
+    } else {
+      id = py::str(item).cast<std::string>();
+      clip = read_path(id, py::none());
+    }
+    Result<std::vector<ErrorRow>> r = make_error("");
+    {
+      py::gil_scoped_release release;
+      r = evaluate_clip(clip, id, o);
+    }
+    std::vector<ErrorRow> part = checked(std::move(r));
+    rows.insert(rows.end(), std::make_move_iterator(part.begin()), std::make_move_iterator(part.end()));
+  }
+  // Columns, named and ordered as in errors.csv (error_row.h). End Site rows have no
+  // rotation or smoothness values, rows of joints that are not feet no foot-contact
+  // values: NaN there, as pandas reads the CSV's empty cells.
+  const std::size_t n = rows.size();
+  py::list clip, method, joint, kind, unit;
+  py::array_t<long long> keep(n), frames(n), samples(n);
+  const std::vector<ErrorValueColumn>& measured = error_value_columns();
+  std::vector<py::array_t<double>> values;
+  for (std::size_t c = 0; c < measured.size(); ++c) values.emplace_back(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const ErrorRow& r = rows[i];
+    clip.append(r.clip);
+    method.append(r.method);
+    joint.append(r.joint);
+    kind.append(r.end_site ? "end_site" : "joint");
+    unit.append(r.unit);
+    keep.mutable_at(i) = r.keep_every;
+    frames.mutable_at(i) = static_cast<long long>(r.frames);
+    samples.mutable_at(i) = static_cast<long long>(r.samples);
+    for (std::size_t c = 0; c < measured.size(); ++c)
+      values[c].mutable_at(i) =
+          (r.end_site && measured[c].joint_only) || (!r.foot && measured[c].foot_only) ? std::nan("") : r.*measured[c].field;
+  }
+  py::module_ np = py::module_::import("numpy");
+  std::map<std::string, py::object> by_name = {
+      {"clip", np.attr("array")(clip, "str")},     {"method", np.attr("array")(method, "str")},
+      {"keep_every", keep},                         {"joint", np.attr("array")(joint, "str")},
+      {"frames", frames},                           {"samples", samples},
+      {"kind", np.attr("array")(kind, "str")},     {"unit", np.attr("array")(unit, "str")}};
+  for (std::size_t c = 0; c < measured.size(); ++c) by_name.emplace(measured[c].name, values[c]);
+  py::dict out;
+  for (const std::string& name : checked(split_csv_line(error_csv_header()))) out[py::str(name)] = by_name.at(name);
+  return out;
+}
+
+}  // namespace
+
+// The reading options of read_clip and info: the animation and the unit, in the
+// forms --anim and --unit take (a number is metres per unit).
+ReadOptions read_options(const py::object& anim, const py::object& unit) {
+  ReadOptions o;
+  if (!anim.is_none()) o.animation = py::str(anim).cast<std::string>();
+  if (py::isinstance<py::str>(unit)) {
+    o.unit = checked(parse_unit(unit.cast<std::string>()));
+  } else if (!unit.is_none()) {
+    const double m = unit.cast<double>();
+    if (!(m > 0.0) || !std::isfinite(m)) value_error("unit must be m, cm, mm, in, ft or metres per unit > 0");
+    o.unit = m;
+  }
+  return o;
+}
+
+Clip read_path(const std::string& path, const py::object& anim, const py::object& unit) {
+  const ReadOptions o = read_options(anim, unit);
+  Result<Clip> c = make_error("");
+  {
+    py::gil_scoped_release release;
+    c = read_clip(path, o);
+  }
+  if (!c) raise_read_error(c.failure(), path);
+  return std::move(*c);
+}
+
+// rotinterp.info: the document `rotinterp info --json` prints (clip_info_json), as
+// Python data. Warnings go into its "warnings", not to stderr.
+py::object info(const std::string& path, const py::object& anim, const py::object& unit) {
+  ReadOptions o = read_options(anim, unit);
+  o.on_warning = [](const std::string&) {};
+  std::string text;
+  Result<ClipFileInfo> r = make_error("");
+  {
+    py::gil_scoped_release release;
+    r = inspect_clip(path, o);
+    if (r) text = clip_info_json(path, *r);
+  }
+  if (!r) raise_read_error(r.failure(), path);
+  return py::module_::import("json").attr("loads")(text);
+}
+
+Clip clip_or_path(const py::object& input) {
+  if (py::isinstance<Clip>(input)) return input.cast<Clip>();
+  return read_path(py::str(input).cast<std::string>(), py::none());
+}
+
+void bind_commands(py::module_& m) {
+  m.def("read_clip", &read_path, py::arg("path"), py::arg("anim") = py::none(), py::arg("unit") = py::none());
+  m.def("info", &info, py::arg("path"), py::arg("anim") = py::none(), py::arg("unit") = py::none());
+  m.def("write_clip", &write_path, py::arg("clip"), py::arg("path"), py::arg("bvh_order") = "ZXY");
+  m.def("resample", &resample, py::arg("clip"), py::arg("fps") = py::none(), py::arg("keep_every") = py::none(),
+        py::arg("method") = std::string(kDefaultResampleMethod),
+        py::arg("method_for") = std::map<std::string, std::string>{}, py::arg("translation") = "cubic",
+        py::arg("range") = py::none());
+  m.def("evaluate", &evaluate, py::arg("inputs"), py::arg("methods") = py::none(),
+        py::arg("keep_every") = std::vector<int>{2, 4, 8, 16}, py::arg("subframe") = 0,
+        py::arg("shell_distance") = kDefaultShellDistanceMetres);
+}
+
+}  // namespace rotinterp::python

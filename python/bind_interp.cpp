@@ -1,0 +1,214 @@
+// Interpolation on arrays: interpolate, make_interpolator (Interpolator), methods, and
+// the metrics angle and swing_twist.
+#include "common.h"
+#include "rotinterp/clip/metrics.h"
+#include "rotinterp/clip/resample.h"
+#include "rotinterp/interp/interpolator.h"
+
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace rotinterp::python {
+namespace {
+
+// ---- methods ----------------------------------------------------------------------
+
+py::list method_list() {
+  py::list out;
+  for (const MethodInfo& m : methods()) {
+    py::dict d;
+    d["name"] = m.name;
+    d["description"] = m.description;
+    d["continuity"] = m.continuity;
+    d["coordinate_invariant"] = m.coordinate_invariant;
+    d["exact_on_constant_velocity"] = m.exact_on_constant_velocity;
+    d["preserves_holds"] = m.preserves_holds;
+    out.append(d);
+  }
+  return out;
+}
+
+// ---- interpolate ------------------------------------------------------------------
+
+// quats (K, 4) or (K, J, 4) against times (K,): the joint count (0 for a single track).
+std::size_t joints_of(const Doubles& q, std::size_t k) {
+  const bool single = q.ndim() == 2 && q.shape(1) == 4;
+  const bool many = q.ndim() == 3 && q.shape(2) == 4;
+  if (!single && !many) value_error("quats must have shape (K, 4) or (K, J, 4), got " + shape_text(q));
+  if (static_cast<std::size_t>(q.shape(0)) != k)
+    value_error("quats has " + std::to_string(q.shape(0)) + " keys but times has " + std::to_string(k));
+  return single ? 0 : static_cast<std::size_t>(q.shape(1));
+}
+
+py::array interpolate(const py::handle& times_in, const py::handle& quats_in, const py::handle& new_times_in,
+                      const std::string& method, bool scalar_first) {
+  const Doubles times = times_array(times_in, "times");
+  const Doubles new_times = times_array(new_times_in, "new_times");
+  bool in_scalar_first = scalar_first;  // a scipy Rotation comes scalar-last
+  const Doubles quats = unit_quats(quats_in, in_scalar_first, "quats");
+  const auto k = static_cast<std::size_t>(times.shape(0));
+  const std::size_t joints = joints_of(quats, k);
+  if (!find_method(method)) value_error(unknown_method_message(method));
+  const auto n = static_cast<std::size_t>(new_times.shape(0));
+  const std::size_t jn = joints == 0 ? 1 : joints;
+  std::vector<py::ssize_t> shape = {static_cast<py::ssize_t>(n)};
+  if (joints) shape.push_back(static_cast<py::ssize_t>(joints));
+  shape.push_back(4);
+  py::array_t<double> out(shape);
+  double* o = out.mutable_data();
+  const double *t = times.data(), *q = quats.data(), *nt = new_times.data();
+  std::string error;
+  {
+    py::gil_scoped_release release;
+    // One joint at a time, each curve freed before the next is built: the heap
+    // memory is reused (31 c2 curves alive at once cost 11 000 page faults a call,
+    // more than the evaluation itself).
+    std::vector<Quat> samples(n);
+    for (std::size_t j = 0; j < jn; ++j) {
+      auto curve = make_interpolator(method, track_of(t, q, k, jn, j, in_scalar_first));
+      if (!curve) {
+        error = (joints ? "joint " + std::to_string(j) + ": " : std::string()) + curve.error();
+        break;
+      }
+      (*curve)->evaluate(nt, n, samples.data());
+      for (std::size_t i = 0; i < n; ++i) put_quat(samples[i], o + 4 * (i * jn + j), scalar_first);
+    }
+  }
+  if (!error.empty()) value_error(error);
+  return out;
+}
+
+// One track's interpolator, callable on times.
+class PyInterpolator {
+ public:
+  PyInterpolator(const py::handle& times_in, const py::handle& quats_in, std::string method, bool scalar_first)
+      : method_(std::move(method)), scalar_first_(scalar_first) {
+    const Doubles times = times_array(times_in, "times");
+    bool in_scalar_first = scalar_first;  // a scipy Rotation comes scalar-last
+    const Doubles quats = unit_quats(quats_in, in_scalar_first, "quats");
+    const auto k = static_cast<std::size_t>(times.shape(0));
+    if (joints_of(quats, k) != 0) value_error("make_interpolator takes one track: quats of shape (K, 4)");
+    track_ = track_of(times.data(), quats.data(), k, 1, 0, in_scalar_first);
+    curve_ = checked(make_interpolator(method_, track_));
+  }
+
+  // Orientation(s) at t: (4,) for a number, (N, 4) for an array.
+  py::object call(const py::handle& t) const {
+    return apply(t, 4, [this](const double* x, std::size_t n, double* o) {
+      std::vector<Quat> q(n);
+      curve_->evaluate(x, n, q.data());
+      for (std::size_t i = 0; i < n; ++i) put_quat(q[i], o + 4 * i, scalar_first_);
+    });
+  }
+  // Angular velocity (rad/s) and acceleration (rad/s²), (3,) or (N, 3), in the fixed
+  // frame or the body frame (scipy's RotationSpline(t, 1) and (t, 2)): the body
+  // vector is q(t)⁻¹·(fixed vector) for both, as the frame's turning adds ω × ω = 0
+  // to the acceleration.
+  py::object angular_velocity(const py::handle& t, const std::string& frame) const {
+    return derivative(t, frame, &Interpolator::angular_velocity);
+  }
+  py::object angular_acceleration(const py::handle& t, const std::string& frame) const {
+    return derivative(t, frame, &Interpolator::angular_acceleration);
+  }
+  const std::string& method() const { return method_; }
+  py::array times() const { return py::array_t<double>(track_.times.size(), track_.times.data()); }
+
+ private:
+  py::object derivative(const py::handle& t, const std::string& frame, Vec3 (Interpolator::*of)(double) const) const {
+    if (frame != "fixed" && frame != "body") value_error("frame must be \"fixed\" or \"body\", got \"" + frame + "\"");
+    const bool body = frame == "body";
+    return apply(t, 3, [this, body, of](const double* x, std::size_t n, double* o) {
+      for (std::size_t i = 0; i < n; ++i) {
+        Vec3 v = (curve_.get()->*of)(x[i]);
+        if (body) v = curve_->evaluate(x[i]).conjugate() * v;
+        o[3 * i] = v.x(), o[3 * i + 1] = v.y(), o[3 * i + 2] = v.z();
+      }
+    });
+  }
+
+  template <class Fill>
+  py::object apply(const py::handle& t, py::ssize_t width, Fill fill) const {
+    const Doubles x = Doubles::ensure(t);
+    if (!x || x.ndim() > 1) value_error("t must be a number or a 1-D array of seconds");
+    const bool scalar = x.ndim() == 0;  // a number of any type, numpy's float32 included
+    const auto n = static_cast<std::size_t>(x.size());
+    py::array_t<double> out(scalar ? std::vector<py::ssize_t>{width}
+                                   : std::vector<py::ssize_t>{static_cast<py::ssize_t>(n), width});
+    double* o = out.mutable_data();
+    const double* xs = x.data();
+    {
+      py::gil_scoped_release release;
+      fill(xs, n, o);
+    }
+    return std::move(out);
+  }
+
+  std::string method_;
+  bool scalar_first_;
+  RotationTrack track_;
+  std::unique_ptr<Interpolator> curve_;
+};
+
+
+// ---- metrics on arrays ---------------------------------------------------------------------
+
+// (…, 4) arrays of the same shape → the rotation angle between them (radians), (…).
+py::array angle_between(const py::handle& a_in, const py::handle& b_in, bool scalar_first) {
+  bool a_first = scalar_first, b_first = scalar_first;
+  const Doubles a = unit_quats(a_in, a_first, "a"), b = unit_quats(b_in, b_first, "b");
+  if (shape_of(a) != shape_of(b))
+    value_error("angle: a and b must be quaternion arrays of the same shape (..., 4), got " + shape_text(a) + " and " +
+                shape_text(b));
+  std::vector<py::ssize_t> shape(a.shape(), a.shape() + a.ndim() - 1);
+  py::array_t<double> out(shape);
+  const auto n = static_cast<std::size_t>(a.size() / 4);
+  const double *pa = a.data(), *pb = b.data();
+  double* o = out.mutable_data();
+  for (std::size_t i = 0; i < n; ++i)
+    o[i] = angular_distance(quat_at(pa + 4 * i, a_first), quat_at(pb + 4 * i, b_first));
+  return out;
+}
+
+// q = swing · twist about `axis` (3,) in the moving frame, for (…, 4) arrays.
+py::tuple swing_twist_split(const py::handle& q_in, const py::handle& axis_in, bool scalar_first) {
+  bool q_first = scalar_first;
+  const Doubles q = unit_quats(q_in, q_first, "q"), axis = Doubles::ensure(axis_in);
+  if (!axis || axis.ndim() != 1 || axis.shape(0) != 3) value_error("swing_twist: axis must have shape (3,)");
+  const Vec3 ax(axis.at(0), axis.at(1), axis.at(2));
+  py::array_t<double> swing(shape_of(q)), twist(shape_of(q));
+  const auto n = static_cast<std::size_t>(q.size() / 4);
+  for (std::size_t i = 0; i < n; ++i) {
+    const SwingTwist st = swing_twist(quat_at(q.data() + 4 * i, q_first), ax);
+    put_quat(st.swing, swing.mutable_data() + 4 * i, scalar_first);
+    put_quat(st.twist, twist.mutable_data() + 4 * i, scalar_first);
+  }
+  return py::make_tuple(swing, twist);
+}
+
+}  // namespace
+
+void bind_interp(py::module_& m) {
+  py::class_<PyInterpolator>(m, "Interpolator")
+      .def("__call__", &PyInterpolator::call, py::arg("t"))
+      .def("angular_velocity", &PyInterpolator::angular_velocity, py::arg("t"), py::arg("frame") = "fixed")
+      .def("angular_acceleration", &PyInterpolator::angular_acceleration, py::arg("t"), py::arg("frame") = "fixed")
+      .def_property_readonly("method", &PyInterpolator::method)
+      .def_property_readonly("times", &PyInterpolator::times);
+
+  m.def("methods", &method_list);
+  m.def(
+      "make_interpolator",
+      [](const py::handle& times, const py::handle& quats, const std::string& method, bool scalar_first) {
+        return PyInterpolator(times, quats, method, scalar_first);
+      },
+      py::arg("times"), py::arg("quats"), py::arg("method") = std::string(kDefaultResampleMethod),
+      py::arg("scalar_first") = false);
+  m.def("interpolate", &interpolate, py::arg("times"), py::arg("quats"), py::arg("new_times"),
+        py::arg("method") = std::string(kDefaultResampleMethod), py::arg("scalar_first") = false);
+  m.def("angle", &angle_between, py::arg("a"), py::arg("b"), py::arg("scalar_first") = false);
+  m.def("swing_twist", &swing_twist_split, py::arg("q"), py::arg("axis"), py::arg("scalar_first") = false);
+}
+
+}  // namespace rotinterp::python

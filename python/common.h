@@ -1,0 +1,149 @@
+// Shared by the binding files of rotinterp._rotinterp: array conversion, the
+// quaternion layouts, and errors as Python exceptions.
+//
+// Quaternions cross the boundary as float64 arrays whose last axis is 4, in one
+// of two layouts chosen per call: scalar-last (x, y, z, w) — scipy's default and
+// Eigen's storage — or scalar-first (w, x, y, z) with scalar_first=True. Long
+// calls release the GIL; errors raise ValueError (bad input) or OSError (files)
+// with the library's one-line message.
+#pragma once
+
+#include "rotinterp/clip/clip.h"
+#include "rotinterp/core/result.h"
+#include "rotinterp/core/rotation.h"
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace rotinterp::python {
+
+namespace py = pybind11;
+
+// Arrays as they come: float64, C-contiguous (converted only when they are not).
+using Doubles = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+[[noreturn]] inline void value_error(const std::string& message) { throw py::value_error(message); }
+
+template <class T>
+T checked(Result<T> r) {
+  if (!r) value_error(r.error());
+  return std::move(*r);
+}
+
+inline Quat quat_at(const double* p, bool scalar_first) {
+  return scalar_first ? Quat(p[0], p[1], p[2], p[3]) : Quat(p[3], p[0], p[1], p[2]);
+}
+inline void put_quat(const Quat& q, double* p, bool scalar_first) {
+  if (scalar_first) {
+    p[0] = q.w(), p[1] = q.x(), p[2] = q.y(), p[3] = q.z();
+  } else {
+    p[0] = q.x(), p[1] = q.y(), p[2] = q.z(), p[3] = q.w();
+  }
+}
+
+inline std::vector<py::ssize_t> shape_of(const py::array& a) { return {a.shape(), a.shape() + a.ndim()}; }
+
+inline std::string shape_text(const py::array& a) {
+  std::string s = "(";
+  for (py::ssize_t i = 0; i < a.ndim(); ++i) s += (i ? ", " : "") + std::to_string(a.shape(i));
+  return s + (a.ndim() == 1 ? ",)" : ")");
+}
+
+inline void require_finite(const Doubles& a, const char* what) {
+  const double* p = a.data();
+  for (py::ssize_t i = 0; i < a.size(); ++i)
+    if (!std::isfinite(p[i])) value_error(std::string(what) + " has a non-finite value at flat index " + std::to_string(i));
+}
+
+// A 1-D array of times.
+inline Doubles times_array(const py::handle& h, const char* what) {
+  Doubles t = Doubles::ensure(h);
+  if (!t || t.ndim() != 1) value_error(std::string(what) + " must be a 1-D array of seconds");
+  require_finite(t, what);
+  return t;
+}
+
+// numpy's text for the index of the i-th quaternion of an array of shape (..., 4):
+// "quats[3, 1]".
+inline std::string quat_index_text(const char* what, const py::array& a, py::ssize_t i) {
+  std::string index;
+  for (py::ssize_t d = a.ndim() - 2; d >= 0; --d) {
+    index = std::to_string(i % a.shape(d)) + (index.empty() ? "" : ", ") + index;
+    i /= a.shape(d);
+  }
+  return std::string(what) + "[" + index + "]";
+}
+
+// Quaternions as callers hold them, taken as scipy's Rotation.from_quat takes them:
+// any real dtype (float32 from glTF or PyTorch, decimals rounded in a CSV), each
+// finite non-zero quaternion normalized; or any object with as_quat() (a scipy
+// Rotation), whose scalar-last layout is used whatever scalar_first says. The
+// library itself keeps its unit-norm contract (RotationTrack rule 3): this is the
+// boundary where rounded data becomes unit. A zero, NaN or infinite quaternion is
+// refused by its index. Returns the normalized float64 copy; scalar_first is set to
+// the layout of its data.
+inline Doubles unit_quats(const py::handle& h, bool& scalar_first, const char* what) {
+  Doubles raw;
+  if (py::hasattr(h, "as_quat")) {
+    raw = Doubles::ensure(h.attr("as_quat")());
+    scalar_first = false;
+  } else {
+    raw = Doubles::ensure(h);
+  }
+  if (!raw) value_error(std::string(what) + " must be quaternions: a numeric array of shape (..., 4) or a scipy Rotation");
+  if (raw.ndim() < 1 || raw.shape(raw.ndim() - 1) != 4)
+    value_error(std::string(what) + " must be quaternions: an array of shape (..., 4) or a scipy Rotation, got shape " +
+                shape_text(raw));
+  Doubles out(shape_of(raw));
+  const double* p = raw.data();
+  double* o = out.mutable_data();
+  for (py::ssize_t i = 0; i < raw.size() / 4; ++i) {
+    const Eigen::Map<const Eigen::Vector4d> q(p + 4 * i);
+    if (!q.allFinite()) value_error(quat_index_text(what, raw, i) + " is not finite");
+    // Scaled by the largest component first: no overflow or underflow in the norm
+    // for finite components of any size (1e300 or 1e-320).
+    const double largest = q.cwiseAbs().maxCoeff();
+    if (largest == 0.0) value_error(quat_index_text(what, raw, i) + " is zero: a rotation needs a non-zero quaternion");
+    const Eigen::Vector4d scaled = q / largest;
+    Eigen::Map<Eigen::Vector4d>(o + 4 * i) = scaled / scaled.norm();
+  }
+  return out;
+}
+
+// The rotation track of joint j from times (K,) and quaternions (K, J, 4) as flat data.
+inline RotationTrack track_of(const double* times, const double* quats, std::size_t k, std::size_t joints,
+                              std::size_t j, bool scalar_first) {
+  RotationTrack track;
+  track.times.assign(times, times + k);
+  track.keys.resize(k);
+  for (std::size_t i = 0; i < k; ++i) track.keys[i] = quat_at(quats + 4 * (i * joints + j), scalar_first);
+  return track;
+}
+
+// Metres per clip unit, the one place the module reads a clip's unit from: the unit
+// the reader settled (clip/units.h: declared, given, inferred or assumed).
+inline double metres_per_unit(const Clip& c) { return c.unit.metres_per_unit; }
+
+// read_clip's reading (bind_commands.cpp): the clip at `path`, its animation `anim`
+// (None, a name or an index) and its unit (None: the file's or inferred; "cm", …, or
+// metres per unit as a number); raises OSError subclasses or ValueError.
+Clip read_path(const std::string& path, const py::object& anim, const py::object& unit = py::none());
+// A clip given as a rotinterp.Clip or read from a path.
+Clip clip_or_path(const py::object& input);
+
+// The parts of the module, one per API area (module.cpp calls them in this order).
+void bind_clip(py::module_& m);
+void bind_interp(py::module_& m);
+void bind_commands(py::module_& m);
+void bind_reduce(py::module_& m);
+void bind_render(py::module_& m);  // bind_render.cpp: only where the renderer is built
+
+}  // namespace rotinterp::python

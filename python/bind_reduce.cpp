@@ -24,39 +24,17 @@ py::array_t<long long> index_array(const std::vector<std::size_t>& v) {
   return a;
 }
 
-// A budget in the forms `rotinterp reduce --tolerance` takes: items with their units,
-// an angle (0.5deg, 0.01rad) on each joint's local rotation and/or a length (1mm,
-// 0.1cm) on the shell and translation error, as one string "0.5deg,1mm" or a list.
-// (The same rule as the command's add_budget_items, on the library's parsers.)
-struct Budget {
-  double deg = 0.0, mm = 0.0;
-};
-Budget parse_budget(const py::object& items, const std::string& what) {
-  std::vector<std::string> parts;
-  const auto split = [&parts](const std::string& text) {
-    std::size_t from = 0;
-    for (std::size_t comma; (comma = text.find(',', from)) != std::string::npos; from = comma + 1)
-      parts.push_back(text.substr(from, comma - from));
-    parts.push_back(text.substr(from));
-  };
+// A budget in the forms `rotinterp reduce --tolerance` takes (reduce.h
+// add_budget_items): one string "0.5deg,1mm", or a list of items.
+BudgetText parse_budget(const py::object& items, const std::string& what) {
+  BudgetText b;
+  std::string list;
   if (py::isinstance<py::str>(items)) {
-    split(items.cast<std::string>());
+    list = items.cast<std::string>();
   } else {
-    for (const auto& item : items) split(py::str(item).cast<std::string>());
+    for (const auto& item : items) list += (list.empty() ? "" : ",") + py::str(item).cast<std::string>();
   }
-  Budget b;
-  for (const std::string& part : parts) {
-    const bool angle = part.size() > 3 && (part.compare(part.size() - 3, 3, "deg") == 0 ||
-                                           part.compare(part.size() - 3, 3, "rad") == 0);
-    if (angle) {
-      b.deg = checked(parse_angle_deg(part));
-    } else {
-      if (part.find_first_not_of("0123456789.+-eE") == std::string::npos)
-        value_error(what + " '" + part + "' needs a unit: an angle (0.5deg) or a length (1mm)");
-      b.mm = checked(parse_length(part)) * 1000.0;
-    }
-  }
-  if (b.deg == 0.0 && b.mm == 0.0) value_error(what + " gives no budget (e.g. \"0.5deg,1mm\")");
+  if (Status s = add_budget_items(what, list, b); !s) value_error(s.error());
   return b;
 }
 
@@ -67,7 +45,7 @@ py::dict reduce(const Clip& clip, const std::string& method, const py::object& t
                 const py::object& shell_distance, const py::object& tolerance_for, const std::string& translation,
                 const std::optional<double>& unit_in) {
   if (!find_method(method)) value_error(unknown_method_message(method));
-  Budget budget = tolerance.is_none() ? Budget{} : parse_budget(tolerance, "tolerance");
+  BudgetText budget = tolerance.is_none() ? BudgetText{} : parse_budget(tolerance, "tolerance");
   const double shell_m = shell_distance.is_none() ? kDefaultReduceShellDistanceCm / 100.0
                                                  : checked(parse_length(py::str(shell_distance).cast<std::string>()));
   if (budget.deg == 0.0 && budget.mm == 0.0) budget.mm = kDefaultReduceToleranceMm;
@@ -86,7 +64,7 @@ py::dict reduce(const Clip& clip, const std::string& method, const py::object& t
     for (const auto& item : tolerance_for.cast<py::dict>()) {
       const std::string joint = py::str(item.first).cast<std::string>();
       if (clip.skeleton.find(joint) < 0) value_error("tolerance_for: clip '" + clip.name + "' has no joint '" + joint + "'");
-      const Budget b = parse_budget(py::reinterpret_borrow<py::object>(item.second), "tolerance_for['" + joint + "']");
+      const BudgetText b = parse_budget(py::reinterpret_borrow<py::object>(item.second), "tolerance_for['" + joint + "']");
       if (b.mm > 0.0 && mm == 0.0) value_error("tolerance_for['" + joint + "']: a length budget needs a length tolerance");
       opt.budget_for.emplace_back(joint, ReduceBudget{b.deg, units(b.mm), units(b.mm)});
     }

@@ -50,14 +50,6 @@ struct FileSummary {
   ClipUnit unit;
 };
 
-// The clip's unit as info --json gives it (one shape for one file and --summary).
-nlohmann::json unit_json(const ClipUnit& u) {
-  return {{"name", unit_name(u.metres_per_unit)},
-          {"metres_per_unit", u.metres_per_unit},
-          {"origin", unit_origin_name(u.origin)},
-          {"reason", u.reason}};
-}
-
 // The reading options of both forms of info: --anim and --unit.
 Result<ReadOptions> info_read_options(const InfoArgs& args) {
   ReadOptions options;
@@ -161,7 +153,7 @@ int run_summary(const InfoArgs& args) {
                     {"frame_rate", s.rate ? nlohmann::json(s.rate->to_string()) : nlohmann::json(nullptr)},
                     {"frame_rate_hz", s.rate ? nlohmann::json(s.rate->hz()) : nlohmann::json(nullptr)},
                     {"duration_s", s.duration},
-                    {"unit", unit_json(s.unit)},
+                    {"unit", nlohmann::json::parse(unit_info_json(s.unit))},
                     {"joints", s.joints},
                     {"notes", s.notes}});
       }

@@ -45,32 +45,6 @@ std::string lower_extension(const std::string& path) {
   return ext;
 }
 
-// A budget: an angle (0.5deg, 0.01rad) on each joint's local rotation and/or a
-// length (1mm, 0.1cm) on the shell and translation error. Each item needs its unit,
-// since the list takes both kinds.
-struct Budget {
-  double deg = 0.0, mm = 0.0;
-};
-Status add_budget_items(const std::string& option, const std::string& list, Budget& b) {
-  for (const std::string& part : split_comma_list(list)) {
-    const bool angle = part.size() > 3 && (part.compare(part.size() - 3, 3, "deg") == 0 ||
-                                           part.compare(part.size() - 3, 3, "rad") == 0);
-    if (angle) {
-      auto v = parse_angle_deg(part);
-      if (!v) return make_error(option + ": " + v.error());
-      b.deg = *v;
-      continue;
-    }
-    if (part.find_first_not_of("0123456789.+-eE") == std::string::npos)
-      return make_error(option + " '" + part + "' needs a unit: an angle (0.5deg) or a length (1mm)");
-    auto v = parse_length(part);
-    if (!v) return make_error(option + ": " + v.error() + "; or an angle (0.5deg)");
-    b.mm = *v * 1000.0;
-  }
-  if (b.deg == 0.0 && b.mm == 0.0) return make_error(option + " '" + list + "' gives no budget (e.g. 0.5deg,1mm)");
-  return Ok{};
-}
-
 // One --tolerance-for item: JOINT=LIST, LIST as --tolerance takes it.
 struct JointBudget {
   std::string joint;
@@ -80,7 +54,7 @@ Result<JointBudget> parse_joint_budget(const std::string& item) {
   const std::size_t eq = item.rfind('=');
   if (eq == std::string::npos || eq == 0 || eq + 1 == item.size())
     return make_error("--tolerance-for '" + item + "' must be JOINT=0.5deg, JOINT=2mm or JOINT=0.5deg,2mm");
-  Budget b;
+  BudgetText b;
   if (Status s = add_budget_items("--tolerance-for " + item.substr(0, eq), item.substr(eq + 1), b); !s)
     return s.failure();
   return JointBudget{item.substr(0, eq), b.deg, b.mm};
@@ -170,7 +144,7 @@ int run_reduce(const ReduceArgs& a) {
     return fail_usage("--report '" + a.report + "' must name a .json file");
   auto translation = parse_translation_interp(a.translation);
   if (!translation) return fail_usage("--translation: " + translation.error());
-  Budget budget;
+  BudgetText budget;
   for (const std::string& list : a.tolerance)
     if (Status s = add_budget_items("--tolerance", list, budget); !s) return fail_usage(s.error());
   double deg = budget.deg, mm = budget.mm, shell_m = kDefaultShellMetres;

@@ -13,6 +13,19 @@
 
 namespace rotinterp {
 
+namespace {
+
+nlohmann::json unit_object(const ClipUnit& u) {
+  return {{"name", unit_name(u.metres_per_unit)},
+          {"metres_per_unit", u.metres_per_unit},
+          {"origin", unit_origin_name(u.origin)},
+          {"reason", u.reason}};
+}
+
+}  // namespace
+
+std::string unit_info_json(const ClipUnit& unit) { return unit_object(unit).dump(); }
+
 std::string clip_info_json(const std::string& path, const ClipFileInfo& info) {
   const Clip& clip = info.clip;
   const Skeleton& sk = clip.skeleton;
@@ -40,10 +53,7 @@ std::string clip_info_json(const std::string& path, const ClipFileInfo& info) {
   out["end_s"] = clip.end_time();
   out["duration_s"] = duration;
   // The same shape as --summary's rows give (cmd_info.cpp).
-  out["unit"] = {{"name", unit_name(clip.unit.metres_per_unit)},
-                 {"metres_per_unit", clip.unit.metres_per_unit},
-                 {"origin", unit_origin_name(clip.unit.origin)},
-                 {"reason", clip.unit.reason}};
+  out["unit"] = unit_object(clip.unit);
   out["figure_size_m"] = size_m;
   out["folded_helpers"] = info.folded_helpers;
   nlohmann::json joints = nlohmann::json::array();

@@ -48,5 +48,7 @@ std::vector<std::string> clip_oddities(const Clip& clip);
 // given): one JSON document, 2-space indented, the one definition the CLI and the
 // Python module's rotinterp.info share.
 std::string clip_info_json(const std::string& path, const ClipFileInfo& info);
+// Its "unit" object (clip/units.h), as JSON text; info --summary's rows use it too.
+std::string unit_info_json(const ClipUnit& unit);
 
 }  // namespace rotinterp

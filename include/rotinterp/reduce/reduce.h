@@ -68,6 +68,16 @@ namespace rotinterp {
 inline constexpr double kDefaultReduceToleranceMm = 1.0;      // millimetres
 inline constexpr double kDefaultReduceShellDistanceCm = 10.0;  // centimetres
 
+// A budget as users write it (reduce --tolerance, rotinterp.reduce(tolerance=)):
+// items each with its unit, an angle (0.5deg, 0.01rad) on each joint's local rotation
+// and/or a length (1mm, 0.1cm) on the shell and translation error. A bare number is
+// refused, since the list takes both kinds.
+struct BudgetText {
+  double deg = 0.0, mm = 0.0;  // 0 = not given
+};
+// Adds the items of one comma list to `b`; errors start with `what`.
+Status add_budget_items(const std::string& what, const std::string& list, BudgetText& b);
+
 struct ReduceBudget {
   double rotation_deg = 0.0;  // local rotation error, degrees; 0 = not bounded
   double shell = 0.0;         // virtual-vertex error in object space, clip units; 0 = not bounded

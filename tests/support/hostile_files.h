@@ -39,9 +39,12 @@ inline std::string fbx_one_curve(const std::string& key_times, const std::string
 // fbx/assimp_huesitos.fbx, 111 564 bytes) with 6 bytes changed, which makes
 // assimp 5.2.5 free memory twice in ~aiScene. Empty when the source differs.
 // GCC 12 with a precompiled header inlines the returned string's move and warns that
-// a short string's buffer is overrun (-Warray-bounds), which a 111 564-byte one is not.
+// a short string's buffer is overrun or overread (-Warray-bounds, -Wstringop-*), which a
+// 111 564-byte one is not.
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Warray-bounds"
+#pragma GCC diagnostic ignored "-Wstringop-overread"
+#pragma GCC diagnostic ignored "-Wstringop-overflow"
 inline std::string double_free_fbx(const std::filesystem::path& shared_huesitos) {
   std::ifstream in(shared_huesitos, std::ios::binary);
   std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

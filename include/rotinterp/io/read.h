@@ -15,7 +15,9 @@
 //    assimp's `$AssimpFbx$` helper nodes are folded into their bone (static and
 //    animated transforms composed, keys at the union of their times) so world poses
 //    are exact. A uniform static scale on a node is baked into the translations of
-//    its descendants; other scale is ignored with a warning.
+//    its descendants; other scale is ignored with a warning. A leaf node carrying
+//    unskinned meshes under an animated joint becomes an End Site of that joint at
+//    its meshes' bounding-box centre (a prop or box hanging off its pivot).
 //  * Every key is normalized and the track made sign-continuous.
 //  * The clip's unit (Clip::unit) is settled here, once: declared by the file, given
 //    (ReadOptions::unit) or inferred (clip/units.h).

@@ -14,15 +14,28 @@ namespace {
 
 constexpr double kDegrees = 180.0 / 3.14159265358979323846;
 
-// The track's value one frame after the clip's last (`frame` seconds) in `form`:
-// closed, the last key itself; open, the last key moved on by its last step's rate
-// (held where the track ends before the clip does).
-Quat next_after_last(const RotationTrack& r, LoopForm form, double clip_end, double frame) {
+// Angular velocity from key a to key b (rad/s, fixed frame).
+Vec3 rate(const Quat& a, const Quat& b, double dt) { return displacement_fixed(a, b).vec() / dt; }
+
+// How far a track misses closing in `form`, as an angle. Closed: the last key's angle
+// from the first. Open: the seam's change of angular velocity (last → first one
+// frame later) beyond the largest change between keys inside, times one frame — the
+// angle by which the step across the seam breaks the motion's own smoothness.
+double closure_miss(const RotationTrack& r, LoopForm form, double clip_end, double frame) {
   const std::size_t n = r.keys.size();
-  const Quat& last = r.keys.back();
-  if (form == LoopForm::closed || r.times.back() < clip_end - 0.5 * frame) return last;
-  const double step = frame / (r.times[n - 1] - r.times[n - 2]);
-  return (exp(RotVec(displacement_fixed(r.keys[n - 2], last) * step)) * last).normalized();
+  if (n < 2) return 0.0;
+  if (form == LoopForm::closed) return angular_distance(r.keys.back(), r.keys.front());
+  if (n < 3) return angular_distance(r.keys.back(), r.keys.front());
+  const Vec3 seam = rate(r.keys[n - 1], r.keys[0], std::max(clip_end + frame - r.times[n - 1], frame));
+  const Vec3 before = rate(r.keys[n - 2], r.keys[n - 1], r.times[n - 1] - r.times[n - 2]);
+  const Vec3 after = rate(r.keys[0], r.keys[1], r.times[1] - r.times[0]);
+  double inside = 0.0;
+  for (std::size_t k = 1; k + 1 < n; ++k)
+    inside = std::max(inside, (rate(r.keys[k], r.keys[k + 1], r.times[k + 1] - r.times[k]) -
+                               rate(r.keys[k - 1], r.keys[k], r.times[k] - r.times[k - 1]))
+                                  .norm());
+  const double jump = std::max((seam - before).norm(), (after - seam).norm());
+  return std::max(0.0, jump - inside) * frame;
 }
 
 // Index of the longest side of the rest pose's bounding box: the up axis of a standing figure.
@@ -44,8 +57,7 @@ struct FormClosure {
 FormClosure closure(const Clip& clip, LoopForm form, double frame) {
   FormClosure c;
   for (const RotationTrack& r : clip.rotations) {
-    const double a =
-        r.keys.size() >= 2 ? angular_distance(next_after_last(r, form, clip.end_time(), frame), r.keys.front()) : 0.0;
+    const double a = closure_miss(r, form, clip.end_time(), frame);
     c.miss.push_back(a);
     c.sum += a;
   }
@@ -53,6 +65,23 @@ FormClosure closure(const Clip& clip, LoopForm form, double frame) {
 }
 
 }  // namespace
+
+Vec3 per_cycle_offset(const TranslationTrack& tr, LoopForm form, double frame) {
+  const std::size_t n = tr.keys.size();
+  if (n < 2) return Vec3::Zero();
+  if (form == LoopForm::closed) return tr.keys.back() - tr.keys.front();
+  // The parabola through the last three keys (the line through two), one frame on.
+  const double x = tr.times[n - 1] + frame;
+  Vec3 next = Vec3::Zero();
+  const std::size_t m = std::min<std::size_t>(n, 3);
+  for (std::size_t i = n - m; i < n; ++i) {
+    double w = 1.0;
+    for (std::size_t k = n - m; k < n; ++k)
+      if (k != i) w *= (x - tr.times[k]) / (tr.times[i] - tr.times[k]);
+    next += w * tr.keys[i];
+  }
+  return next - tr.keys.front();
+}
 
 const char* loop_form_name(LoopForm form) { return form == LoopForm::closed ? "closed" : "open"; }
 
@@ -96,11 +125,7 @@ Result<LoopCheck> check_loop(const Clip& clip, std::optional<LoopForm> form, con
   for (std::size_t j = 0; j < clip.translations.size(); ++j) {
     const auto& tr = clip.translations[j];
     if (clip.skeleton.joints[j].parent >= 0 || !tr || tr->keys.size() < 2) continue;
-    const Vec3& last = tr->keys.back();
-    const std::size_t n = tr->keys.size();
-    const double step = frame / (tr->times[n - 1] - tr->times[n - 2]);
-    const Vec3 next = check.form == LoopForm::closed ? last : Vec3(last + step * (last - tr->keys[n - 2]));
-    check.root_advance = next - tr->keys.front();
+    check.root_advance = per_cycle_offset(*tr, check.form, frame);
     check.root_vertical_offset = std::abs(check.root_advance[up_axis(clip.skeleton)]) * clip.unit.metres_per_unit;
     break;
   }

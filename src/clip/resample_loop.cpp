@@ -39,16 +39,6 @@ Track one_period(const Track& track, double t0, double period, double frame) {
   return open;
 }
 
-// A translation track's per-cycle offset D, as check_loop takes the root's.
-Vec3 per_cycle_offset(const TranslationTrack& tr, LoopForm form, double frame) {
-  const std::size_t n = tr.keys.size();
-  if (n < 2) return Vec3::Zero();
-  const Vec3& last = tr.keys.back();
-  if (form == LoopForm::closed) return last - tr.keys.front();
-  const double step = frame / (tr.times[n - 1] - tr.times[n - 2]);
-  return last + step * (last - tr.keys[n - 2]) - tr.keys.front();
-}
-
 // p(t) = r(t) + D·(t − t₀)/P with r periodic: r's keys unrolled over whole periods, a curve through them.
 class PeriodicTranslation {
  public:

@@ -4,14 +4,16 @@
 // Two forms of a cycle sampled at frames 0 … n−1 (frame time Δ):
 //  * closed: the last frame repeats the first (period (n−1)·Δ);
 //  * open: the last frame is one step before the first (period n·Δ).
-// A joint closes a form when, in that form, the frame after the last (the last
-// itself for closed; for open, the last moved on by its own last step,
-// qₙ₋₁·qₙ₋₂⁻¹·qₙ₋₁) is within the angle tolerance of the first frame. The form is the one whose closure misses sum to less over all joints
+// A joint closes a form when its miss is within the angle tolerance. Closed: the
+// last frame's angle from the first. Open: the step from the last frame to the
+// first (one frame later) must be as smooth as the motion inside — the change of
+// angular velocity at the seam beyond the largest change between frames inside,
+// times one frame. The form is the one whose closure misses sum to less over all joints
 // (closed on a tie), unless the caller names it.
 //
 // Translation loops with a per-cycle offset: each translation track moves by
-// D = pₙ − p₀ every period (pₙ = pₙ₋₁ for closed, 2pₙ₋₁ − pₙ₋₂ for open), so a
-// run keeps its forward motion. Only the root's vertical part of D must close (up =
+// D = pₙ − p₀ every period (pₙ = pₙ₋₁ for closed; for open, the parabola through
+// the last three keys one frame on), so a run keeps its forward motion. Only the root's vertical part of D must close (up =
 // the longest side of the rest pose's bounding box).
 //
 // "Looks like a cycle": some joint moves by more than the angle tolerance, at most
@@ -61,6 +63,9 @@ struct LoopCheck {
 // frames; `form` forces a form. Errors (one line): no frame rate, fewer than 3 frames.
 Result<LoopCheck> check_loop(const Clip& clip, std::optional<LoopForm> form = std::nullopt,
                              const LoopTolerance& tolerance = {});
+
+// A translation track's per-cycle offset D in `form` (see above); `frame` in seconds.
+Vec3 per_cycle_offset(const TranslationTrack& track, LoopForm form, double frame);
 
 // "auto" (nothing), "closed", "open"; an error naming the valid words otherwise.
 Result<std::optional<LoopForm>> parse_loop_form(std::string_view text);

@@ -4,6 +4,7 @@
 #include "common.h"
 #include "rotinterp/clip/bvh_layout.h"
 #include "rotinterp/clip/frames.h"
+#include "rotinterp/clip/loop.h"
 #include "rotinterp/core/work_queue.h"
 #include "rotinterp/io/dataset.h"
 #include "rotinterp/io/info.h"
@@ -292,6 +293,7 @@ int run_info(const InfoArgs& args) {
   for (std::size_t j = 0; j < sk.joints.size(); ++j)
     if (clip.translations[j]) translated += (translated.empty() ? "" : ", ") + sk.joints[j].name;
   fmt::print("translation tracks: {}\n", translated.empty() ? "none" : translated);
+  if (const Result<LoopCheck> cycle = check_loop(clip)) fmt::print("cycle:       {}\n", loop_check_text(*cycle));
   if (!odd.empty()) {
     fmt::print("oddities:\n");
     for (const std::string& o : odd) fmt::print("  - {}\n", o);

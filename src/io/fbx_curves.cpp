@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <fstream>
+#include <sstream>
 #include <iterator>
 #include <tuple>
 
@@ -224,6 +226,16 @@ Result<FbxAnimation> read_fbx_animation(const FbxDocument& doc, const std::strin
     anim.takes.push_back(std::move(take));
   }
   return anim;
+}
+
+Result<FbxAnimation> read_fbx_curves_file(const std::string& path, const std::string& label) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream bytes;
+  if (!in || !(bytes << in.rdbuf())) return make_error(label + ": cannot read the file", ErrorKind::cannot_open);
+  const std::string text = bytes.str();
+  Result<FbxDocument> doc = parse_fbx_nodes(text, label);
+  if (!doc) return doc.failure();
+  return read_fbx_animation(*doc, label);
 }
 
 const char* fbx_interpolation_name(FbxInterpolation i) {

@@ -13,6 +13,7 @@
 #include "rotinterp/io/fbx_nodes.h"
 
 #include <array>
+#include <string>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -110,5 +111,9 @@ struct FbxAnimation {
 // differing lengths, times not increasing, attribute counts that do not cover the
 // keys) are refused with one line naming the file and the curve.
 Result<FbxAnimation> read_fbx_animation(const FbxDocument& doc, const std::string& label);
+
+// The file at `path` read whole and through parse_fbx_nodes and read_fbx_animation;
+// `label` names it in errors (ErrorKind::unreadable, or cannot_open).
+Result<FbxAnimation> read_fbx_curves_file(const std::string& path, const std::string& label);
 
 }  // namespace rotinterp

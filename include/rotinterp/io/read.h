@@ -62,6 +62,11 @@ struct ReadOptions {
   // always comes from our own pass, which validates the whole file by itself, and
   // assimp's import costs more than the rest of a BVH read (README "Formats").
   bool cross_check_with_assimp = false;
+  // FBX: also read the file's animation curves as stored — keys, tangents, takes,
+  // layers — with our own FBX reader, in the importer process like the rest of the
+  // read (ClipFileInfo::curves; `info --curves`). A malformed curve then refuses the
+  // file (ErrorKind::unreadable). Off by default.
+  bool read_curves = false;
   // Every assimp import (any file but a BVH read without the cross-check) runs in a
   // separate importer process (rotinterp-import, see find_importer()), which sends
   // its reading back; this process never calls assimp's importers. assimp 5.2.5

@@ -30,7 +30,23 @@ std::vector<Rect> grid_layout(int count, int columns, int width, int height) {
   return rects;
 }
 
-PanelLayout panel_layout(int width, int height, bool trail, bool strip, bool bar) {
+int corner_text_height(int panel_height) { return std::clamp(static_cast<int>(std::lround(0.045 * panel_height)), 9, 18); }
+int corner_text_pad(int panel_height) { return std::max(3, corner_text_height(panel_height) / 3); }
+
+namespace {
+// The figure less the band of `lines` corner lines (1.2 line heights each) and
+// their padding; at least half the figure stays.
+Rect below_text(const Rect& figure, int lines, int panel_height) {
+  if (lines <= 0) return figure;
+  const int band = 2 * corner_text_pad(panel_height) +
+                   static_cast<int>(std::lround(1.2 * lines * corner_text_height(panel_height)));
+  const int cut = std::min(band, figure.height / 2);
+  return Rect{figure.x, figure.y + cut, figure.width, figure.height - cut};
+}
+}  // namespace
+
+PanelLayout panel_layout(int width, int height, bool trail, bool strip, bool bar, int corner_lines) {
+  const int panel_height = height;
   PanelLayout l;
   l.title_height = std::clamp(static_cast<int>(std::lround(0.075 * height)), 14, 40);
   if (strip) {
@@ -49,7 +65,10 @@ PanelLayout panel_layout(int width, int height, bool trail, bool strip, bool bar
     const int h = static_cast<int>(std::lround(0.5 * scene_height));
     if (h >= 16) l.bar = Rect{margin, l.title_height + static_cast<int>(std::lround(0.32 * scene_height)), w, h};
   }
-  if (!trail) return l;
+  if (!trail) {
+    l.view = below_text(l.figure, corner_lines, panel_height);
+    return l;
+  }
   const int margin = std::max(4, std::min(width, scene_height) / 60);
   if (width * 5 <= scene_height * 6) {
     const int side = std::min(width - 2 * margin, static_cast<int>(std::lround(0.34 * scene_height)));
@@ -60,6 +79,7 @@ PanelLayout panel_layout(int width, int height, bool trail, bool strip, bool bar
     l.inset = Rect{width - side - margin, l.title_height + margin, side, side};
     l.figure.width = width - side - margin;
   }
+  l.view = below_text(l.figure, corner_lines, panel_height);
   return l;
 }
 

@@ -615,8 +615,10 @@ struct Renderer::Impl {
   }
 
   Status draw_panel(const Panel& panel, int width, int height) {
+    // Room for both corner lines whether drawn or not: a frame's panel and its sheet
+    // cell (no corner line) frame the figure alike.
     const PanelLayout layout = panel_layout(width, height, panel.trail && !panel.trail->reference.empty(),
-                                            panel.strip != nullptr, panel.colour_scale_deg > 0.0);
+                                            panel.strip != nullptr, panel.colour_scale_deg > 0.0, 2);
     gl.BindFramebuffer(GL_FRAMEBUFFER, msaa_fbo);
     gl.Viewport(0, 0, width, height);
     gl.Disable(GL_SCISSOR_TEST);
@@ -631,7 +633,7 @@ struct Renderer::Impl {
     gl.Clear(GL_COLOR_BUFFER_BIT);
     gl.Disable(GL_SCISSOR_TEST);
 
-    const Rect& figure = layout.figure;
+    const Rect& figure = layout.view;  // the camera's: below the corner text
     viewport(figure, height);
     gl.Enable(GL_DEPTH_TEST);
     gl.Enable(GL_MULTISAMPLE);
@@ -654,9 +656,9 @@ struct Renderer::Impl {
     if (layout.bar.height > 0) draw_colour_bar(panel, layout.bar, width, height);
     if (layout.strip.height > 0) draw_strip(*panel.strip, layout.strip, width, height);
     {
-      const int ph = std::clamp(static_cast<int>(std::lround(0.045 * height)), 9, 18);
-      const float pad = static_cast<float>(std::max(3, ph / 3));
-      float top = static_cast<float>(figure.y) + pad;
+      const int ph = corner_text_height(height);
+      const float pad = static_cast<float>(corner_text_pad(height));
+      float top = static_cast<float>(layout.figure.y) + pad;
       if (!panel.corner.empty()) {
         texts.push_back(TextItem{panel.corner, pad, top, ph});
         top += 1.2f * static_cast<float>(ph);

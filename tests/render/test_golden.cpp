@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <memory>
+#include <utility>
 
 namespace rotinterp::render {
 namespace {
@@ -97,7 +98,7 @@ Result<Image> render_golden_frame(Backend backend, bool perturb) {
   auto renderer = Renderer::create(std::move(context).value(), scene);
   if (!renderer) return make_error(renderer.error());
   auto panels = golden_panels(clip);
-  if (perturb) panels[1].pose = panels[0].pose;  // the second panel shows no error
+  if (perturb) std::swap(panels[0].pose, panels[1].pose);  // each panel shows the other's pose
   return (*renderer)->render(panels, 400, 220);
 }
 

@@ -32,14 +32,23 @@ std::vector<Rect> grid_layout(int count, int columns, int width, int height);
 // height, 18…90 rows) below the scene area; with a colour bar, a narrow vertical
 // bar at the figure's left (its labels right of it), over the figure, from 0.32 to
 // 0.82 of the scene's height (two lines of text fit above it).
+// With `corner_lines` lines of text at the figure's top left (frame and time, the
+// colour scale), the camera's viewport is the figure less the band they take, so a
+// figure framed to its top (a fixed camera) never reaches under them.
 struct PanelLayout {
   int title_height = 0;  // rows at the top
-  Rect figure;           // the figure's viewport
+  Rect figure;           // the figure's area, its text at the top left
+  Rect view;             // the camera's viewport: the figure less the text band
   Rect inset;            // the trail's square; 0 × 0 without a trail
   Rect strip;            // 0 × 0 without a strip
   Rect bar;              // 0 × 0 without a colour bar
 };
-PanelLayout panel_layout(int width, int height, bool trail, bool strip = false, bool bar = false);
+PanelLayout panel_layout(int width, int height, bool trail, bool strip = false, bool bar = false, int corner_lines = 0);
+
+// The pixel height of the figure's corner text (frame and time) in a panel
+// `panel_height` high, and the padding around its lines.
+int corner_text_height(int panel_height);
+int corner_text_pad(int panel_height);
 
 // A line of text in a panel.
 struct TextItem {

@@ -3,6 +3,7 @@
 #include "rotinterp/clip/frames.h"
 #include "rotinterp/clip/metrics.h"
 #include "rotinterp/clip/resample.h"
+#include "rotinterp/clip/resample_loop.h"
 #include "rotinterp/clip/units.h"
 #include "rotinterp/eval/error_row.h"
 #include "rotinterp/eval/evaluate_clip.h"
@@ -66,7 +67,7 @@ Rate rate_of(const py::handle& fps) {
 
 Clip resample(const Clip& clip, const py::object& fps, const py::object& keep_every, const std::string& method,
               const std::map<std::string, std::string>& method_for, const std::string& translation,
-              const py::object& range) {
+              const py::object& range, const py::object& loop) {
   ResampleOptions o;
   if (!fps.is_none()) o.fps = rate_of(fps);
   if (!keep_every.is_none()) {
@@ -84,10 +85,22 @@ Clip resample(const Clip& clip, const py::object& fps, const py::object& keep_ev
     if (r.second) tr.end = *r.second;
     o.range = tr;
   }
+  // loop: None/False off; True or "auto" detects the form; "closed" or "open" forces it (resample --loop).
+  std::optional<std::optional<LoopForm>> cycle;
+  if (py::isinstance<py::bool_>(loop)) {
+    if (loop.cast<bool>()) cycle.emplace();
+  } else if (!loop.is_none()) {
+    cycle = checked(parse_loop_form(loop.cast<std::string>()));
+  }
   Result<Clip> out = make_error("");
   {
     py::gil_scoped_release release;
-    out = resample_clip(clip, o);
+    if (cycle) {
+      auto looped = resample_cycle(clip, o, *cycle);
+      out = looped ? Result<Clip>(std::move(looped->clip)) : Result<Clip>(looped.failure());
+    } else {
+      out = resample_clip(clip, o);
+    }
   }
   return checked(std::move(out));
 }
@@ -229,7 +242,7 @@ void bind_commands(py::module_& m) {
   m.def("resample", &resample, py::arg("clip"), py::arg("fps") = py::none(), py::arg("keep_every") = py::none(),
         py::arg("method") = std::string(kDefaultResampleMethod),
         py::arg("method_for") = std::map<std::string, std::string>{}, py::arg("translation") = "cubic",
-        py::arg("range") = py::none());
+        py::arg("range") = py::none(), py::arg("loop") = py::none());
   m.def("evaluate", &evaluate, py::arg("inputs"), py::arg("methods") = py::none(),
         py::arg("keep_every") = std::vector<int>{2, 4, 8, 16}, py::arg("subframe") = 0,
         py::arg("shell_distance") = kDefaultShellDistanceMetres);

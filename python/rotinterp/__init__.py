@@ -125,16 +125,18 @@ def render(input, out_dir=None, methods=None, keep_every=10, frames=None, size="
 
 
 def resample(clip, fps=None, keep_every=None, method=default_method, method_for=None, translation="cubic",
-             range=None):
+             range=None, loop=None):
     """Resample a clip, as ``rotinterp resample`` does.
 
     fps: output rate in Hz (a number, a string such as "30000/1001", or a
     fractions.Fraction), exact. keep_every: keep every Nth frame (and the last) as keys
     and rebuild every frame from them. Neither: the same rate. method_for: {joint:
     method}. translation: "cubic" (Steffen, no overshoot) or "linear". range:
-    (start, end) seconds from the first frame, either may be None.
+    (start, end) seconds from the first frame, either may be None. loop: the clip is a
+    cycle (``--loop``): True or "auto" detects its form, "closed" or "open" forces it;
+    the result is one period at the new rate, closing the same way (docs/resample.md).
     """
-    return _rotinterp.resample(clip, fps, keep_every, method, method_for or {}, translation, range)
+    return _rotinterp.resample(clip, fps, keep_every, method, method_for or {}, translation, range, loop)
 
 
 def evaluate(inputs, methods=None, keep_every=(2, 4, 8, 16), subframe=0, shell_distance=0.03):

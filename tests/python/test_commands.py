@@ -123,3 +123,17 @@ def test_commands_release_the_gil(name, tmp_path):
     pause, total = largest_pause_of_another_thread(call)
     assert total > 0.1  # long enough for a held GIL to show
     assert pause < 0.5 * total, (pause, total)
+
+
+def test_resample_loop_gives_one_period_closing_as_the_input():
+    clip = rotinterp.read_clip(str(DATA / "fbx" / "digitalrune_Marine_Run.fbx"))
+    looped = rotinterp.resample(clip, fps=25, loop=True)
+    assert looped.frame_count == 33  # 32 frames per period, closed: the last repeats the first
+    seam = np.degrees(rotinterp.angle(looped.rotations[0], looped.rotations[-1]))
+    names = list(looped.joint_names)
+    pop = names.index("L_Arm")  # the source's own 4.4° pop: reported, kept
+    assert seam[pop] == pytest.approx(4.39, abs=0.01)
+    assert np.delete(seam, pop).max() < 1e-7
+    assert rotinterp.resample(clip, fps=25, loop="closed").frame_count == 33
+    with pytest.raises(ValueError, match="expected auto, closed or open"):
+        rotinterp.resample(clip, fps=25, loop="wrap")

@@ -83,7 +83,9 @@ double end_slope(const std::vector<FbxKey>& keys) {
 
 }  // namespace
 
-double evaluate_fbx_curve(const FbxCurve& curve, double ticks) {
+namespace {
+
+double evaluate_unguarded(const FbxCurve& curve, double ticks) {
   const std::vector<FbxKey>& keys = curve.keys;
   if (keys.empty()) return std::isfinite(curve.default_value) ? curve.default_value : 0.0;
   if (!std::isfinite(ticks)) ticks = 0.0;
@@ -107,6 +109,15 @@ double evaluate_fbx_curve(const FbxCurve& curve, double ticks) {
   if (local < 0.0) local += period;
   const bool mirrored = rule.mode == FbxExtrapolation::mirror && std::fmod(cycle, 2.0) == 1.0;
   return inside(keys, mirrored ? last - local : first + local);
+}
+
+}  // namespace
+
+double evaluate_fbx_curve(const FbxCurve& curve, double ticks) {
+  const double v = evaluate_unguarded(curve, ticks);
+  if (std::isfinite(v)) return v;
+  // Keep-slope far out, or slopes near the float limit: the nearest end key.
+  return ticks < static_cast<double>(curve.keys.front().ticks) ? curve.keys.front().value : curve.keys.back().value;
 }
 
 std::vector<double> sample_fbx_curve(const FbxCurve& curve, double hz, std::int64_t end_ticks) {

@@ -478,6 +478,7 @@ Result<ComparisonResult> render_comparison(const Clip& clip, const fs::path& out
   scene.skeleton = clip.skeleton;
   for (const WorldPose& pose : reference)
     for_each_point(clip.skeleton, pose, {}, [&](const Vec3& p) { scene.bounds.extend(p); });
+  scene.axes = draws_axes(options.axes, clip);
 
   // Follow: as asked, or (automatic) when the root travels farther than the
   // skeleton is high; a focus joint is followed unless the camera is fixed.

@@ -1,5 +1,7 @@
 #include "rotinterp/render/geometry.h"
 
+#include "rotinterp/render/axes.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -143,6 +145,8 @@ void add_curve(const std::vector<Vec3>& points, std::size_t stride, double radiu
 void panel_figure(const Scene& scene, const Panel& panel, Batch& solid, Batch& translucent) {
   solid.clear();
   add_pose(scene.skeleton, panel.pose, scene.bone_radius, panel.color, 1.0f, solid, panel.joint_colors);
+  if (scene.axes) add_axes(scene.skeleton, panel.pose, axes_length(panel.view ? *panel.view : scene.bounds, scene.bone_radius),
+                            solid);
   translucent.clear();
   add_pose(scene.skeleton, panel.ghost, scene.bone_radius * 1.02, kGhostColor, kGhostAlpha, translucent);
 }

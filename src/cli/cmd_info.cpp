@@ -1,9 +1,12 @@
 // rotinterp info CLIP [--json] [--anim NAME|INDEX]: what a clip file holds.
+// rotinterp info CLIP --curves [--sample HZ] [--json]: an FBX file's curves as stored.
 // rotinterp info PATH... --summary [--json] [-j N]: a dataset's files, its rate
 // histogram and what looks wrong (rate labels, uneven keys, empty clips, copies).
 #include "common.h"
+#include "info_curves.h"
 #include "rotinterp/clip/bvh_layout.h"
 #include "rotinterp/clip/frames.h"
+#include "rotinterp/clip/loop.h"
 #include "rotinterp/core/work_queue.h"
 #include "rotinterp/io/dataset.h"
 #include "rotinterp/io/info.h"
@@ -35,6 +38,8 @@ struct InfoArgs {
   std::string anim, unit;
   bool json = false;
   bool summary = false;
+  bool curves = false;
+  double sample_hz = 0.0;
   int jobs = 0;
 };
 
@@ -236,10 +241,13 @@ int run_info(const InfoArgs& args) {
   if (!read_options) return fail_usage(read_options.error());
   ReadOptions options = *read_options;
   options.on_warning = warn;
+  options.read_curves = args.curves;
+  if (args.sample_hz > 0.0 && !args.curves) return fail_usage("--sample needs --curves");
   const std::string& path = args.paths.front();
   Result<ClipFileInfo> info = inspect_clip(path, options);
   if (!info && info.error_kind() == ErrorKind::no_animation) return describe_static(path, info.error(), args.json);
   if (!info) return fail(info.error());
+  if (args.curves) return print_info_curves(path, *info, args.sample_hz, args.json);
   const Clip& clip = info->clip;
   const Skeleton& sk = clip.skeleton;
   const std::vector<std::string> odd = clip_oddities(clip);
@@ -292,6 +300,7 @@ int run_info(const InfoArgs& args) {
   for (std::size_t j = 0; j < sk.joints.size(); ++j)
     if (clip.translations[j]) translated += (translated.empty() ? "" : ", ") + sk.joints[j].name;
   fmt::print("translation tracks: {}\n", translated.empty() ? "none" : translated);
+  if (const Result<LoopCheck> cycle = check_loop(clip)) fmt::print("cycle:       {}\n", loop_check_text(*cycle));
   if (!odd.empty()) {
     fmt::print("oddities:\n");
     for (const std::string& o : odd) fmt::print("  - {}\n", o);
@@ -316,6 +325,14 @@ void add_info_command(CLI::App& app, int& exit_code) {
                 "One row per file (format, rate as read and as written, frames, duration, joints, notes), then the "
                 "rate histogram; flags rate labels that are not their rate, uneven keys, empty clips, identical files");
   add_jobs_option(*sub, args->jobs, "With --summary: files read at once");
+  sub->add_flag("--curves", args->curves,
+                "FBX: the selected take's curves as the file stores them, read by rotinterp's own FBX reader: per "
+                "node, property (Lcl Translation/Rotation/Scaling), channel and layer, the keys with interpolation, "
+                "tangent mode, slopes and weights, and the extrapolation");
+  sub->add_option("--sample", args->sample_hz,
+                  "With --curves: also the value of each curve as the DCC evaluates it at k/HZ s, k = 0, 1, … up to "
+                  "the take's end (FBX time 0 is t = 0); default: no samples")
+      ->check(CLI::PositiveNumber);
   sub->callback([args, &exit_code] { exit_code = run_info(*args); });
 }
 

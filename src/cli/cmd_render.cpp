@@ -95,6 +95,7 @@ struct RenderArgs {
   std::string colour = "error";
   std::string camera;
   std::string focus;
+  std::string axes = "auto";
   bool no_strip = false;
   std::string video;
   std::optional<double> video_fps;  // unset: the clip's rate over the frame step
@@ -150,6 +151,9 @@ int run_render(const RenderArgs& a) {
     options.camera = *camera;
   }
   options.focus_joint = a.focus;
+  auto axes = render::parse_axes(a.axes);
+  if (!axes) return fail_usage(axes.error());
+  options.axes = *axes;
   options.strip = !a.no_strip;
   options.pngs = !a.out_dir.empty();
   if (!a.video.empty()) {
@@ -176,9 +180,11 @@ int run_render(const RenderArgs& a) {
   read_options.on_warning = warn;
   auto clip = read_clip(a.input, read_options);
   if (!clip) return fail(clip.error());
-  if (degenerate(*clip))
-    warn(fmt::format("{}: all {} joints lie within 1e-6 units of one point; the frames will show only the grid",
-                     a.input, clip->skeleton.joints.size()));
+  if (clip->skeleton.joints.size() > 1 && degenerate(*clip))
+    warn(fmt::format("{}: all {} joints lie within 1e-6 units of one point; the frames will show {}", a.input,
+                     clip->skeleton.joints.size(),
+                     render::draws_axes(options.axes, *clip) ? "each joint's axes there (--axes)"
+                                                             : "only the grid (--axes on draws each joint's axes)"));
   if (options.frames) warn_if_only_keys(*clip, options);
   options.progress = make_progress("render", a.quiet);
   auto result = render::render_comparison(*clip, a.out_dir, options);
@@ -232,6 +238,11 @@ void add_render_command(CLI::App& app, int& exit_code) {
       ->check(CLI::IsMember({"fixed", "follow"}));
   sub->add_option("--focus", args->focus,
                   "Frame this joint and the joints below it (a hand, a foot), following it (default: the whole figure)");
+  sub->add_option("--axes", args->axes,
+                  "auto, on or off: each joint's axes as a small RGB triad (x red, y green, z blue), which shows "
+                  "twist about a bone. Default auto: on when the clip has one joint or all its joints lie at one point")
+      ->default_val("auto")
+      ->check(CLI::IsMember({"auto", "on", "off"}));
   sub->add_flag("--no-strip", args->no_strip, "No error-over-time strip under the panels (default: drawn)");
   sub->add_option("--video", args->video,
                   "Also (or, without -o, only) encode the frames into FILE.mp4 (H.264) or FILE.gif through ffmpeg; "

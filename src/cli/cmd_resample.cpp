@@ -7,6 +7,7 @@
 #include "rotinterp/clip/frames.h"
 #include "rotinterp/clip/bvh_layout.h"
 #include "rotinterp/clip/resample.h"
+#include "rotinterp/clip/resample_loop.h"
 #include "rotinterp/clip/units.h"
 #include "rotinterp/core/work_queue.h"
 #include "rotinterp/eval/error_row.h"  // csv_field: the one CSV quoting
@@ -53,6 +54,8 @@ struct ResampleArgs {
   bool skip_existing = false;
   std::string unit, out_unit;  // as written; parsed into:
   std::optional<double> unit_m, out_unit_m;  // metres per unit
+  std::string loop = "off";                  // --loop as written; parsed into:
+  std::optional<LoopRequest> loop_request;
 };
 
 // One file's run: a row of the manifest.
@@ -69,6 +72,7 @@ struct FileRun {
   std::uintmax_t bytes = 0;  // of the input
   ClipUnit unit;             // the input's (clip/units.h)
   double output_metres_per_unit = 0.0;
+  std::string cycle;  // --loop: the cycle's summary (clip/resample_loop.h)
 };
 
 bool valid_bvh_order(std::string order) {
@@ -132,7 +136,15 @@ Status resample_file(FileRun& run, const ResampleArgs& a, const ResampleOptions&
   run.duration = clip->end_time() - clip->start_time();
   run.unit = clip->unit;
 
-  auto out = resample_clip(*clip, opt);
+  Result<Clip> out = make_error("");
+  if (a.loop_request) {
+    auto cycle = resample_cycle(*clip, opt, a.loop_request->form);
+    if (!cycle) return make_error(run.input + ": " + cycle.error());
+    run.cycle = cycle->summary();
+    out = std::move(cycle->clip);
+  } else {
+    out = resample_clip(*clip, opt);
+  }
   if (!out) return make_error(run.input + ": " + out.error());
   if (a.out_unit_m) convert_unit(*out, *a.out_unit_m, "--out-unit " + a.out_unit);
   run.output_metres_per_unit = out->unit.metres_per_unit;
@@ -184,6 +196,7 @@ int run_single(const ResampleArgs& a, ResampleOptions opt) {
     fmt::print("{} → {}: {} → {} frames ({}), method {}, translation {}, {:.3f} s; unit {}{}\n", input, a.output,
                run.frames, run.output_frames, how, methods, translation_interp_name(opt.translation), run.seconds,
                describe_unit(run.unit), a.out_unit_m ? ", written in " + unit_name(*a.out_unit_m) : std::string());
+    if (!run.cycle.empty()) fmt::print("  {}\n", run.cycle);
   }
   return kExitOk;
 }
@@ -327,6 +340,9 @@ int run_resample(ResampleArgs a) {
   // Everything that can be checked without the input is checked first (exit 2).
   auto opt = resample_options(a);
   if (!opt) return fail_usage(opt.error());
+  auto loop = parse_loop_option(a.loop);
+  if (!loop) return fail_usage(loop.error());
+  a.loop_request = *loop;
   auto unit = parse_unit_option(a.unit);
   if (!unit) return fail_usage(unit.error());
   a.unit_m = *unit;
@@ -374,6 +390,10 @@ void add_resample_command(CLI::App& app, int& exit_code) {
   sub->add_option("--translation", a->translation,
                   "Translation tracks: linear, or cubic (default: C¹, Steffen tangents — never overshoots between keys)");
   add_range_option(*sub, a->range, "cut before resampling (default: the whole clip)");
+  add_loop_option(*sub, a->loop,
+                  "The output is one period again, closing the same way; with --fps the period keeps whole frames "
+                  "(the rate is kept, the period stretched by under half a frame where needed, and the summary says "
+                  "so); --keep-every takes the wrap-around neighbours.");
   add_anim_option(*sub, a->anim, false);
   add_unit_option(*sub, a->unit);
   sub->add_option("--out-unit", a->out_unit,

@@ -149,6 +149,22 @@ CLI::Option* add_range_option(CLI::App& sub, std::string& range, const std::stri
                         "be empty; " + what);
 }
 
+CLI::Option* add_loop_option(CLI::App& sub, std::string& loop, const std::string& what) {
+  return sub
+      .add_option("--loop", loop,
+                  "[auto|closed|open] The clip is a cycle, played end to start: closed (the last frame repeats the "
+                  "first) or open (the last frame is one step before the first); alone or 'auto' detects the form "
+                  "(within 0.5° per joint and 1 cm of root height). Default off. " + what)
+      ->expected(0, 1);
+}
+
+Result<std::optional<LoopRequest>> parse_loop_option(const std::string& text) {
+  if (text == "off") return std::optional<LoopRequest>();
+  auto form = parse_loop_form(text);
+  if (!form) return form.failure();
+  return std::optional<LoopRequest>(LoopRequest{*form});
+}
+
 CLI::Option* add_anim_option(CLI::App& sub, std::string& anim, bool all_takes) {
   return sub.add_option("--anim", anim,
                         std::string("Animation (take) to read: its name or 0-based index") +

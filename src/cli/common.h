@@ -1,6 +1,7 @@
 // Shared plumbing of the subcommands: exit codes, error lines, progress.
 #pragma once
 
+#include "rotinterp/clip/loop.h"
 #include "rotinterp/clip/sampling.h"
 #include "rotinterp/core/progress.h"
 #include "rotinterp/core/result.h"
@@ -81,6 +82,15 @@ CLI::Option* add_fps_option(CLI::App& sub, std::string& fps, const std::string& 
 CLI::Option* add_keep_every_option(CLI::App& sub, std::string& keep_every, bool several, const std::string& what);
 // --range START:END, seconds or frames ("1.5:4", "120f:480f"), parsed by parse_time_range (clip/resample.h).
 CLI::Option* add_range_option(CLI::App& sub, std::string& range, const std::string& what);
+// --loop [auto|closed|open]: the clip is one period of a cycle (clip/loop.h); default
+// off, `--loop` alone detects the form (auto). The text is "off" when not given.
+CLI::Option* add_loop_option(CLI::App& sub, std::string& loop, const std::string& what);
+// What --loop asked: nothing (off), or a cycle whose form is detected (inner
+// nullopt) or forced. Errors: a word other than auto, closed, open.
+struct LoopRequest {
+  std::optional<LoopForm> form;
+};
+Result<std::optional<LoopRequest>> parse_loop_option(const std::string& text);
 // --anim NAME|INDEX (with `all_takes`, also "all").
 CLI::Option* add_anim_option(CLI::App& sub, std::string& anim, bool all_takes);
 // -j,--jobs N: worker threads, 0 = one per core.

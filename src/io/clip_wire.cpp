@@ -4,6 +4,7 @@
 
 #include "rotinterp/clip/bvh_layout.h"
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <limits>
@@ -14,7 +15,7 @@ namespace rotinterp::wire {
 namespace {
 
 // Also the format's version: bytes from another build fail here, not in a field.
-constexpr std::string_view kMagic = "rotinterp-clip-wire-3";
+constexpr std::string_view kMagic = "rotinterp-clip-wire-4";
 
 class Writer {
  public:
@@ -63,6 +64,18 @@ class Reader {
     std::uint64_t v = 0;
     raw(&v, sizeof v);
     return v;
+  }
+  std::int64_t i64() {
+    std::int64_t v = 0;
+    raw(&v, sizeof v);
+    return v;
+  }
+  // An enumerator of at most `last`.
+  template <class E>
+  E enumerator(E last) {
+    const std::uint8_t v = u8();
+    if (v > static_cast<std::uint8_t>(last)) fail();
+    return failed_ ? E{} : static_cast<E>(v);
   }
   double f64() {
     double v = 0.0;
@@ -233,6 +246,138 @@ void get(Reader& r, Clip& clip) {
   clip.file_rate_hz = r.f64();
 }
 
+// The FBX curves as read (io/fbx_curves.h): takes, layers, curves, keys, models.
+constexpr std::size_t kKey = 8 + 8 + 1 + 1 + 8 + 2 * kDouble + 2 + 2 * kDouble + 2 + 2 * kDouble + 3 * kDouble;
+constexpr std::size_t kFbxVec3 = 3 * kDouble;
+
+void put(Writer& w, const FbxVec3& v) {
+  for (double x : v) w.f64(x);
+}
+void get(Reader& r, FbxVec3& v) {
+  for (double& x : v) x = r.f64();
+}
+
+void put(Writer& w, const FbxCurve& c) {
+  w.str(c.node);
+  w.str(c.property);
+  w.u8(static_cast<std::uint8_t>(c.channel));
+  w.u64(c.layer);
+  w.f64(c.default_value);
+  for (const FbxExtrapolationRule* e : {&c.pre, &c.post}) {
+    w.u8(static_cast<std::uint8_t>(e->mode));
+    w.i64(e->repetitions);
+  }
+  w.u64(c.keys.size());
+  for (const FbxKey& k : c.keys) {
+    w.i64(k.ticks);
+    w.f64(k.value);
+    w.u8(static_cast<std::uint8_t>(k.interpolation));
+    w.u8(static_cast<std::uint8_t>(k.tangent));
+    w.u64(k.flags);
+    w.f64(k.right_slope), w.f64(k.next_left_slope);
+    w.u8(k.weighted_right), w.u8(k.weighted_next_left);
+    w.f64(k.right_weight), w.f64(k.next_left_weight);
+    w.u8(k.velocity_right), w.u8(k.velocity_next_left);
+    w.f64(k.right_velocity), w.f64(k.next_left_velocity);
+    w.f64(k.tension), w.f64(k.continuity), w.f64(k.bias);
+  }
+}
+void get(Reader& r, FbxCurve& c) {
+  c.node = r.str();
+  c.property = r.str();
+  c.channel = static_cast<char>(r.u8());
+  if (c.channel != 'X' && c.channel != 'Y' && c.channel != 'Z') r.fail();
+  c.layer = r.size();
+  c.default_value = r.f64();
+  for (FbxExtrapolationRule* e : {&c.pre, &c.post}) {
+    e->mode = r.enumerator(FbxExtrapolation::keep_slope);
+    const std::int64_t reps = r.i64();
+    if (reps < -1 || reps > std::numeric_limits<int>::max()) r.fail();
+    e->repetitions = static_cast<int>(reps);
+  }
+  c.keys.resize(r.count(kKey));
+  for (std::size_t i = 0; i < c.keys.size(); ++i) {
+    FbxKey& k = c.keys[i];
+    k.ticks = r.i64();
+    k.value = r.f64();
+    k.interpolation = r.enumerator(FbxInterpolation::cubic);
+    k.tangent = r.enumerator(FbxTangent::tcb);
+    const std::uint64_t flags = r.u64();
+    if (flags > std::numeric_limits<std::uint32_t>::max()) r.fail();
+    k.flags = static_cast<std::uint32_t>(flags);
+    k.right_slope = r.f64(), k.next_left_slope = r.f64();
+    k.weighted_right = r.flag(), k.weighted_next_left = r.flag();
+    k.right_weight = r.f64(), k.next_left_weight = r.f64();
+    k.velocity_right = r.flag(), k.velocity_next_left = r.flag();
+    k.right_velocity = r.f64(), k.next_left_velocity = r.f64();
+    k.tension = r.f64(), k.continuity = r.f64(), k.bias = r.f64();
+    // The evaluator relies on finite values and increasing times (rules of fbx_curves.h).
+    for (double v : {k.value, k.right_slope, k.next_left_slope, k.right_weight, k.next_left_weight, k.tension,
+                     k.continuity, k.bias})
+      if (!std::isfinite(v)) r.fail();
+    if (i > 0 && k.ticks <= c.keys[i - 1].ticks) r.fail();
+  }
+}
+
+void put(Writer& w, const FbxAnimation& a) {
+  w.u64(a.takes.size());
+  for (const FbxTake& t : a.takes) {
+    w.str(t.name);
+    w.i64(t.start), w.i64(t.stop);
+    w.u64(t.layers.size());
+    for (const FbxLayer& l : t.layers) {
+      w.str(l.name);
+      w.f64(l.weight);
+      w.u8(static_cast<std::uint8_t>(l.blend));
+      w.u8(l.mute), w.u8(l.solo);
+      w.i64(l.rotation_accumulation), w.i64(l.scale_accumulation);
+    }
+    w.u64(t.curves.size());
+    for (const FbxCurve& c : t.curves) put(w, c);
+  }
+  w.u64(a.models.size());
+  for (const FbxModel& m : a.models) {
+    w.str(m.name);
+    w.i64(m.id), w.i64(m.parent);
+    w.i64(m.rotation_order), w.i64(m.inherit_type);
+    w.u8(m.rotation_active);
+    for (const FbxVec3* v : {&m.translation, &m.rotation, &m.scaling, &m.pre_rotation, &m.post_rotation,
+                             &m.rotation_offset, &m.rotation_pivot, &m.scaling_offset, &m.scaling_pivot})
+      put(w, *v);
+  }
+}
+void get(Reader& r, FbxAnimation& a) {
+  a.takes.resize(r.count(kString + 8 + 8 + 8 + 8));
+  for (FbxTake& t : a.takes) {
+    t.name = r.str();
+    t.start = r.i64(), t.stop = r.i64();
+    t.layers.resize(r.count(kString + kDouble + 3 + 16));
+    for (FbxLayer& l : t.layers) {
+      l.name = r.str();
+      l.weight = r.f64();
+      l.blend = r.enumerator(FbxBlendMode::override_passthrough);
+      l.mute = r.flag(), l.solo = r.flag();
+      l.rotation_accumulation = r.index(), l.scale_accumulation = r.index();
+    }
+    t.curves.resize(r.count(2 * kString + 1 + 8 + kDouble + 18 + 8));
+    for (FbxCurve& c : t.curves) {
+      get(r, c);
+      if (c.layer >= t.layers.size()) r.fail();
+    }
+  }
+  a.models.resize(r.count(kString + 4 * 8 + 1 + 9 * kFbxVec3));
+  for (FbxModel& m : a.models) {
+    m.name = r.str();
+    m.id = r.i64(), m.parent = r.i64();
+    m.rotation_order = r.index(), m.inherit_type = r.index();
+    if (m.rotation_order < 0 || m.rotation_order > 5) r.fail();
+    m.rotation_active = r.flag();
+    for (FbxVec3* v : {&m.translation, &m.rotation, &m.scaling, &m.pre_rotation, &m.post_rotation,
+                       &m.rotation_offset, &m.rotation_pivot, &m.scaling_offset, &m.scaling_pivot})
+      get(r, *v);
+  }
+}
+
 }  // namespace
 
 std::string encode(const ReadOutcome& outcome) {
@@ -258,6 +403,8 @@ std::string encode(const ReadOutcome& outcome) {
   w.u64(info.warnings.size());
   for (const std::string& s : info.warnings) w.str(s);
   w.u64(info.folded_helpers);
+  w.u8(info.curves.has_value());
+  if (info.curves) put(w, *info.curves);
   return w.take();
 }
 
@@ -286,6 +433,7 @@ Result<ReadOutcome> decode(std::string_view bytes) {
   info.warnings.resize(r.count(kString));
   for (std::string& s : info.warnings) s = r.str();
   info.folded_helpers = r.size();
+  if (r.flag()) get(r, info.curves.emplace());
   if (r.failed()) return make_error("clip record cut short or garbled");
   if (!r.at_end()) return make_error("clip record followed by stray bytes");
   return out;

@@ -24,7 +24,7 @@ wire::ReadOutcome read_in_this_process(const std::filesystem::path& path, const 
 Result<wire::ReadOutcome> read_in_importer(const std::filesystem::path& path, const ReadOptions& options);
 
 // main() of the importer executable: `rotinterp-import PROTOCOL PARENT_PID PATH
-// ANIMATION FOLD CROSS_CHECK` writes the outcome to its standard output.
+// ANIMATION FOLD CROSS_CHECK CURVES UNIT` writes the outcome to its standard output.
 int importer_main(int argc, char** argv);
 
 }  // namespace rotinterp::detail

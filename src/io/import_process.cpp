@@ -32,7 +32,7 @@ namespace {
 
 constexpr const char* kImporterName = "rotinterp-import";
 // The command line's first argument: both ends come from the same build.
-constexpr std::string_view kProtocol = "rotinterp-import-2";
+constexpr std::string_view kProtocol = "rotinterp-import-3";
 
 bool executable(const fs::path& p) {
   std::error_code ec;
@@ -155,6 +155,7 @@ Result<wire::ReadOutcome> read_in_importer(const fs::path& path, const ReadOptio
                                    options.animation,
                                    options.fold_fbx_helpers ? "1" : "0",
                                    options.cross_check_with_assimp ? "1" : "0",
+                                   options.read_curves ? "1" : "0",
                                    options.unit ? fmt_double(*options.unit) : std::string()};
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
@@ -226,7 +227,7 @@ Result<wire::ReadOutcome> read_in_importer(const fs::path& path, const ReadOptio
 }
 
 int importer_main(int argc, char** argv) {
-  if (argc != 8 || argv[1] != kProtocol) {
+  if (argc != 9 || argv[1] != kProtocol) {
     std::fprintf(stderr, "%s: the importer of rotinterp's reader, started by it; not a command\n", kImporterName);
     return 2;
   }
@@ -243,7 +244,8 @@ int importer_main(int argc, char** argv) {
   options.animation = argv[4];
   options.fold_fbx_helpers = std::string_view(argv[5]) == "1";
   options.cross_check_with_assimp = std::string_view(argv[6]) == "1";
-  if (argv[7][0] != '\0') options.unit = std::strtod(argv[7], nullptr);
+  options.read_curves = std::string_view(argv[7]) == "1";
+  if (argv[8][0] != '\0') options.unit = std::strtod(argv[8], nullptr);
   const std::string payload = wire::encode(read_in_this_process(argv[3], options));
   // _exit: no exit handlers, so LeakSanitizer does not turn assimp's leaks on a
   // bad file into a failed import.

@@ -2,6 +2,7 @@
 // Python module (rotinterp.info), so that both give the same document.
 #include "rotinterp/clip/bvh_layout.h"
 #include "rotinterp/clip/frames.h"
+#include "rotinterp/clip/loop.h"
 #include "rotinterp/clip/units.h"
 #include "rotinterp/io/info.h"
 
@@ -73,6 +74,23 @@ std::string clip_info_json(const std::string& path, const ClipFileInfo& info) {
   out["joints"] = joints;
   out["end_sites"] = sk.end_sites.size();
   out["translation_tracks"] = translated;
+  // The cycle check (clip/loop.h); null where it cannot run (no frame rate, < 3 frames).
+  if (const Result<LoopCheck> c = check_loop(clip)) {
+    nlohmann::json misses = nlohmann::json::array();
+    for (const ClosureMiss& m : c->misses) misses.push_back({{"joint", m.name}, {"angle_deg", m.angle * 180.0 / kPi}});
+    out["cycle"] = {{"looks_like_cycle", c->looks_like_cycle},
+                    {"form", loop_form_name(c->form)},
+                    {"period_frames", c->period_frames},
+                    {"period_s", c->period},
+                    {"worst_closing_angle_deg", c->worst_closing_angle * 180.0 / kPi},
+                    {"joints_missing_closure", misses},
+                    {"moving_joints", c->moving_joints},
+                    {"root_vertical_offset_m", c->root_vertical_offset},
+                    {"root_advance", {c->root_advance.x(), c->root_advance.y(), c->root_advance.z()}},
+                    {"text", loop_check_text(*c)}};
+  } else {
+    out["cycle"] = nullptr;
+  }
   out["oddities"] = odd;
   out["warnings"] = info.warnings;
   return out.dump(2);

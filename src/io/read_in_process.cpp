@@ -5,6 +5,7 @@
 #include "assimp_text.h"
 #include "import.h"
 #include "read_parts.h"
+#include "rotinterp/io/fbx_curves.h"
 #include "scene_to_clip.h"
 
 #include <assimp/Importer.hpp>
@@ -193,6 +194,11 @@ Status read_here(const fs::path& path, const ReadOptions& options, ClipFileInfo&
   Status st = is_bvh(path, ext) ? read_bvh_checked(path, options, info, warn)
                                 : read_with_assimp(path, options, ext, info, warn);
   if (!st) return st;
+  if (options.read_curves && ext == "fbx") {
+    Result<FbxAnimation> curves = read_fbx_curves_file(path, label);
+    if (!curves) return curves.failure();
+    info.curves = std::move(*curves);
+  }
   return check_clip(info, label, options);
 }
 

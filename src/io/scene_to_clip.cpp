@@ -3,6 +3,7 @@
 // bake its static scale, build the tracks, detect the frame rate.
 #include "scene_to_clip.h"
 
+#include "mesh_end_sites.h"
 #include "rotinterp/clip/sampling.h"
 
 #include <assimp/scene.h>
@@ -436,6 +437,12 @@ Status scene_to_clip(const aiScene* scene, const aiAnimation* anim, double tps, 
     clip.rotations[j] = rotation_track(keys[j], tps);
   }
   add_translation_tracks(*sel, keys, cum_scale, tps, clip);
+  std::set<const aiNode*> joint_nodes;
+  for (std::size_t node : sel->selected) joint_nodes.insert(recs[node].node);
+  const auto is_joint = [&](const aiNode* x) { return joint_nodes.count(x) > 0; };
+  for (std::size_t j = 0; j < n; ++j)
+    if (sel->animated[sel->selected[j]])
+      add_mesh_end_sites(scene, recs[sel->selected[j]].node, static_cast<int>(j), cum_scale[j], is_joint, clip.skeleton);
   if (const double ft = detect_frame_time(*times, tps); ft > 0.0) clip.frame_time = ft;
   add_scene_facts(scene, anim, tps, clip);
   return Ok{};

@@ -13,11 +13,11 @@ namespace rotinterp {
 // file without an animation and goes on after a crash). Most errors are `other`.
 enum class ErrorKind {
   other,
-  unreadable,    // a file that is not a clip: empty, malformed, or refused by its importer
-  no_animation,  // a readable file that holds no animation (a mesh)
-  crashed,       // the importer process died on the file (an assimp bug)
-  too_large,     // the importer's result passed ReadOptions::max_import_bytes
-  timed_out,     // the importer ran past ReadOptions::import_timeout_seconds
+  unreadable,    // input that is not what it should be: empty, malformed, or refused
+  no_animation,  // readable input that holds no animation (a mesh)
+  crashed,       // a helper process died on the input
+  too_large,     // a result passed the size limit its caller set
+  timed_out,     // work ran past the deadline its caller set
   no_file,       // nothing at the path: missing, a link to nothing, a loop of links
   directory,     // the path is a directory
   cannot_open,   // the system refuses to read it: permissions, not a regular file, I/O

@@ -2,7 +2,7 @@
 // interpolating the keys; every point a weighted average (core/average.h).
 #pragma once
 
-#include "rotinterp/clip/clip.h"
+#include "rotinterp/track/track.h"
 #include "rotinterp/core/average.h"
 #include "rotinterp/core/result.h"
 #include "rotinterp/core/rotation.h"

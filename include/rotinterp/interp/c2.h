@@ -14,7 +14,7 @@
 // constant angular velocity at any key spacing, C² at interior keys.
 #pragma once
 
-#include "rotinterp/clip/clip.h"
+#include "rotinterp/track/track.h"
 #include "rotinterp/core/result.h"
 #include "rotinterp/core/rotation.h"
 #include "rotinterp/interp/interpolator.h"

@@ -31,7 +31,7 @@
 // p is a second-order rate).
 #pragma once
 
-#include "rotinterp/clip/clip.h"
+#include "rotinterp/track/track.h"
 #include "rotinterp/core/result.h"
 #include "rotinterp/core/rotation.h"
 #include "rotinterp/interp/interpolator.h"

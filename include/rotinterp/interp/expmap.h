@@ -9,7 +9,7 @@
 // (v(t) = ω·t is linear), even past 2π — only with the unwrapping.
 #pragma once
 
-#include "rotinterp/clip/clip.h"
+#include "rotinterp/track/track.h"
 #include "rotinterp/core/result.h"
 #include "rotinterp/core/rotation.h"
 #include "rotinterp/interp/interpolator.h"

@@ -7,7 +7,7 @@
 // slerp.h, squad.h, expmap.h, nlerp.h, bf.h, c2.h, clamped.h, gltf_cubic.h.
 #pragma once
 
-#include "rotinterp/clip/clip.h"
+#include "rotinterp/track/track.h"
 #include "rotinterp/core/result.h"
 #include "rotinterp/core/rotation.h"
 

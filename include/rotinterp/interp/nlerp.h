@@ -5,7 +5,7 @@
 // exact on constant angular velocity.
 #pragma once
 
-#include "rotinterp/clip/clip.h"
+#include "rotinterp/track/track.h"
 #include "rotinterp/core/result.h"
 #include "rotinterp/core/rotation.h"
 #include "rotinterp/interp/interpolator.h"

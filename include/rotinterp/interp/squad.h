@@ -29,7 +29,7 @@
 // scale the incoming log and give large loops — finite, but large.
 #pragma once
 
-#include "rotinterp/clip/clip.h"
+#include "rotinterp/track/track.h"
 #include "rotinterp/core/result.h"
 #include "rotinterp/core/rotation.h"
 #include "rotinterp/interp/interpolator.h"

@@ -4,10 +4,12 @@
 
 #include "rotinterp/clip/clip.h"
 #include "rotinterp/core/result.h"
+#include "rotinterp/io/fbx_curves.h"
 #include "rotinterp/io/read.h"
 
 #include <cstddef>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +30,9 @@ struct ClipFileInfo {
   Clip clip;
   std::vector<std::string> warnings;  // as also passed to ReadOptions::on_warning
   std::size_t folded_helpers = 0;     // `$AssimpFbx$` helper nodes folded into bones
+  // FBX with ReadOptions::read_curves: the curves as the file stores them, read by
+  // our own FBX reader (io/fbx_curves.h); empty otherwise.
+  std::optional<FbxAnimation> curves;
 };
 
 // A file without animation is refused (ErrorKind::no_animation) with "FILE: the file
@@ -48,6 +53,20 @@ std::vector<std::string> clip_oddities(const Clip& clip);
 // given): one JSON document, 2-space indented, the one definition the CLI and the
 // Python module's rotinterp.info share.
 std::string clip_info_json(const std::string& path, const ClipFileInfo& info);
+// What `rotinterp info --curves --json` prints: {"curves": [{"node", "property",
+// "channel", "layer", "default", "pre_extrapolation", "post_extrapolation",
+// "keys": [{"t", "ticks", "value", "interpolation", "tangent", "left_slope",
+// "right_slope", "left_weight", "right_weight", …}], "samples": […]}]} for the
+// selected take of info.curves (2-space indented). `sample_hz` > 0 adds "samples":
+// the curve at k/sample_hz s, k = 0, 1, … up to the take's end (FBX time 0 is t = 0);
+// "t" is in seconds, slopes in value per second (fbx_curve_eval.h).
+std::string curves_info_json(const ClipFileInfo& info, double sample_hz);
+// The take info --curves describes: the selected animation's, else the first; nullptr
+// when the file has no curves.
+const FbxTake* selected_take(const ClipFileInfo& info);
+// The last sample time of that take in ticks: its LocalStop, or its last key.
+std::int64_t take_end_ticks(const FbxTake& take);
+
 // Its "unit" object (clip/units.h), as JSON text; info --summary's rows use it too.
 std::string unit_info_json(const ClipUnit& unit);
 

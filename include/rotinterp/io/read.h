@@ -15,7 +15,9 @@
 //    assimp's `$AssimpFbx$` helper nodes are folded into their bone (static and
 //    animated transforms composed, keys at the union of their times) so world poses
 //    are exact. A uniform static scale on a node is baked into the translations of
-//    its descendants; other scale is ignored with a warning.
+//    its descendants; other scale is ignored with a warning. A leaf node carrying
+//    unskinned meshes under an animated joint becomes an End Site of that joint at
+//    its meshes' bounding-box centre (a prop or box hanging off its pivot).
 //  * Every key is normalized and the track made sign-continuous.
 //  * The clip's unit (Clip::unit) is settled here, once: declared by the file, given
 //    (ReadOptions::unit) or inferred (clip/units.h).
@@ -60,6 +62,11 @@ struct ReadOptions {
   // always comes from our own pass, which validates the whole file by itself, and
   // assimp's import costs more than the rest of a BVH read (README "Formats").
   bool cross_check_with_assimp = false;
+  // FBX: also read the file's animation curves as stored — keys, tangents, takes,
+  // layers — with our own FBX reader, in the importer process like the rest of the
+  // read (ClipFileInfo::curves; `info --curves`). A malformed curve then refuses the
+  // file (ErrorKind::unreadable). Off by default.
+  bool read_curves = false;
   // Every assimp import (any file but a BVH read without the cross-check) runs in a
   // separate importer process (rotinterp-import, see find_importer()), which sends
   // its reading back; this process never calls assimp's importers. assimp 5.2.5

@@ -14,6 +14,7 @@
 #include "rotinterp/clip/clip.h"
 #include "rotinterp/core/progress.h"
 #include "rotinterp/core/result.h"
+#include "rotinterp/render/axes.h"
 #include "rotinterp/render/context.h"
 #include "rotinterp/render/renderer.h"
 
@@ -66,6 +67,7 @@ struct ComparisonOptions {
   Colouring colouring = Colouring::error;
   CameraMode camera = CameraMode::automatic;
   std::string focus_joint;            // non-empty: the camera follows this joint and frames its limb
+  AxesMode axes = AxesMode::automatic;  // each joint's axes as an RGB triad (axes.h)
   bool strip = true;                  // an error-over-time strip under each panel
   bool pngs = true;                   // write frame_NNNNNN.png (and sheet.png) into the output directory
   std::filesystem::path video;        // non-empty: also encode the frames into this .mp4 or .gif

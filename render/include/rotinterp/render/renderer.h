@@ -74,6 +74,7 @@ struct Scene {
   // places the grid (its height always; its extent around a panel's view when set).
   Bounds bounds;
   double bone_radius = 0;   // clip units; 0 = automatic (scene_bone_radius)
+  bool axes = false;        // each joint's axes as an RGB triad, sized to the box framed (axes.h)
   ViewAngles view;
 };
 

@@ -1,0 +1,119 @@
+// FBX animation as the file stores it (FBX 7.x AnimationStack/Layer/CurveNode/
+// Curve objects): per node property and channel, every key with its interpolation,
+// tangent mode, slopes, weights, velocities and TCB parameters, the curve's pre-
+// and post-extrapolation, every take and layer, and the node properties that shape
+// a transform. Read from an FbxDocument (io/fbx_nodes.h); evaluated by
+// io/fbx_curve_eval.h.
+//
+// Units: key times in FBX ticks (kFbxTicksPerSecond); values as stored (degrees
+// for Lcl Rotation, file units for Lcl Translation); slopes in value per second.
+#pragma once
+
+#include "rotinterp/core/result.h"
+#include "rotinterp/io/fbx_nodes.h"
+
+#include <array>
+#include <string>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace rotinterp {
+
+inline constexpr std::int64_t kFbxTicksPerSecond = 46186158000;
+
+// Of the segment that starts at a key.
+enum class FbxInterpolation { constant_previous, constant_next, linear, cubic };
+// How the DCC made the key's tangents (the stored slopes are what it evaluates).
+enum class FbxTangent { none, auto_smooth, spline, clamped, user, broken, tcb };
+enum class FbxExtrapolation { constant, repetition, mirror, keep_slope };
+
+const char* fbx_interpolation_name(FbxInterpolation i);  // "constant-previous", …
+const char* fbx_tangent_name(FbxTangent t);             // "auto", "spline", …
+const char* fbx_extrapolation_name(FbxExtrapolation e);  // "constant", "repetition", …
+
+struct FbxKey {
+  std::int64_t ticks = 0;
+  double value = 0.0;
+  FbxInterpolation interpolation = FbxInterpolation::linear;
+  FbxTangent tangent = FbxTangent::none;
+  std::uint32_t flags = 0;  // KeyAttrFlags as stored
+  // KeyAttrDataFloat's first two values as stored: user and broken keys' right
+  // slope and the next key's left slope (value per second); for auto keys the
+  // auto biases (RightAuto, NextLeftAuto), the slopes being solved from the keys
+  // (fbx_curve_eval.h fbx_key_tangents).
+  double right_slope = 0.0, next_left_slope = 0.0;
+  // Tangent lengths as fractions of the segment; 1/3 unless weighted.
+  bool weighted_right = false, weighted_next_left = false;
+  double right_weight = 1.0 / 3.0, next_left_weight = 1.0 / 3.0;
+  bool velocity_right = false, velocity_next_left = false;
+  double right_velocity = 0.0, next_left_velocity = 0.0;
+  // TCB keys: tension, continuity, bias (the first three data values).
+  double tension = 0.0, continuity = 0.0, bias = 0.0;
+};
+
+struct FbxExtrapolationRule {
+  FbxExtrapolation mode = FbxExtrapolation::constant;
+  int repetitions = -1;  // -1: without end
+};
+
+struct FbxCurve {
+  std::string node;      // the model's name
+  std::string property;  // "Lcl Rotation", "Lcl Translation", "Lcl Scaling"
+  char channel = 'X';    // 'X', 'Y', 'Z'
+  std::size_t layer = 0;  // index in the take's layers
+  double default_value = 0.0;
+  std::vector<FbxKey> keys;  // times strictly increasing
+  FbxExtrapolationRule pre, post;
+};
+
+enum class FbxBlendMode { additive, override, override_passthrough };
+const char* fbx_blend_mode_name(FbxBlendMode b);
+
+struct FbxLayer {
+  std::string name;
+  double weight = 100.0;  // percent
+  FbxBlendMode blend = FbxBlendMode::additive;
+  bool mute = false, solo = false;
+  int rotation_accumulation = 0;  // 0 by layer (Euler angles add), 1 by channel
+  int scale_accumulation = 0;     // 0 multiply, 1 additive
+};
+
+struct FbxTake {
+  std::string name;
+  std::int64_t start = 0, stop = 0;  // ticks (LocalStart, LocalStop)
+  std::vector<FbxLayer> layers;
+  std::vector<FbxCurve> curves;
+};
+
+using FbxVec3 = std::array<double, 3>;
+
+// A model's transform properties (Properties70, over its template's defaults).
+struct FbxModel {
+  std::string name;
+  std::int64_t id = 0;
+  std::int64_t parent = 0;  // the parent model's id, 0 for the scene root
+  int rotation_order = 0;   // 0 XYZ, 1 XZY, 2 YZX, 3 YXZ, 4 ZXY, 5 ZYX
+  int inherit_type = 0;     // 0 RrSs, 1 RSrs, 2 Rrs
+  bool rotation_active = false;
+  FbxVec3 translation{0, 0, 0}, rotation{0, 0, 0}, scaling{1, 1, 1};
+  FbxVec3 pre_rotation{0, 0, 0}, post_rotation{0, 0, 0};
+  FbxVec3 rotation_offset{0, 0, 0}, rotation_pivot{0, 0, 0};
+  FbxVec3 scaling_offset{0, 0, 0}, scaling_pivot{0, 0, 0};
+};
+
+struct FbxAnimation {
+  std::vector<FbxTake> takes;
+  std::vector<FbxModel> models;
+};
+
+// The animation of a parsed FBX file. Malformed animation objects (key arrays of
+// differing lengths, times not increasing, attribute counts that do not cover the
+// keys) are refused with one line naming the file and the curve.
+Result<FbxAnimation> read_fbx_animation(const FbxDocument& doc, const std::string& label);
+
+// The file at `path` read whole and through parse_fbx_nodes and read_fbx_animation;
+// `label` names it in errors (ErrorKind::unreadable, or cannot_open).
+Result<FbxAnimation> read_fbx_curves_file(const std::string& path, const std::string& label);
+
+}  // namespace rotinterp

@@ -92,7 +92,7 @@ py::object rate_text(const Clip& c) {
 // A clip from arrays (see the stub for the argument rules).
 Clip make_clip(const std::vector<std::string>& names, const py::handle& parents_in, const py::handle& offsets_in,
                const py::handle& times_in, const py::handle& rotations_in, const py::object& translations,
-               std::optional<double> frame_time, double unit_scale, bool scalar_first, const std::string& name) {
+               std::optional<double> frame_time, double metres, bool scalar_first, const std::string& name) {
   const std::size_t nj = names.size();
   const Doubles times = times_array(times_in, "times");
   const auto f = static_cast<std::size_t>(times.shape(0));
@@ -116,7 +116,7 @@ Clip make_clip(const std::vector<std::string>& names, const py::handle& parents_
   Clip c;
   c.name = name;
   c.source_format = "python";
-  c.unit = {unit_scale, UnitOrigin::given, "given: make_clip(unit_scale=)"};
+  c.unit = {metres, UnitOrigin::given, "given: Clip(metres_per_unit=)"};
   for (std::size_t j = 0; j < nj; ++j) {
     Joint joint;
     joint.name = names[j];
@@ -295,7 +295,7 @@ void bind_clip(py::module_& m) {
   py::class_<Clip>(m, "Clip")
       .def(py::init(&make_clip), py::arg("names"), py::arg("parents"), py::arg("offsets"), py::arg("times"),
            py::arg("rotations"), py::arg("translations") = py::none(), py::arg("frame_time") = py::none(),
-           py::arg("unit_scale") = 1.0, py::arg("scalar_first") = false, py::arg("name") = "clip")
+           py::arg("metres_per_unit") = 1.0, py::arg("scalar_first") = false, py::arg("name") = "clip")
       .def_readonly("name", &Clip::name)
       .def_property_readonly("names",
                              [](const Clip& c) {
@@ -326,7 +326,6 @@ void bind_clip(py::module_& m) {
       .def_readonly("frame_time", &Clip::frame_time)
       .def_property_readonly("rate", &rate_hz)
       .def_property_readonly("rate_text", &rate_text)
-      .def_property_readonly("unit_scale", [](const Clip& c) { return c.unit.metres_per_unit; })
       .def_readonly("unit", &Clip::unit)
       .def_property_readonly("metres_per_unit", [](const Clip& c) { return metres_per_unit(c); })
       .def_property_readonly("joint_names",

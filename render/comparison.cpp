@@ -74,7 +74,7 @@ struct Rebuild {
           decimated_track(r.dense.grid.times, r.dense.rotation[j], r.animated[j] ? r.keys : std::vector<std::size_t>{0});
       for (std::size_t m = 0; m < methods.size(); ++m) {
         auto made = make_interpolator(methods[m], track);
-        if (!made) return make_error(methods[m] + ", joint " + clip.skeleton.joints[j].name + ": " + made.error());
+        if (!made) return made.failure(methods[m] + ", joint " + clip.skeleton.joints[j].name + ": ");
         r.interpolators[m].push_back(std::move(made).value());
       }
     }
@@ -207,16 +207,16 @@ Result<FrameRange> parse_frame_range(std::string_view text) {
   if (parts.size() > 3) return make_error("--frames '" + std::string(text) + "' is not START[:END[:STEP]]");
   FrameRange r;
   auto start = parse_count(parts[0], "--frames start");
-  if (!start) return make_error(start.error());
+  if (!start) return start.failure();
   r.start = r.end = *start;
   if (parts.size() > 1) {
     auto end = parse_count(parts[1], "--frames end");
-    if (!end) return make_error(end.error());
+    if (!end) return end.failure();
     r.end = *end;
   }
   if (parts.size() > 2) {
     auto step = parse_count(parts[2], "--frames step");
-    if (!step) return make_error(step.error());
+    if (!step) return step.failure();
     r.step = *step;
   }
   if (r.end < r.start) return make_error("--frames '" + std::string(text) + "': END is before START");
@@ -248,10 +248,10 @@ Result<CameraMode> parse_camera(std::string_view name) {
 }
 
 Result<std::vector<FrameError>> comparison_errors(const Clip& clip, const std::string& method, std::size_t keep_every) {
-  if (Status s = clip.validate(); !s) return make_error(s.error());
+  if (Status s = clip.validate(); !s) return s.failure();
   if (!find_method(method)) return make_error(unknown_method_message(method));
   auto rebuild = Rebuild::build(clip, {method}, std::max<std::size_t>(keep_every, 1));
-  if (!rebuild) return make_error(rebuild.error());
+  if (!rebuild) return rebuild.failure();
   std::vector<FrameError> errors(rebuild->frames());
   std::vector<Quat> local;
   for (std::size_t f = 0; f < errors.size(); ++f) errors[f] = rebuild->method_rotations(0, f, local);
@@ -410,7 +410,7 @@ double default_video_fps(const Clip& clip, const Rebuild& rebuild, const std::ve
 
 Result<ComparisonResult> render_comparison(const Clip& clip, const fs::path& out_dir, const ComparisonOptions& options) {
   // ---- validate everything before drawing anything ----
-  if (Status s = clip.validate(); !s) return make_error(s.error());
+  if (Status s = clip.validate(); !s) return s.failure();
   if (options.methods.empty()) return make_error("no methods to compare");
   for (const std::string& m : options.methods)
     if (!find_method(m)) return make_error(unknown_method_message(m));
@@ -418,7 +418,7 @@ Result<ComparisonResult> render_comparison(const Clip& clip, const fs::path& out
   if (!options.pngs && options.video.empty()) return make_error("nothing to write: no frame images and no video");
   if (!options.pngs && options.sheet) return make_error("--sheet needs an output directory");
   const int methods = static_cast<int>(options.methods.size());
-  if (Status s = check_image_size(options.width, options.height, methods); !s) return make_error(s.error());
+  if (Status s = check_image_size(options.width, options.height, methods); !s) return s.failure();
   int trail_joint = -1;
   if (!options.trail_joint.empty()) {
     trail_joint = clip.skeleton.find(options.trail_joint);
@@ -433,13 +433,13 @@ Result<ComparisonResult> render_comparison(const Clip& clip, const fs::path& out
   }
   if (!options.video.empty()) {
     auto format = video_format(options.video);
-    if (!format) return make_error(format.error());
-    if (Status s = check_video_size(*format, options.width, options.height); !s) return make_error(s.error());
+    if (!format) return format.failure();
+    if (Status s = check_video_size(*format, options.width, options.height); !s) return s.failure();
     if (options.video_fps < 0.0 || options.video_fps > 1000.0 || !std::isfinite(options.video_fps))
       return make_error("--video-fps must be within (0, 1000]");
   }
   auto selected = comparison_frames(clip, options);
-  if (!selected) return make_error(selected.error());
+  if (!selected) return selected.failure();
   const std::vector<std::size_t>& frames = *selected;
 
   // Sheet cells: the frame images' panels, shrunk to fit kMaxImageSide.
@@ -464,7 +464,7 @@ Result<ComparisonResult> render_comparison(const Clip& clip, const fs::path& out
   }
 
   auto built = Rebuild::build(clip, options.methods, options.keep_every);
-  if (!built) return make_error(built.error());
+  if (!built) return built.failure();
   const Rebuild& rebuild = *built;
   const std::size_t frame_count = rebuild.frames();
 
@@ -538,9 +538,9 @@ Result<ComparisonResult> render_comparison(const Clip& clip, const fs::path& out
   }
 
   auto context = create_context(backend);
-  if (!context) return make_error(context.error());
+  if (!context) return context.failure();
   auto renderer = Renderer::create(std::move(context).value(), std::move(scene));
-  if (!renderer) return make_error(renderer.error());
+  if (!renderer) return renderer.failure();
 
   ComparisonResult result;
   result.gl = (*renderer)->gl_description();
@@ -549,7 +549,7 @@ Result<ComparisonResult> render_comparison(const Clip& clip, const fs::path& out
   if (!options.video.empty()) {
     result.video_fps = options.video_fps > 0.0 ? options.video_fps : default_video_fps(clip, rebuild, frames);
     auto opened = VideoWriter::open(options.video, options.width, options.height, result.video_fps);
-    if (!opened) return make_error(opened.error());
+    if (!opened) return opened.failure();
     video = std::move(opened).value();
   }
   const std::size_t total = frames.size() + (options.sheet ? 1 : 0);
@@ -626,9 +626,9 @@ Result<ComparisonResult> render_comparison(const Clip& clip, const fs::path& out
       }
     }
     auto image = (*renderer)->render(panels, options.width, options.height, columns);
-    if (!image) return make_error(image.error());
+    if (!image) return image.failure();
     if (video) {
-      if (Status s = video->write(*image); !s) return make_error(s.error());
+      if (Status s = video->write(*image); !s) return s.failure();
       if (!options.pngs && options.progress) options.progress(i + 1, frames.size());
     }
     if (!options.pngs) continue;
@@ -649,13 +649,13 @@ Result<ComparisonResult> render_comparison(const Clip& clip, const fs::path& out
   }
   if (options.sheet && writing) {
     auto image = (*renderer)->render(sheet, cell_w * sheet_columns, cell_h * methods, sheet_columns);
-    if (!image) return make_error(image.error());
+    if (!image) return image.failure();
     result.files.push_back(out_dir / "sheet.png");
     (void)writers.push(result.files.back(), std::move(image).value());
   }
-  if (Status s = writers.finish(); !s) return make_error(s.error());
+  if (Status s = writers.finish(); !s) return s.failure();
   if (video) {
-    if (Status s = video->finish(); !s) return make_error(s.error());
+    if (Status s = video->finish(); !s) return s.failure();
     result.video_frames = video->frames();
     result.files.push_back(options.video);
   }

@@ -78,7 +78,7 @@ Result<std::unique_ptr<GLContext>> create_egl_context() {
   EGLContext context = eglCreateContext(display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
   if (context == EGL_NO_CONTEXT) return make_error(egl_error("could not create an OpenGL 3.3 core-profile context"));
   auto result = std::make_unique<EGLGLContext>(display, context);
-  if (Status s = result->make_current(); !s) return make_error(s.error());
+  if (Status s = result->make_current(); !s) return s.failure();
   return std::unique_ptr<GLContext>(std::move(result));
 }
 

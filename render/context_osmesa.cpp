@@ -100,7 +100,7 @@ Result<std::unique_ptr<GLContext>> create_osmesa_context() {
   OSMesaContext context = lib.create(attributes, nullptr);
   if (!context) return make_error("osmesa: could not create an OpenGL 3.3 core-profile context");
   auto result = std::make_unique<OSMesaGLContext>(context);
-  if (Status s = result->make_current(); !s) return make_error(s.error());
+  if (Status s = result->make_current(); !s) return s.failure();
   return std::unique_ptr<GLContext>(std::move(result));
 }
 

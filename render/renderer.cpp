@@ -303,13 +303,13 @@ struct Renderer::Impl {
     samples = std::clamp(max_samples, 1, kSamples);
 
     auto mesh = compile(kMeshVertex, kMeshFragment, "mesh");
-    if (!mesh) return make_error(mesh.error());
+    if (!mesh) return mesh.failure();
     mesh_program = *mesh;
     auto line = compile(kLineVertex, kLineFragment, "line");
-    if (!line) return make_error(line.error());
+    if (!line) return line.failure();
     line_program = *line;
     auto text = compile(kTextVertex, kTextFragment, "text");
-    if (!text) return make_error(text.error());
+    if (!text) return text.failure();
     text_program = *text;
     mesh_view_projection = gl.GetUniformLocation(mesh_program, "u_view_projection");
     mesh_light = gl.GetUniformLocation(mesh_program, "u_light");
@@ -328,7 +328,7 @@ struct Renderer::Impl {
     make_dynamic(text_vao, text_vbo, 2, 2);
 
     auto f = FontFile::load(ROTINTERP_FONT_PATH);
-    if (!f) return make_error(f.error());
+    if (!f) return f.failure();
     font = *f;
 
     grid = grid_lines(scene.bounds);
@@ -700,14 +700,14 @@ Renderer::~Renderer() = default;
 
 Result<std::unique_ptr<Renderer>> Renderer::create(std::unique_ptr<GLContext> context, Scene scene) {
   if (!context) return make_error("render: no GL context");
-  if (Status s = scene.skeleton.validate(); !s) return make_error("render: " + s.error());
+  if (Status s = scene.skeleton.validate(); !s) return s.failure("render: ");
   auto impl = std::make_unique<Impl>();
   impl->context = std::move(context);
   if (!(scene.bone_radius > 0.0) || !std::isfinite(scene.bone_radius))
     scene.bone_radius = scene_bone_radius(scene.skeleton, scene.bounds);
   impl->scene = std::move(scene);
-  if (Status s = impl->context->make_current(); !s) return make_error(s.error());
-  if (Status s = impl->setup(); !s) return make_error(s.error());
+  if (Status s = impl->context->make_current(); !s) return s.failure();
+  if (Status s = impl->setup(); !s) return s.failure();
   return std::unique_ptr<Renderer>(new Renderer(std::move(impl)));
 }
 
@@ -738,13 +738,13 @@ Status check_image_size(int width, int height, int panels, int columns) {
 
 Result<Image> Renderer::render(const std::vector<Panel>& panels, int width, int height, int columns) {
   const int count = static_cast<int>(panels.size());
-  if (Status s = check_image_size(width, height, count, columns); !s) return make_error("render: " + s.error());
+  if (Status s = check_image_size(width, height, count, columns); !s) return s.failure("render: ");
   if (columns <= 0) columns = automatic_columns(count, width, height);
   const std::vector<Rect> rects = grid_layout(count, columns, width, height);
   const Rect& first = rects.front();
   Impl& m = *impl_;
-  if (Status s = m.context->make_current(); !s) return make_error(s.error());
-  if (Status s = m.ensure_framebuffers(first.width, first.height); !s) return make_error(s.error());
+  if (Status s = m.context->make_current(); !s) return s.failure();
+  if (Status s = m.ensure_framebuffers(first.width, first.height); !s) return s.failure();
   Image image(width, height);
   for (std::size_t i = 0; i < image.rgb.size(); i += 3) {
     image.rgb[i] = static_cast<std::uint8_t>(std::lround(kBackground[0] * 255));
@@ -752,7 +752,7 @@ Result<Image> Renderer::render(const std::vector<Panel>& panels, int width, int 
     image.rgb[i + 2] = static_cast<std::uint8_t>(std::lround(kBackground[2] * 255));
   }
   for (std::size_t i = 0; i < panels.size(); ++i) {
-    if (Status s = m.draw_panel(panels[i], first.width, first.height); !s) return make_error(s.error());
+    if (Status s = m.draw_panel(panels[i], first.width, first.height); !s) return s.failure();
     m.read_panel(first.width, first.height, image, rects[i]);
   }
   if (GLenum e = m.gl.GetError(); e != GL_NO_ERROR) return m.gl_error("reading pixels", e);

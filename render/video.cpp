@@ -101,8 +101,8 @@ std::size_t VideoWriter::frames() const { return impl_->frames; }
 
 Result<std::unique_ptr<VideoWriter>> VideoWriter::open(const fs::path& path, int width, int height, double fps) {
   auto format = video_format(path);
-  if (!format) return make_error(format.error());
-  if (Status s = check_video_size(*format, width, height); !s) return make_error(s.error());
+  if (!format) return format.failure();
+  if (Status s = check_video_size(*format, width, height); !s) return s.failure();
   if (width < 1 || height < 1) return make_error(path.string() + ": cannot encode an empty image");
   if (!(fps > 0.0) || fps > 1000.0) return make_error(fmt::format("--video-fps {} is outside (0, 1000]", fps));
   auto impl = std::make_unique<Impl>();
@@ -110,7 +110,7 @@ Result<std::unique_ptr<VideoWriter>> VideoWriter::open(const fs::path& path, int
   impl->width = width;
   impl->height = height;
   impl->out = std::make_unique<AtomicOutput>(path, TempKind::named);  // ffmpeg opens a path
-  if (Status s = impl->out->status(); !s) return make_error(s.error());
+  if (Status s = impl->out->status(); !s) return s.failure();
 
   const std::string size = fmt::format("{}x{}", width, height);
   const std::string rate = fmt::format("{:.9g}", fps);

@@ -33,7 +33,7 @@ class ClipUnit:
 class Clip:
     def __init__(self, names: Sequence[str], parents: ArrayLike, offsets: ArrayLike, times: ArrayLike,
                  rotations: QuatLike, translations: Mapping[str, ArrayLike] | None = None,
-                 frame_time: float | None = None, unit_scale: float = 1.0, scalar_first: bool = False,
+                 frame_time: float | None = None, metres_per_unit: float = 1.0, scalar_first: bool = False,
                  name: str = "clip") -> None: ...
     @property
     def name(self) -> str: ...
@@ -57,8 +57,6 @@ class Clip:
     def rate(self) -> float | None: ...           # Hz, exact rate as a float
     @property
     def rate_text(self) -> str | None: ...        # "30", "30000/1001"
-    @property
-    def unit_scale(self) -> float: ...            # metres per clip unit
     @property
     def unit(self) -> ClipUnit: ...
     @property

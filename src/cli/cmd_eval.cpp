@@ -61,7 +61,7 @@ Result<PerFrameRequest> parse_per_frame(const std::string& text) {
   if (!m) return make_error("--per-frame: " + unknown_method_message(q.method));
   q.method = m->name;
   auto n = parse_whole_option("--per-frame", text.substr(b + 1), 1, kMaxKeepEvery);
-  if (!n) return make_error(n.error());
+  if (!n) return n.failure();
   q.keep_every = static_cast<int>(*n);
   return q;
 }

@@ -86,16 +86,16 @@ Result<ResampleOptions> resample_options(const ResampleArgs& a) {
   if (!a.fps.empty() && !a.keep_every.empty()) return make_error("give either --fps or --keep-every, not both");
   if (!a.fps.empty()) {
     auto r = parse_rate_option("--fps", a.fps);
-    if (!r) return make_error(r.error());
+    if (!r) return r.failure();
     opt.fps = *r;
   }
   if (!a.keep_every.empty()) {
     auto n = parse_whole_option("--keep-every", a.keep_every, 1, kMaxKeepEvery);
-    if (!n) return make_error(n.error());
+    if (!n) return n.failure();
     opt.keep_every = static_cast<std::size_t>(*n);
   }
   auto method = parse_methods(a.method, false);
-  if (!method) return make_error(method.error());
+  if (!method) return method.failure();
   opt.method = method->front();
   for (const std::string& item : a.method_for) {
     const std::size_t eq = item.find('=');
@@ -107,11 +107,11 @@ Result<ResampleOptions> resample_options(const ResampleArgs& a) {
     opt.method_for.emplace_back(joint, m->name);
   }
   auto translation = parse_translation_interp(a.translation);
-  if (!translation) return make_error("--translation: " + translation.error());
+  if (!translation) return translation.failure("--translation: ");
   opt.translation = *translation;
   if (!a.range.empty()) {
     auto r = parse_time_range(a.range);
-    if (!r) return make_error(r.error());
+    if (!r) return r.failure();
     opt.range = *r;
   }
   if (!valid_bvh_order(a.bvh_order)) return make_error("--bvh-order '" + a.bvh_order + "' must be a permutation of XYZ, e.g. ZXY");
@@ -139,13 +139,13 @@ Status resample_file(FileRun& run, const ResampleArgs& a, const ResampleOptions&
   Result<Clip> out = make_error("");
   if (a.loop_request) {
     auto cycle = resample_cycle(*clip, opt, a.loop_request->form);
-    if (!cycle) return make_error(run.input + ": " + cycle.error());
+    if (!cycle) return cycle.failure(run.input + ": ");
     run.cycle = cycle->summary();
     out = std::move(cycle->clip);
   } else {
     out = resample_clip(*clip, opt);
   }
-  if (!out) return make_error(run.input + ": " + out.error());
+  if (!out) return out.failure(run.input + ": ");
   if (a.out_unit_m) convert_unit(*out, *a.out_unit_m, "--out-unit " + a.out_unit);
   run.output_metres_per_unit = out->unit.metres_per_unit;
   run.output_frames = out->frame_count();

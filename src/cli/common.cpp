@@ -58,7 +58,7 @@ Result<Rate> parse_rate_option(const std::string& option, const std::string& tex
   auto rate = parse_rate(text);
   if (rate) return rate;
   double v = 0;
-  if (!whole_text_number(text, v)) return make_error(option + ": " + rate.error());
+  if (!whole_text_number(text, v)) return rate.failure(option + ": ");
   const std::string quoted = "'" + text + "'";
   if (v <= 0) return make_error(option + " " + quoted + " must be greater than 0");
   // In range but in a form parse_rate does not read (1e3): the same value as the
@@ -91,7 +91,7 @@ void add_unit_option(CLI::App& sub, std::string& unit) {
 Result<std::optional<double>> parse_unit_option(const std::string& text) {
   if (text.empty()) return std::optional<double>();
   auto v = parse_unit(text);
-  if (!v) return make_error("--unit: " + v.error());
+  if (!v) return v.failure("--unit: ");
   return std::optional<double>(*v);
 }
 

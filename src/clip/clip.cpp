@@ -43,10 +43,10 @@ Status Clip::validate() const {
                                                   " translation entries for " + std::to_string(n) + " joints");
   for (std::size_t i = 0; i < n; ++i) {
     if (Status s = rotations[i].validate(); !s)
-      return make_error("joint '" + skeleton.joints[i].name + "': " + s.error());
+      return s.failure("joint '" + skeleton.joints[i].name + "': ");
     if (translations[i])
       if (Status s = translations[i]->validate(); !s)
-        return make_error("joint '" + skeleton.joints[i].name + "': " + s.error());
+        return s.failure("joint '" + skeleton.joints[i].name + "': ");
   }
   if (!std::isfinite(frame_time) || frame_time < 0.0) return make_error("clip frame time is not a positive number");
   return Ok{};

@@ -106,12 +106,7 @@ void accumulate_pose_error(const WorldPose& ref, const WorldPose& test, double s
   for (std::size_t j = 0; j < n; ++j) {
     const Vec3 dp = ref.position[j] - test.position[j];
     acc.joint_position[j].add(dp.norm());
-    // Vertices p + R·(d·eᵢ): their displacement is dp + d·(R_ref − R_test)·eᵢ, the
-    // columns of the difference of the two rotation matrices.
-    const Mat3 dr = shell_distance * (ref.rotation[j].toRotationMatrix() - test.rotation[j].toRotationMatrix());
-    double worst2 = 0.0;
-    for (int c = 0; c < 3; ++c) worst2 = std::max(worst2, (dp + dr.col(c)).squaredNorm());
-    acc.joint_shell[j].add(std::sqrt(worst2));
+    acc.joint_shell[j].add(shell_error(ref.rotation[j], ref.position[j], test.rotation[j], test.position[j], shell_distance));
   }
   const std::size_t m =
       std::min({ref.end_site_position.size(), test.end_site_position.size(), acc.end_site_position.size()});

@@ -118,7 +118,7 @@ Status resample_joint(const Clip& in, std::size_t j, const std::string& method, 
       }
       if (!source_curve) {
         auto made = make_interpolator(method, source);
-        if (!made) return make_error(made.error());
+        if (!made) return made.failure();
         source_curve = std::move(made.value());
       }
       keys_track.keys.push_back(source_curve->evaluate(t));
@@ -136,7 +136,7 @@ Status resample_joint(const Clip& in, std::size_t j, const std::string& method, 
     rot.keys = build_from == &source ? std::move(source.keys) : build_from->keys;
   } else {
     auto made = make_interpolator(method, *build_from);
-    if (!made) return make_error(made.error());
+    if (!made) return made.failure();
     made.value()->evaluate(plan.eval_times.data(), plan.eval_times.size(), rot.keys.data());
   }
   rot.make_sign_continuous();
@@ -205,7 +205,7 @@ Result<TimeRange> parse_time_range(std::string_view text) {
 
 Result<Clip> resample_clip(const Clip& in, const ResampleOptions& options) {
   ResampleOptions opt = options;
-  if (Status s = in.validate(); !s) return make_error(s.error());
+  if (Status s = in.validate(); !s) return s.failure();
   if (opt.fps && opt.keep_every) return make_error("give either a frame rate or keep-every, not both");
   if (opt.keep_every && *opt.keep_every < 1) return make_error("keep-every must be at least 1");
   if (opt.fps && (opt.fps->num <= 0 || opt.fps->den <= 0)) return make_error("frame rate must be greater than 0");
@@ -326,7 +326,7 @@ Result<Clip> resample_clip(const Clip& in, const ResampleOptions& options) {
     for (auto& f : joints) f.get();  // rethrows the first exception, in joint order
   }
   for (std::size_t j = 0; j < n; ++j)
-    if (!status[j]) return make_error("joint '" + in.skeleton.joints[j].name + "': " + status[j].error());
+    if (!status[j]) return status[j].failure("joint '" + in.skeleton.joints[j].name + "': ");
   return out;
 }
 

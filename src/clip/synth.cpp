@@ -267,11 +267,11 @@ Result<SynthOptions> parse_synth_spec(std::string_view spec) {
     const char* last = value.data() + value.size();
     if (key == "kind") {
       auto k = parse_synth_kind(value);
-      if (!k) return make_error(k.error());
+      if (!k) return k.failure();
       o.kind = *k;
     } else if (key == "fps") {
       auto r = parse_rate(value);
-      if (!r) return make_error(r.error());
+      if (!r) return r.failure();
       o.fps = *r;
     } else if (key == "seconds") {
       if (std::from_chars(first, last, o.seconds).ptr != last) return make_error("synth spec: bad seconds '" + value + "'");
@@ -374,15 +374,15 @@ Result<SynthMotion> read_synth_spec(const std::filesystem::path& clip_file) {
   std::string line;
   if (!in || !std::getline(in, line)) return make_error(p.string() + ": no synth spec (not made by rotinterp synth?)");
   auto o = parse_synth_spec(line);
-  if (!o) return make_error(p.string() + ": " + o.error());
+  if (!o) return o.failure(p.string() + ": ");
   auto m = make_synth_motion(*o);
-  if (!m) return make_error(p.string() + ": " + m.error());
+  if (!m) return m.failure(p.string() + ": ");
   return m;
 }
 
 Result<Clip> make_synth_clip(const SynthOptions& o) {
   auto motion = make_synth_motion(o);
-  if (!motion) return make_error(motion.error());
+  if (!motion) return motion.failure();
   return motion->sample(o.seconds, o.fps, std::string("synth_") + synth_kind_name(o.kind));
 }
 

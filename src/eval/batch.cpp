@@ -153,7 +153,7 @@ Status check_options(const EvalOptions& opt) {
 // The clip files of this run: the inputs found, then this shard's part of them.
 Result<std::vector<std::string>> files_of_shard(const EvalOptions& opt) {
   auto all = discover_inputs(opt.inputs);
-  if (!all) return make_error(all.error());
+  if (!all) return all.failure();
   if (all->empty()) {
     std::string where;
     for (const fs::path& p : opt.inputs) where += (where.empty() ? "" : ", ") + p.string();
@@ -185,7 +185,7 @@ Result<std::vector<std::pair<std::string, Clip>>> read_takes(const std::string& 
       if (a == info->selected) continue;
       ro.animation = std::to_string(a);
       auto clip = read_clip(file, ro);
-      if (!clip) return make_error(id_of(a) + ": " + clip.error());
+      if (!clip) return clip.failure(id_of(a) + ": ");
       takes.emplace_back(id_of(a), std::move(*clip));
     }
   std::sort(takes.begin(), takes.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
@@ -333,13 +333,13 @@ void keep_freed_memory_for_reuse() {
 Result<EvalReport> run_eval(const EvalOptions& opt) {
   const auto t0 = std::chrono::steady_clock::now();
   const std::string started = utc_now();
-  if (Status s = check_options(opt); !s) return make_error(s.error());
+  if (Status s = check_options(opt); !s) return s.failure();
   auto shard = files_of_shard(opt);
-  if (!shard) return make_error(shard.error());
+  if (!shard) return shard.failure();
   const std::vector<std::string>& files = *shard;
-  if (Status s = make_dir(opt.output_dir); !s) return make_error(s.error());
+  if (Status s = make_dir(opt.output_dir); !s) return s.failure();
   auto lock = DirectoryLock::acquire(opt.output_dir);
-  if (!lock) return make_error(lock.error());
+  if (!lock) return lock.failure();
 
   EvalReport report;
   report.files = files.size();
@@ -385,7 +385,7 @@ Result<EvalReport> run_eval(const EvalOptions& opt) {
   record.skipped = report.skipped;
   record.too_short = report.too_short;
   if (Status s = write_outputs(opt.output_dir, record, report.summary, opt.plots, csv, per_frame); !s)
-    return make_error(s.error());
+    return s.failure();
   return report;
 }
 
@@ -402,9 +402,9 @@ class ShardReader {
     std::string header;
     if (!std::getline(r->in_, header)) return make_error(file.string() + ": empty file");
     auto parser = ErrorRowParser::from_header(header);
-    if (!parser) return make_error(file.string() + ": " + parser.error());
+    if (!parser) return parser.failure(file.string() + ": ");
     r->parser_.emplace(std::move(*parser));
-    if (Status s = r->read_row(); !s) return make_error(s.error());
+    if (Status s = r->read_row(); !s) return s.failure();
     return r;
   }
   bool at_end() const { return !lookahead_; }
@@ -415,7 +415,7 @@ class ShardReader {
     const std::string c = lookahead_->clip;
     while (lookahead_ && lookahead_->clip == c) {
       rows.push_back(std::move(*lookahead_));
-      if (Status s = read_row(); !s) return make_error(s.error());
+      if (Status s = read_row(); !s) return s.failure();
     }
     if (lookahead_ && lookahead_->clip < c)
       return make_error(file_.string() + ":" + std::to_string(line_) + ": clips are not in sorted order");
@@ -430,7 +430,7 @@ class ShardReader {
       ++line_;
       if (line.empty() || line == "\r") continue;
       auto row = parser_->parse(line);
-      if (!row) return make_error(file_.string() + ":" + std::to_string(line_ + 1) + ": " + row.error());
+      if (!row) return row.failure(file_.string() + ":" + std::to_string(line_ + 1) + ": ");
       lookahead_ = std::move(*row);
       return Ok{};
     }
@@ -454,7 +454,7 @@ Result<EvalReport> merge_eval(const std::vector<fs::path>& dirs, const fs::path&
   for (const fs::path& d : dirs) {
     const fs::path f = d / kSummaryJsonName;
     auto shard = read_summary_json(f);
-    if (!shard) return make_error(shard.error());
+    if (!shard) return shard.failure();
     if (&d == &dirs.front())
       merged.options = shard->options;
     else if (!(merged.options == shard->options))
@@ -477,12 +477,12 @@ Result<EvalReport> merge_eval(const std::vector<fs::path>& dirs, const fs::path&
   std::vector<std::unique_ptr<ShardReader>> readers;
   for (const fs::path& d : dirs) {
     auto r = ShardReader::open(d / kErrorsCsvName);
-    if (!r) return make_error(r.error());
+    if (!r) return r.failure();
     readers.push_back(std::move(*r));
   }
-  if (Status s = make_dir(out_dir); !s) return make_error(s.error());
+  if (Status s = make_dir(out_dir); !s) return s.failure();
   auto lock = DirectoryLock::acquire(out_dir);
-  if (!lock) return make_error(lock.error());
+  if (!lock) return lock.failure();
   CsvWriter csv(out_dir / kErrorsCsvName);
   if (!csv.good()) return make_error(csv.failure());
   SummaryBuilder builder;
@@ -496,7 +496,7 @@ Result<EvalReport> merge_eval(const std::vector<fs::path>& dirs, const fs::path&
       return make_error("clip '" + last_clip + "' appears in more than one shard");
     last_clip = next->clip();
     auto rows = next->next_clip();
-    if (!rows) return make_error(rows.error());
+    if (!rows) return rows.failure();
     csv.add_clip(*rows, builder);
     ++report.clips_evaluated;
   }
@@ -510,7 +510,7 @@ Result<EvalReport> merge_eval(const std::vector<fs::path>& dirs, const fs::path&
   merged.failed = report.failures;
   merged.skipped = report.skipped;
   merged.too_short = report.too_short;
-  if (Status s = write_outputs(out_dir, merged, report.summary, plots, csv); !s) return make_error(s.error());
+  if (Status s = write_outputs(out_dir, merged, report.summary, plots, csv); !s) return s.failure();
   return report;
 }
 

@@ -142,7 +142,7 @@ Result<std::vector<std::string>> split_csv_line(std::string_view line) {
 
 Result<ErrorRowParser> ErrorRowParser::from_header(std::string_view header) {
   auto fields = split_csv_line(header);
-  if (!fields) return make_error("header: " + fields.error());
+  if (!fields) return fields.failure("header: ");
   ErrorRowParser p;
   p.column_.assign(kColumnCount, -1);
   for (std::size_t i = 0; i < fields->size(); ++i)
@@ -155,7 +155,7 @@ Result<ErrorRowParser> ErrorRowParser::from_header(std::string_view header) {
 
 Result<ErrorRow> ErrorRowParser::parse(std::string_view line) const {
   auto fields = split_csv_line(line);
-  if (!fields) return make_error(fields.error());
+  if (!fields) return fields.failure();
   auto field = [&](int c) -> const std::string& {
     static const std::string empty;
     const int i = column_[c];
@@ -174,12 +174,12 @@ Result<ErrorRow> ErrorRowParser::parse(std::string_view line) const {
   for (const Measured& m : kMeasured) {
     if (is_empty_for(r, m.col)) continue;
     auto v = to_double(field(m.col), kColumnNames[m.col]);
-    if (!v) return make_error(v.error());
+    if (!v) return v.failure();
     r.*m.field = *v;
   }
   for (int c : {kKeepEvery, kFrames, kSamples}) {
     auto v = to_double(field(c), kColumnNames[c]);
-    if (!v) return make_error(v.error());
+    if (!v) return v.failure();
     const double limit = c == kKeepEvery ? 1e9 : 1e15;  // keep_every is an int
     if (*v < 0 || *v != std::floor(*v) || *v > limit)
       return make_error(std::string("column ") + kColumnNames[c] + " is not a count");

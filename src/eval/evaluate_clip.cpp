@@ -201,7 +201,7 @@ std::pair<double, double> select_two(const EachBlock& each_block, std::uint64_t 
 
 Result<ClipReference> prepare_reference(const Clip& clip, const std::string& clip_id,
                                         const ClipEvalOptions& options) {
-  if (Status s = clip.validate(); !s) return make_error(clip_id + ": " + s.error());
+  if (Status s = clip.validate(); !s) return s.failure(clip_id + ": ");
   if (options.subframe < 0 || options.subframe > 1000)
     return make_error(clip_id + ": subframe must be between 0 and 1000");
   ClipReference R;
@@ -271,7 +271,7 @@ Result<ClipReference> prepare_reference(const Clip& clip, const std::string& cli
     R.feet = find_feet(skel);
   } else {
     auto feet = feet_by_name(skel, options.feet.feet);
-    if (!feet) return make_error(clip_id + ": " + feet.error());
+    if (!feet) return feet.failure(clip_id + ": ");
     R.feet = std::move(*feet);
   }
   R.metres_per_unit = clip.unit.metres_per_unit;
@@ -348,7 +348,7 @@ Result<std::vector<ErrorRow>> evaluate_method(const ClipReference& R, const std:
       tracks[j] = decimated_track(R.frames, R.original[j], kf);
       auto curve = make_interpolator(method, tracks[j]);
       if (!curve)
-        return make_error(R.clip_id + ": joint '" + skel.joints[j].name + "', method " + method + ": " + curve.error());
+        return curve.failure(R.clip_id + ": joint '" + skel.joints[j].name + "', method " + method + ": ");
       curves[j] = std::move(*curve);
     }
     std::vector<std::vector<Quat>> at_keys(nj, std::vector<Quat>(kf.size()));
@@ -514,7 +514,7 @@ Result<PerFrameErrors> per_frame_errors(const ClipReference& R, const std::strin
   for (std::size_t j = 0; j < nj; ++j) {
     auto curve = make_interpolator(method, decimated_track(R.frames, R.original[j], kf));
     if (!curve)
-      return make_error(R.clip_id + ": joint '" + R.skeleton.joints[j].name + "', method " + method + ": " + curve.error());
+      return curve.failure(R.clip_id + ": joint '" + R.skeleton.joints[j].name + "', method " + method + ": ");
     const std::size_t bs = block_samples(R);
     for (std::size_t m0 = 0; m0 < ns; m0 += bs) {
       const std::size_t n = std::min(bs, ns - m0);
@@ -531,11 +531,11 @@ Result<PerFrameErrors> per_frame_errors(const ClipReference& R, const std::strin
 Result<std::vector<ErrorRow>> evaluate_clip(const Clip& clip, const std::string& clip_id,
                                             const ClipEvalOptions& options) {
   auto reference = prepare_reference(clip, clip_id, options);
-  if (!reference) return make_error(reference.error());
+  if (!reference) return reference.failure();
   std::vector<ErrorRow> rows;
   for (const std::string& method : options.methods) {
     auto part = evaluate_method(*reference, method, options);
-    if (!part) return make_error(part.error());
+    if (!part) return part.failure();
     rows.insert(rows.end(), std::make_move_iterator(part->begin()), std::make_move_iterator(part->end()));
   }
   return rows;

@@ -8,7 +8,7 @@ namespace rotinterp {
 
 Result<TruthFn> synth_truth(const std::string& clip_file, const Clip& clip) {
   auto motion = read_synth_spec(clip_file);
-  if (!motion) return make_error("--truth: " + motion.error());
+  if (!motion) return motion.failure("--truth: ");
   const Skeleton& s = motion->skeleton();
   if (s.joints.size() != clip.skeleton.joints.size())
     return make_error(clip_file + ": the clip has " + std::to_string(clip.skeleton.joints.size()) +

@@ -333,7 +333,7 @@ bool needs_refinement(const detail::Keys& k, double max_step) {
 
 Result<std::unique_ptr<Interpolator>> make_bf(const RotationTrack& track, const BfSplineOptions& options) {
   auto keys = detail::prepare(track);
-  if (!keys) return make_error(keys.error());
+  if (!keys) return keys.failure();
   RotationTrack original;
   original.times = keys->t;
   original.keys = keys->q;
@@ -352,11 +352,11 @@ Result<std::unique_ptr<Interpolator>> make_bf(const RotationTrack& track, const 
     if (auto p = attempt(nullptr, 0.0)) return std::unique_ptr<Interpolator>(std::move(p));
   } else if (!needs_grading(*keys)) {
     auto c2 = make_c2(original);
-    if (!c2) return make_error(c2.error());
+    if (!c2) return c2.failure();
     if (auto p = attempt(c2->get(), options.max_key_step)) return std::unique_ptr<Interpolator>(std::move(p));
   }
   auto geodesic = make_slerp(original);
-  if (!geodesic) return make_error(geodesic.error());
+  if (!geodesic) return geodesic.failure();
   double max_step = options.max_key_step;
   for (int halving = 0; halving < 4; ++halving, max_step *= 0.5)
     if (auto p = attempt(geodesic->get(), max_step)) return std::unique_ptr<Interpolator>(std::move(p));

@@ -69,7 +69,7 @@ std::vector<Vec3> c2_rates(const detail::Keys& k, const std::vector<Vec3>& rho, 
 
 Result<std::unique_ptr<Interpolator>> make_c2(const RotationTrack& track, const C2Options& options) {
   auto keys = detail::prepare(track);
-  if (!keys) return make_error(keys.error());
+  if (!keys) return keys.failure();
   std::vector<Vec3> rho = detail::segment_logs(*keys);
   const std::vector<Vec3> w = rho.empty() ? std::vector<Vec3>{} : c2_rates(*keys, rho, options);
   return std::unique_ptr<Interpolator>(new detail::BodyCubic(std::move(*keys), std::move(rho), w));

@@ -32,7 +32,7 @@ std::vector<Vec3> clamped_rates(const detail::Keys& k, const std::vector<Vec3>& 
 
 Result<std::unique_ptr<Interpolator>> make_clamped(const RotationTrack& track) {
   auto keys = detail::prepare(track);
-  if (!keys) return make_error(keys.error());
+  if (!keys) return keys.failure();
   std::vector<Vec3> rho = detail::segment_logs(*keys);
   const std::vector<Vec3> w = rho.empty() ? std::vector<Vec3>{} : clamped_rates(*keys, rho);
   return std::unique_ptr<Interpolator>(new detail::BodyCubic(std::move(*keys), std::move(rho), w));

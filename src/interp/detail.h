@@ -51,7 +51,7 @@ inline Result<Keys> prepare(const RotationTrack& track) {
   // in either hemisphere and take the short way (rule 4 is established here).
   for (std::size_t k = 1; k < aligned.keys.size() && k < aligned.times.size(); ++k)
     if (aligned.keys[k].coeffs().allFinite()) aligned.keys[k] = align_pair(aligned.keys[k - 1], aligned.keys[k]);
-  if (Status s = aligned.validate(); !s) return make_error(s.error());
+  if (Status s = aligned.validate(); !s) return s.failure();
   Keys out;
   out.t = std::move(aligned.times);
   out.q.reserve(aligned.keys.size());

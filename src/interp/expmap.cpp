@@ -98,7 +98,7 @@ class ExpmapInterpolator final : public detail::SegmentInterpolator<ExpmapInterp
 
 Result<std::unique_ptr<Interpolator>> make_expmap(const RotationTrack& track, const ExpmapOptions& options) {
   auto keys = detail::prepare(track);
-  if (!keys) return make_error(keys.error());
+  if (!keys) return keys.failure();
   return std::unique_ptr<Interpolator>(new ExpmapInterpolator(std::move(*keys), options));
 }
 

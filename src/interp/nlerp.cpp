@@ -40,7 +40,7 @@ class NlerpInterpolator final : public detail::SegmentInterpolator<NlerpInterpol
 
 Result<std::unique_ptr<Interpolator>> make_nlerp(const RotationTrack& track) {
   auto keys = detail::prepare(track);
-  if (!keys) return make_error(keys.error());
+  if (!keys) return keys.failure();
   return std::unique_ptr<Interpolator>(new NlerpInterpolator(std::move(*keys)));
 }
 

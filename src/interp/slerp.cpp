@@ -33,7 +33,7 @@ class SlerpInterpolator final : public detail::SegmentInterpolator<SlerpInterpol
 
 Result<std::unique_ptr<Interpolator>> make_slerp(const RotationTrack& track) {
   auto keys = detail::prepare(track);
-  if (!keys) return make_error(keys.error());
+  if (!keys) return keys.failure();
   return std::unique_ptr<Interpolator>(new SlerpInterpolator(std::move(*keys)));
 }
 

@@ -86,7 +86,7 @@ class SquadInterpolator final : public detail::SegmentInterpolator<SquadInterpol
 
 Result<std::unique_ptr<Interpolator>> make_squad(const RotationTrack& track) {
   auto keys = detail::prepare(track);
-  if (!keys) return make_error(keys.error());
+  if (!keys) return keys.failure();
   return std::unique_ptr<Interpolator>(new SquadInterpolator(std::move(*keys)));
 }
 

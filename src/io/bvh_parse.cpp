@@ -351,8 +351,8 @@ Result<BvhFile> parse_bvh(std::string_view text, const std::string& label) {
     return make_error(label + ": the file is UTF-16 text; BVH is read as UTF-8 or ASCII");
   BvhFile file;
   HeaderParser header(text, label);
-  if (Status s = header.parse_hierarchy(file); !s) return make_error(s.error());
-  if (Status s = header.parse_motion_header(file); !s) return make_error(s.error());
+  if (Status s = header.parse_hierarchy(file); !s) return s.failure();
+  if (Status s = header.parse_motion_header(file); !s) return s.failure();
 
   // Data rows: one frame per non-blank line, exactly `columns` values each.
   std::size_t pos = header.position();

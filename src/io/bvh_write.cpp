@@ -144,7 +144,7 @@ std::string bvh_name(std::string name) {
 }  // namespace
 
 Status write_bvh(const Clip& clip, std::ostream& out, const WriteOptions& options, const std::string& label) {
-  if (Status s = clip.validate(); !s) return make_error(label + ": cannot write an invalid clip: " + s.error());
+  if (Status s = clip.validate(); !s) return s.failure(label + ": cannot write an invalid clip: ");
   const Skeleton& sk = clip.skeleton;
   const std::size_t n = sk.joints.size();
   const double ft = clip.frame_time;

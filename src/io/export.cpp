@@ -118,7 +118,7 @@ std::optional<std::string> assimp_export_format(const std::string& ext) {
 
 Status export_with_assimp(const Clip& clip, const std::filesystem::path& path, const std::string& format) {
   const std::string label = path.string();
-  if (Status s = clip.validate(); !s) return make_error(label + ": cannot write an invalid clip: " + s.error());
+  if (Status s = clip.validate(); !s) return s.failure(label + ": cannot write an invalid clip: ");
   const std::unique_ptr<aiScene> scene = build_scene(clip);
   AtomicOutput out(path);  // named: assimp's exporter opens a path
   if (Status s = out.status(); !s) return s;

@@ -157,7 +157,7 @@ int fbx_time_mode(std::int64_t num, std::int64_t den) {
 }
 
 Result<std::string> encode_fbx(const Clip& clip, FbxEncoding encoding) {
-  if (Status s = clip.validate(); !s) return make_error("cannot write an invalid clip: " + s.error());
+  if (Status s = clip.validate(); !s) return s.failure("cannot write an invalid clip: ");
   const Skeleton& sk = clip.skeleton;
   const std::size_t n = sk.joints.size();
   const std::vector<double> times = all_key_times(clip);

@@ -103,7 +103,7 @@ Result<std::vector<OwnSampler>> own_samplers(Builder& b, const Clip& clip, std::
   if (keys.cubic_rotations) {
     // Each key as (in-tangent, value, out-tangent); ours are one tangent per key.
     auto k = gltf_cubic_keys(rt);
-    if (!k) return make_error("joint '" + clip.skeleton.joints[j].name + "': " + k.error());
+    if (!k) return k.failure("joint '" + clip.skeleton.joints[j].name + "': ");
     for (std::size_t i = 0; i < k->keys.size(); ++i) {
       put_vec4(b.bin, k->tangents[i]);
       put_vec4(b.bin, k->keys[i].coeffs());
@@ -143,7 +143,7 @@ Result<std::vector<OwnSampler>> own_samplers(Builder& b, const Clip& clip, std::
 }
 
 Result<Document> build(const Clip& clip, const GltfKeys& keys) {
-  if (Status s = clip.validate(); !s) return make_error("cannot write an invalid clip: " + s.error());
+  if (Status s = clip.validate(); !s) return s.failure("cannot write an invalid clip: ");
   const Skeleton& sk = clip.skeleton;
   const std::size_t n = sk.joints.size();
   if ((keys.cubic_rotations || keys.cubic_translations) && !keys.own_times)
@@ -180,7 +180,7 @@ Result<Document> build(const Clip& clip, const GltfKeys& keys) {
     };
     if (keys.own_times) {
       auto own = own_samplers(b, clip, j, keys, metres);
-      if (!own) return make_error(own.error());
+      if (!own) return own.failure();
       for (const OwnSampler& o : *own) channel(o.output, o.path, o.input, o.interpolation);
       continue;
     }
@@ -250,7 +250,7 @@ std::optional<std::filesystem::path> previous_buffer(const std::filesystem::path
 Status write_gltf(const Clip& clip, const std::filesystem::path& path, bool binary, const GltfKeys& keys) {
   const std::string label = path.string();
   Result<Document> doc = build(clip, keys);
-  if (!doc) return make_error(label + ": " + doc.error());
+  if (!doc) return doc.failure(label + ": ");
   if (binary) {
     std::string json = doc->json.dump();
     std::string& bin = doc->buffer;
@@ -284,9 +284,9 @@ Status write_gltf(const Clip& clip, const std::filesystem::path& path, bool bina
   const std::string json = doc->json.dump();
   // Named temporaries, removed by the interrupt handler (as assimp-era .gltf writes were).
   AtomicOutput bin_out(bin_path), gltf_out(path);
-  if (Status s = bin_out.write(doc->buffer.data(), doc->buffer.size()); !s) return make_error(label + ": " + s.error());
-  if (Status s = gltf_out.write(json.data(), json.size()); !s) return make_error(label + ": " + s.error());
-  if (Status s = bin_out.finish(); !s) return make_error(label + ": " + s.error());
+  if (Status s = bin_out.write(doc->buffer.data(), doc->buffer.size()); !s) return s.failure(label + ": ");
+  if (Status s = gltf_out.write(json.data(), json.size()); !s) return s.failure(label + ": ");
+  if (Status s = bin_out.finish(); !s) return s.failure(label + ": ");
   if (Status s = gltf_out.finish(); !s) return s;
   const std::optional<std::filesystem::path> old_bin = previous_buffer(path);
   if (Status s = commit_together({&bin_out, &gltf_out}); !s) return s;

@@ -128,7 +128,7 @@ std::string fmt_double(double v) {
 Result<wire::ReadOutcome> read_in_importer(const fs::path& path, const ReadOptions& options) {
   const std::string label = path.string();
   Result<fs::path> exe = find_importer();
-  if (!exe) return make_error(label + ": cannot read: " + exe.error());
+  if (!exe) return exe.failure(label + ": cannot read: ");
   int fds[2];
   if (::pipe2(fds, O_CLOEXEC) != 0) return make_error(label + ": cannot start the importer: " + std::strerror(errno));
 

@@ -110,7 +110,7 @@ Status read_with_assimp(const fs::path& path, const ReadOptions& options, const 
     info.animations.push_back(s);
   }
   Result<std::size_t> sel = select_animation(scene, options.animation, label);
-  if (!sel) return make_error(sel.error());
+  if (!sel) return sel.failure();
   info.selected = *sel;
   const aiAnimation* anim = scene->mAnimations[info.selected];
   const AnimationSummary& summary = info.animations[info.selected];

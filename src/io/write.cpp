@@ -37,7 +37,7 @@ Status write_clip(const Clip& clip, const std::filesystem::path& path, const Wri
   }
   if (ext == ".fbx") {
     Result<std::string> bytes = encode_fbx(clip, options.fbx_ascii ? FbxEncoding::ascii : FbxEncoding::binary);
-    if (!bytes) return make_error(label + ": " + bytes.error());
+    if (!bytes) return bytes.failure(label + ": ");
     return write_file_atomically(path, [&](std::ostream& out) -> Status {
       out.write(bytes->data(), static_cast<std::streamsize>(bytes->size()));
       return Ok{};

@@ -16,7 +16,7 @@ Status add_budget_items(const std::string& what, const std::string& list, Budget
                                            part.compare(part.size() - 3, 3, "rad") == 0);
     if (angle) {
       auto v = parse_angle_deg(part);
-      if (!v) return make_error(what + ": " + v.error());
+      if (!v) return v.failure(what + ": ");
       b.deg = *v;
       continue;
     }

@@ -1,5 +1,7 @@
 #include "rotinterp/reduce/reduce.h"
 
+#include "rotinterp/clip/metrics.h"
+
 #include "rotinterp/core/rotation.h"
 #include "rotinterp/core/work_queue.h"
 #include "rotinterp/interp/interpolator.h"
@@ -153,7 +155,7 @@ Status remove_keys(std::vector<std::size_t>& keys, const ErrorFn& err, const Key
     if (!drop && values && *std::max_element(e.begin(), e.end()) <= kRefitReach) {
       free = {keys[i - 1], keys[i + 1]};
       auto fitted = values->refit(window, free, keys[i >= 3 ? i - 3 : 0], keys[std::min(keys.size() - 1, i + 3)]);
-      if (!fitted) return make_error(fitted.error());
+      if (!fitted) return fitted.failure();
       drop = *fitted;
     }
     if (drop)
@@ -193,16 +195,6 @@ TranslationTrack translation_keys(const std::vector<double>& times, const std::v
     t.keys.push_back(source[f]);
   }
   return t;
-}
-
-// The largest side of a shell vertex's displacement: max over the local axes a of
-// |ΔP + d·(R_ref − R_test)·e_a|.
-double shell_error(const Quat& r_ref, const Vec3& p_ref, const Quat& r_test, const Vec3& p_test, double d) {
-  const Mat3 dr = d * (r_ref.toRotationMatrix() - r_test.toRotationMatrix());
-  const Vec3 dp = p_ref - p_test;
-  double worst = 0.0;
-  for (int a = 0; a < 3; ++a) worst = std::max(worst, (dp + dr.col(a)).squaredNorm());
-  return std::sqrt(worst);
 }
 
 // shell_error where it exceeds `limit`; below, possibly a bound between it and
@@ -292,7 +284,7 @@ class Reducer {
 
   Result<ReduceResult> run() {
     if (n_ >= 2) {
-      if (Status s = shell_ ? run_hierarchical() : run_independent(); !s) return make_error(s.error());
+      if (Status s = shell_ ? run_hierarchical() : run_independent(); !s) return s.failure();
     } else {
       for (std::size_t j = 0; j < joints_; ++j) out_[j].budget = budget_[j];
     }
@@ -361,7 +353,7 @@ class Reducer {
 
   Result<std::vector<Quat>> rebuild(std::size_t j, const std::vector<std::size_t>& keys, std::size_t lo, std::size_t hi) const {
     auto curve = make_interpolator(o_.method, decimated_track(times(), value_[j], keys));
-    if (!curve) return make_error(curve.error());
+    if (!curve) return curve.failure();
     std::vector<Quat> q(hi - lo + 1);
     (*curve)->evaluate(times().data() + lo, q.size(), q.data());
     return q;
@@ -385,13 +377,13 @@ class Reducer {
     Eigen::MatrixXd jac(frames * rows, params);
     auto measure = [&](Eigen::VectorXd& out, Eigen::VectorXd& e) -> Result<double> {
       auto q = rebuild(j, keys, lo, hi);
-      if (!q) return make_error(q.error());
+      if (!q) return q.failure();
       for (std::size_t f = 0; f < frames; ++f)
         e[static_cast<Eigen::Index>(f)] = residual(lo + f, (*q)[f], out.data() + f * rows);
       return e.maxCoeff();
     };
     auto first = measure(r, err);
-    if (!first) return make_error(first.error());
+    if (!first) return first.failure();
     double worst = *first;
     constexpr double kStep = 1e-6;  // rad: the forward difference
     for (int iteration = 0; iteration < kRefitIterations; ++iteration) {
@@ -399,7 +391,7 @@ class Reducer {
         Quat& v = value_[j][free[p / 3]];
         const Quat keep = v;
         v = apply_moving(keep, RotVec(Vec3::Unit(static_cast<Eigen::Index>(p % 3)) * kStep));
-        if (auto m = measure(rp, errp); !m) return make_error(m.error());
+        if (auto m = measure(rp, errp); !m) return m.failure();
         v = keep;
         jac.col(static_cast<Eigen::Index>(p)) = (rp - r) / kStep;
       }
@@ -422,7 +414,7 @@ class Reducer {
         for (std::size_t k = 0; k < free.size(); ++k)
           value_[j][free[k]] = apply_moving(before[k], RotVec(t * step.segment<3>(static_cast<Eigen::Index>(3 * k))));
         auto now = measure(rp, errp);
-        if (!now) return make_error(now.error());
+        if (!now) return now.failure();
         if (*now <= 1.0) return true;
         if (*now < worst) better = true, worst = *now;
       }
@@ -461,7 +453,7 @@ class Reducer {
     };
     ErrorFn err = [&](const std::vector<std::size_t>& keys, std::size_t lo, std::size_t hi, double* out) -> Status {
       auto q = rebuild(j, keys, lo, hi);
-      if (!q) return make_error(q.error());
+      if (!q) return q.failure();
       for (std::size_t f = lo; f <= hi; ++f) out[f - lo] = frame_error(f, (*q)[f - lo]);
       return Ok{};
     };
@@ -505,7 +497,7 @@ class Reducer {
     };
     if (Status s = select_keys(rkeys_[j], n_, err, &values, removal, e); !s) return s;
     auto q = rebuild(j, rkeys_[j], 0, n_ - 1);
-    if (!q) return make_error(q.error());
+    if (!q) return q.failure();
     ReducedJoint& out = out_[j];
     out.budget = b;
     out.max_rotation_error = out.max_shell_error = 0.0;
@@ -538,7 +530,7 @@ class Reducer {
       for (auto& f : jobs) f.get();
     }
     for (std::size_t j = 0; j < joints_; ++j)
-      if (!status[j]) return make_error("joint '" + clip_.skeleton.joints[j].name + "': " + status[j].error());
+      if (!status[j]) return status[j].failure("joint '" + clip_.skeleton.joints[j].name + "': ");
     return Ok{};
   }
 
@@ -673,7 +665,7 @@ class Reducer {
         }
         for (auto& f : jobs) f.get();
         for (std::size_t j : level)
-          if (!status[j]) return make_error("joint '" + clip_.skeleton.joints[j].name + "': " + status[j].error());
+          if (!status[j]) return status[j].failure("joint '" + clip_.skeleton.joints[j].name + "': ");
       }
       if (!any) return Ok{};
       // Key the escalated frames; verify each changed joint's subtree again.
@@ -718,7 +710,7 @@ double translation_tolerance(const ReduceBudget& b) {
 }
 
 Result<ReduceResult> reduce_clip(const Clip& clip, const ReduceOptions& o) {
-  if (Status s = clip.validate(); !s) return make_error(s.error());
+  if (Status s = clip.validate(); !s) return s.failure();
   if (!find_method(o.method)) return make_error(unknown_method_message(o.method));
   const std::size_t n = clip.skeleton.joints.size();
   std::vector<ReduceBudget> budgets(n, o.budget);

@@ -94,9 +94,9 @@ Result<Image> render_golden_frame(Backend backend, bool perturb) {
     for (const Vec3& x : p.end_site_position) scene.bounds.extend(x);
   }
   auto context = create_context(backend);
-  if (!context) return make_error(context.error());
+  if (!context) return context.failure();
   auto renderer = Renderer::create(std::move(context).value(), scene);
-  if (!renderer) return make_error(renderer.error());
+  if (!renderer) return renderer.failure();
   auto panels = golden_panels(clip);
   if (perturb) std::swap(panels[0].pose, panels[1].pose);  // each panel shows the other's pose
   return (*renderer)->render(panels, 400, 220);

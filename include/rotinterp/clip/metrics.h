@@ -22,6 +22,8 @@
 #include "rotinterp/core/rotation.h"
 #include "rotinterp/interp/interpolator.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -84,6 +86,18 @@ RotationError rotation_error(const Quat* ref, const Quat* test, std::size_t n, c
                              std::vector<double>& scratch);
 
 // ---- position and shell error ----------------------------------------------------------
+
+// The shell (virtual vertex) error of one joint between two world poses: the
+// vertices p + R·(d·eₐ) move by ΔP + d·(R_ref − R_test)·eₐ, the columns of the
+// difference of the two rotation matrices; the largest of the three. eval's
+// metrics and reduce's budget both measure with it.
+inline double shell_error(const Quat& r_ref, const Vec3& p_ref, const Quat& r_test, const Vec3& p_test, double d) {
+  const Mat3 dr = d * (r_ref.toRotationMatrix() - r_test.toRotationMatrix());
+  const Vec3 dp = p_ref - p_test;
+  double worst = 0.0;
+  for (int a = 0; a < 3; ++a) worst = std::max(worst, (dp + dr.col(a)).squaredNorm());
+  return std::sqrt(worst);
+}
 
 // Accumulators over the samples of a clip, one per joint / End Site.
 struct PoseError {

@@ -48,8 +48,11 @@ class [[nodiscard]] Result {
 
   const std::string& error() const { assert(!ok()); return std::get<Error>(v_).message; }
   ErrorKind error_kind() const { assert(!ok()); return std::get<Error>(v_).kind; }
-  // The error itself (message and kind), to pass on as another Result's.
+  // The error itself (message and kind), to pass on as another Result's: the one way
+  // an error is passed on, so that its kind survives (`return r.failure();`).
   const Error& failure() const { assert(!ok()); return std::get<Error>(v_); }
+  // The same, with `context` before its message ("joint 'Hips': " + message).
+  Error failure(const std::string& context) const { return Error{context + failure().message, failure().kind}; }
 
  private:
   std::variant<T, Error> v_;

@@ -97,7 +97,7 @@ std::string CycleResample::summary() const {
 
 Result<CycleResample> resample_cycle(const Clip& in, const ResampleOptions& options, std::optional<LoopForm> form,
                                      const LoopTolerance& tolerance) {
-  if (Status s = in.validate(); !s) return make_error(s.error());
+  if (Status s = in.validate(); !s) return s.failure();
   if (options.fps && options.keep_every) return make_error("give either a frame rate or keep-every, not both");
   if (options.keep_every && *options.keep_every < 1) return make_error("keep-every must be at least 1");
   if (options.range) return make_error("a cycle is resampled whole: --range and --loop do not go together");
@@ -178,7 +178,7 @@ Result<CycleResample> resample_cycle(const Clip& in, const ResampleOptions& opti
     if (options.keep_every && keys.times.size() > 1) {
       auto whole = loops[j] ? make_periodic_interpolator(method[j], keys, source_period)
                             : make_interpolator(method[j], keys);
-      if (!whole) return make_error("joint '" + in.skeleton.joints[j].name + "': " + whole.error());
+      if (!whole) return whole.failure("joint '" + in.skeleton.joints[j].name + "': ");
       RotationTrack sparse;
       sparse.times = key_times;
       if (!loops[j]) sparse.times.push_back(grid.exact_time(eval_times.size() - 1));  // its own last frame
@@ -194,7 +194,7 @@ Result<CycleResample> resample_cycle(const Clip& in, const ResampleOptions& opti
       std::fill(rot.keys.begin(), rot.keys.end(), keys.keys.front());
     } else {
       auto curve = loops[j] ? make_periodic_interpolator(method[j], keys, source_period) : make_interpolator(method[j], keys);
-      if (!curve) return make_error("joint '" + in.skeleton.joints[j].name + "': " + curve.error());
+      if (!curve) return curve.failure("joint '" + in.skeleton.joints[j].name + "': ");
       (*curve)->evaluate(eval_times.data(), eval_times.size(), rot.keys.data());
     }
     rot.make_sign_continuous();

@@ -189,7 +189,7 @@ Status read_layer_curves(const Objects& o, const FbxNode& layer, std::size_t ind
         c.channel = ch;
         c.layer = index;
         c.default_value = fbx::property_number(fbx::find_property(*cn, link.property), 0, 0.0);
-        const std::string where = label + ": FBX curve " + c.node + "/" + c.property + "/" + ch;
+        const std::string where = label + ": FBX curve " + fbx_printable(c.node) + "/" + c.property + "/" + ch;
         if (Status st = read_keys(*curve->second, c, where); !st) return make_error(st.error(), ErrorKind::unreadable);
         take.curves.push_back(std::move(c));
       }

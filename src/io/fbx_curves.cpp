@@ -135,7 +135,10 @@ Status read_keys(const FbxNode& node, FbxCurve& c, const std::string& where) {
     ++used;
     double slots[4];
     for (int s = 0; s < 4; ++s) slots[s] = std::isfinite(data.values[4 * attr + s]) ? data.values[4 * attr + s] : 0.0;
-    decode_flags(k, static_cast<std::uint32_t>(flags[attr]), slots, &data.bits[4 * attr]);
+    // Flags are 32-bit (stored signed or not); anything else is not a flag word.
+    const double f = flags[attr];
+    if (!(f >= -2147483648.0 && f <= 4294967295.0)) return make_error(where + ": key flags " + std::to_string(f) + " are not 32-bit");
+    decode_flags(k, static_cast<std::uint32_t>(static_cast<std::int64_t>(f)), slots, &data.bits[4 * attr]);
   }
   c.pre = extrapolation(node.child("Pre-Extrapolation"));
   c.post = extrapolation(node.child("Post-Extrapolation"));
@@ -189,7 +192,7 @@ Status read_layer_curves(const Objects& o, const FbxNode& layer, std::size_t ind
         c.channel = ch;
         c.layer = index;
         c.default_value = fbx::property_number(fbx::find_property(*cn, link.property), 0, 0.0);
-        const std::string where = label + ": FBX curve " + c.node + "/" + c.property + "/" + ch;
+        const std::string where = label + ": FBX curve " + fbx_printable(c.node) + "/" + c.property + "/" + ch;
         if (Status st = read_keys(*curve->second, c, where); !st) return make_error(st.error(), ErrorKind::unreadable);
         take.curves.push_back(std::move(c));
       }

@@ -28,6 +28,15 @@ const FbxNode* FbxDocument::node(std::string_view name) const {
   return nullptr;
 }
 
+std::string fbx_printable(std::string_view name) {
+  constexpr std::size_t kMaxShown = 200;
+  std::string out(name.substr(0, kMaxShown));
+  for (char& c : out)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
+  if (name.size() > kMaxShown) out += "…";
+  return out;
+}
+
 bool is_binary_fbx(std::string_view bytes) {
   return bytes.size() >= 21 && std::memcmp(bytes.data(), kBinaryMagic, 21) == 0;
 }

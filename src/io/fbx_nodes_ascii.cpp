@@ -41,7 +41,7 @@ class AsciiReader {
 
   Status fail(const std::string& what) const {
     std::string where;
-    for (const std::string& n : path_) where += (where.empty() ? "" : "/") + n;
+    for (const std::string& n : path_) where += (where.empty() ? "" : "/") + fbx_printable(n);
     return make_error(label_ + ": FBX node " + (where.empty() ? "(top level)" : where) + ": " + what,
                       ErrorKind::unreadable);
   }
@@ -115,7 +115,7 @@ class AsciiReader {
     }
     const std::size_t from = pos_;
     while (pos_ < s_.size() && !std::strchr(",{}\n;\r \t", s_[pos_])) ++pos_;
-    if (pos_ == from) return fail("unexpected '" + std::string(1, s_[pos_]) + "' on line " + std::to_string(line_));
+    if (pos_ == from) return fail("unexpected '" + fbx_printable(s_.substr(pos_, 1)) + "' on line " + std::to_string(line_));
     const std::string_view tok = s_.substr(from, pos_ - from);
     if (number(tok, p)) return Ok{};
     p.type = 'S';

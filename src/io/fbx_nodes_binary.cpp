@@ -64,7 +64,7 @@ class BinaryReader {
 
   Status fail(const std::string& what) const {
     std::string where;
-    for (const std::string& n : path_) where += (where.empty() ? "" : "/") + n;
+    for (const std::string& n : path_) where += (where.empty() ? "" : "/") + fbx_printable(n);
     return make_error(label_ + ": FBX node " + (where.empty() ? "(top level)" : where) + ": " + what,
                       ErrorKind::unreadable);
   }

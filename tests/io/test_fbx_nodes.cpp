@@ -112,6 +112,23 @@ TEST(FbxNodes, AHostileArrayCountIsRefusedNamingTheNode) {
   EXPECT_EQ(text.error().rfind("hostile.fbx: FBX node KeyTime: ", 0), 0u) << text.error();
 }
 
+TEST(FbxNodes, AnErrorNamingANodeWithControlCharactersStaysOneLine) {
+  FbxEncoder e(FbxEncoder::Format::binary);
+  e.begin("Bad\nName");
+  e.begin("Values");
+  e.f32_array({1.0f});
+  e.end();
+  e.end();
+  std::string bytes = *e.finish();
+  const std::size_t at = bytes.find(std::string("f\x01\0\0\0\0\0\0\0\x04\0\0\0", 13));
+  ASSERT_NE(at, std::string::npos);
+  bytes[at + 4] = '\x7f';
+  auto doc = parse_fbx_binary(bytes, "ctrl.fbx");
+  ASSERT_FALSE(doc.ok());
+  EXPECT_EQ(doc.error().find('\n'), std::string::npos) << doc.error();
+  EXPECT_NE(doc.error().find("Bad?Name/Values"), std::string::npos) << doc.error();
+}
+
 TEST(FbxNodes, AZlibArrayThatLiesAboutItsSizeIsRefused) {
   std::string bytes = encoded(FbxEncoder::Format::binary);
   // KeyTime's 'l' array of 100 is zlib-compressed (encoding 1): claim 101 elements.

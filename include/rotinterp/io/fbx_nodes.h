@@ -72,6 +72,10 @@ struct FbxDocument {
   const FbxNode* node(std::string_view name) const;
 };
 
+// A name from the file as an error message may show it: control characters as
+// '?', at most 200 bytes (messages are one line).
+std::string fbx_printable(std::string_view name);
+
 // Whether `bytes` start with the binary FBX magic.
 bool is_binary_fbx(std::string_view bytes);
 

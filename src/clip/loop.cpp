@@ -134,6 +134,19 @@ Result<LoopCheck> check_loop(const Clip& clip, std::optional<LoopForm> form, con
   return check;
 }
 
+std::string closure_misses_text(const std::vector<ClosureMiss>& misses) {
+  if (misses.empty()) return "";
+  std::string s = std::to_string(misses.size()) + (misses.size() == 1 ? " joint misses" : " joints miss") +
+                  " closure (a pop at the seam in the source):";
+  for (std::size_t i = 0; i < misses.size() && i < 8; ++i) {
+    char m[128];
+    std::snprintf(m, sizeof m, "%s %s %.2f°", i ? "," : "", misses[i].name.c_str(), misses[i].angle * kDegrees);
+    s += m;
+  }
+  if (misses.size() > 8) s += ", …";
+  return s;
+}
+
 std::string loop_check_text(const LoopCheck& c) {
   char head[160];
   std::snprintf(head, sizeof head, "%s (%s form: %zu frames, %.4g s per period); joints close within %.4f°",
@@ -146,16 +159,7 @@ std::string loop_check_text(const LoopCheck& c) {
     std::snprintf(root, sizeof root, "; root rises %.4g m per cycle", c.root_vertical_offset);
     s += root;
   }
-  if (!c.misses.empty()) {
-    s += "; " + std::to_string(c.misses.size()) + (c.misses.size() == 1 ? " joint misses" : " joints miss") +
-         " closure (a pop at the seam in the source):";
-    for (std::size_t i = 0; i < c.misses.size() && i < 8; ++i) {
-      char m[128];
-      std::snprintf(m, sizeof m, "%s %s %.2f°", i ? "," : "", c.misses[i].name.c_str(), c.misses[i].angle * kDegrees);
-      s += m;
-    }
-    if (c.misses.size() > 8) s += ", …";
-  }
+  if (!c.misses.empty()) s += "; " + closure_misses_text(c.misses);
   return s;
 }
 

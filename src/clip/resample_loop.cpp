@@ -87,11 +87,7 @@ std::string CycleResample::summary() const {
                   period);
     s += p;
   }
-  for (const ClosureMiss& m : check.misses) {
-    char p[160];
-    std::snprintf(p, sizeof p, "; %s misses closure by %.2f° (the source's pop, kept)", m.name.c_str(), m.angle * kDegrees);
-    s += p;
-  }
+  if (!check.misses.empty()) s += "; " + closure_misses_text(check.misses) + ", kept as it is";
   return s;
 }
 

@@ -70,6 +70,10 @@ Vec3 per_cycle_offset(const TranslationTrack& track, LoopForm form, double frame
 // "auto" (nothing), "closed", "open"; an error naming the valid words otherwise.
 Result<std::optional<LoopForm>> parse_loop_form(std::string_view text);
 
+// "2 joints miss closure (a pop at the seam in the source): L_Arm 4.40°, R_Arm 1.20°", the
+// eight largest and "…" after them; "" when none misses.
+std::string closure_misses_text(const std::vector<ClosureMiss>& misses);
+
 // One line for a user: "looks like a cycle (closed, 38 frames, 1.267 s); closes within 0.0050°;
 // 1 joint misses closure: L_Arm 4.40°" or "not a cycle: …".
 std::string loop_check_text(const LoopCheck& check);

@@ -38,7 +38,8 @@ struct CycleResample {
   double stretch = 0.0;               // output period / input period − 1 (0 where P·R is whole)
   std::vector<std::string> not_looped;  // joints that miss closure, rebuilt with their ends
   // "cycle (closed form): 38 → 76 frames per period of 1.267 s" and, where it applies,
-  // "period stretched by +0.4% (1.271 s) to whole frames; L_Arm misses closure by 4.39°: pop kept".
+  // "period +0.40% (1.272 s) for whole frames at the rate asked; 1 joint misses closure (a pop at
+  // the seam in the source): L_Arm 4.39°, kept as it is".
   std::string summary() const;
 };
 

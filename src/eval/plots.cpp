@@ -42,17 +42,19 @@ int dash(std::size_t i) { return 1 + static_cast<int>(i % 8); }  // PLplot's eig
 // Character heights relative to PLplot's default: text, and the markers.
 constexpr double kTextScale = 0.8, kMarkerScale = 0.6;
 
-// Angles stop at 180°: no angle axis runs past it (bar `headroom`).
-const double kMaxLogDeg = std::log10(180.0);
+// Angles stop at 180°: no angle axis runs past it, and legends sit outside the frames
+// (room made for one inside stretched an axis to ~30 000°, issue 28).
+constexpr double kMaxDeg = 180.0;
+const double kMaxLogDeg = std::log10(kMaxDeg);
 
-// The y range of a log₁₀ axis over the positive values (decades, capped at 180°,
-// `headroom` decades above for a legend inside the frame); `any` false when none is positive.
+// The y range of an axis: log₁₀ degrees (whole decades, capped at 180°) or, with
+// `log` false, degrees; `any` false when no value is positive.
 struct LogRange {
   bool log = false;
   bool any = false;
   double lo = 0, hi = 1;
 };
-LogRange log_range(const std::vector<double>& values, double headroom) {
+LogRange log_range(const std::vector<double>& values) {
   LogRange r;
   r.log = true;
   double lo = INFINITY, hi = -INFINITY;
@@ -61,7 +63,46 @@ LogRange log_range(const std::vector<double>& values, double headroom) {
   r.any = std::isfinite(lo);
   if (!r.any) lo = 0, hi = 1;
   r.lo = std::floor(lo);
-  r.hi = std::min(std::max(std::ceil(hi), r.lo + 1), std::max(kMaxLogDeg, hi)) + headroom;
+  r.hi = std::min(std::max(std::ceil(hi), r.lo + 1), std::max(kMaxLogDeg, hi));
+  return r;
+}
+
+struct SpacingPanel {
+  const char* title;
+  double SummaryEntry::*value;
+};
+constexpr SpacingPanel kSpacingPanels[] = {{"RMS, all samples", &SummaryEntry::rms_deg},
+                                           {"median over clips of the clip RMS", &SummaryEntry::clip_rms_median_deg},
+                                           {"max", &SummaryEntry::max_deg}};
+
+LogRange spacing_axis(const Summary& s, const SpacingPanel& panel) {
+  std::vector<double> values;
+  for (const SummaryEntry& e : s.entries) values.push_back(e.*panel.value);
+  return log_range(values);
+}
+
+// Each clip at the largest spacing it was evaluated at.
+std::map<std::string, int> largest_spacing(const Summary& s) {
+  std::map<std::string, int> largest;
+  for (const ClipResult& c : s.clip_results) largest[c.clip] = std::max(largest[c.clip], c.keep_every);
+  return largest;
+}
+
+LogRange clips_axis(const Summary& s) {
+  const std::map<std::string, int> largest = largest_spacing(s);
+  std::vector<double> values;
+  for (const ClipResult& c : s.clip_results)
+    if (c.keep_every == largest.at(c.clip)) values.push_back(c.rms_deg);
+  return log_range(values);
+}
+
+// Linear, from 0 to a quarter above the largest value (capped at 180°).
+LogRange worst_clip_axis(const Summary& s) {
+  double ymax = 0;
+  for (const ErrorRow& r : s.worst_clip_rows) ymax = std::max(ymax, r.rms_deg);
+  LogRange r;
+  r.any = ymax > 0;
+  r.hi = r.any ? std::min(ymax * 1.25, std::max(ymax, kMaxDeg)) : 1.0;
   return r;
 }
 
@@ -242,13 +283,6 @@ class Page {
 
 Status spacing_plot(const Summary& s) {
   const std::vector<std::string> methods = method_names(s);
-  struct Panel {
-    const char* title;
-    double SummaryEntry::*value;
-  };
-  const Panel panels[] = {{"RMS, all samples", &SummaryEntry::rms_deg},
-                          {"median over clips of the clip RMS", &SummaryEntry::clip_rms_median_deg},
-                          {"max", &SummaryEntry::max_deg}};
   double xmin = INFINITY, xmax = -INFINITY;
   for (const SummaryEntry& e : s.entries) {
     const double x = std::log2(std::max(1, e.keep_every));
@@ -257,29 +291,25 @@ Status spacing_plot(const Summary& s) {
   if (!std::isfinite(xmin)) xmin = 0, xmax = 1;
   const double dx = 0.05;  // sideways offset between methods, log₂ units
   const double half = dx * 0.5 * static_cast<double>(methods.size());
-  // The legend goes below the panels (issue 28: room made for it inside the first
-  // panel stretched its axis to ~30 000°).
   constexpr double kBottom = 0.24, kTop = 0.86;
   plvpor(0.07, 0.955, kBottom, kTop);
   plmtex("t", 3.2, 0.5, 0.5,
          fmt::format("Angular error vs key spacing — {} clip{}", s.clips, s.clips == 1 ? "" : "s").c_str());
   plmtex("b", 3.2, 0.5, 0.5, "keys every N frames (log scale)");
   for (int p = 0; p < 3; ++p) {
-    std::vector<double> values;
-    for (const SummaryEntry& e : s.entries) values.push_back(e.*panels[p].value);
-    const LogRange yr = log_range(values, 0.0);
+    const LogRange yr = spacing_axis(s, kSpacingPanels[p]);
     const double left = 0.08 + 0.31 * p;
     plvpor(left, left + 0.255, kBottom, kTop);
     plwind(xmin - 0.3 - half, xmax + 0.3 + half, yr.lo, yr.hi);
     log_axes(true);
-    plmtex("t", 1.0, 0.5, 0.5, panels[p].title);
+    plmtex("t", 1.0, 0.5, 0.5, kSpacingPanels[p].title);
     if (p == 0) plmtex("l", 5.0, 0.5, 0.5, "angle error (degrees, log scale)");
     for (std::size_t mi = 0; mi < methods.size(); ++mi) {
       std::vector<double> x, y;
       for (const SummaryEntry& e : s.entries)
         if (e.method == methods[mi]) {
           x.push_back(std::log2(std::max(1, e.keep_every)) + offset(mi, methods.size(), dx));
-          y.push_back(e.*panels[p].value);
+          y.push_back(e.*kSpacingPanels[p].value);
         }
       draw_series(mi, x, y, yr, true);
     }
@@ -294,14 +324,11 @@ Status spacing_plot(const Summary& s) {
 Status worst_clip_plot(const Summary& s) {
   std::vector<std::string> methods, joints;
   std::map<std::pair<std::string, std::string>, double> rms;
-  double ymax = 0;
   for (const ErrorRow& r : s.worst_clip_rows) {
     if (std::find(methods.begin(), methods.end(), r.method) == methods.end()) methods.push_back(r.method);
     if (std::find(joints.begin(), joints.end(), r.joint) == joints.end()) joints.push_back(r.joint);
     rms[{r.method, r.joint}] = r.rms_deg;
-    ymax = std::max(ymax, r.rms_deg);
   }
-  if (!(ymax > 0)) ymax = 1;
   // Joints with an error in some method, at most kMaxJoints of them (the largest), in skeleton order.
   std::vector<std::pair<double, std::size_t>> largest;
   for (std::size_t i = 0; i < joints.size(); ++i) {
@@ -320,7 +347,7 @@ Status worst_clip_plot(const Summary& s) {
   joints = std::move(shown);
   const double xmax = std::max<double>(1, static_cast<double>(joints.size()) - 1);
   plvpor(0.08, 0.97, 0.32, 0.86);
-  plwind(-0.5, xmax + 0.5, 0, ymax * 1.25);  // headroom for the legend inside the frame
+  plwind(-0.5, xmax + 0.5, 0, worst_clip_axis(s).hi);  // a quarter above the largest for the legend
   plcol0(kGrid);
   plbox("", 0, 0, "g", 0, 0);
   plcol0(kText);
@@ -356,19 +383,13 @@ Status worst_clip_plot(const Summary& s) {
 }
 
 Status clips_plot(const Summary& s) {
-  // Each clip at the largest spacing it was evaluated at.
   std::vector<std::string> methods = method_names(s), clips;
-  std::map<std::string, int> largest;
-  for (const ClipResult& c : s.clip_results) {
-    if (!largest.count(c.clip)) clips.push_back(c.clip);
-    largest[c.clip] = std::max(largest[c.clip], c.keep_every);
-  }
-  std::vector<double> values;
+  std::map<std::string, int> largest = largest_spacing(s);
   for (const ClipResult& c : s.clip_results)
-    if (c.keep_every == largest[c.clip]) values.push_back(c.rms_deg);
-  const LogRange yr = log_range(values, 1.2);
+    if (std::find(clips.begin(), clips.end(), c.clip) == clips.end()) clips.push_back(c.clip);
+  const LogRange yr = clips_axis(s);
   const double xmax = std::max<double>(1, static_cast<double>(clips.size()) - 1);
-  plvpor(0.08, 0.97, 0.40, 0.86);
+  plvpor(0.08, 0.76, 0.40, 0.86);  // the legend on the right
   plwind(-0.5, xmax + 0.5, yr.lo, yr.hi);
   plcol0(kGrid);
   plbox("", 0, 0, "g", 1.0, 0);
@@ -379,7 +400,7 @@ Status clips_plot(const Summary& s) {
   plmtex("l", 5.0, 0.5, 0.5, "clip RMS angle error (degrees, log scale)");
   plmtex("t", 2.6, 0.5, 0.5, "RMS error of each clip at the largest spacing it was evaluated at (N in the label)");
   plschr(0.0, 0.7);
-  plmtex("t", 1.2, 0.5, 0.5, "open markers on the bottom edge: 0 to round-off (below 1e-9°: a still clip, or one every method reproduces)");
+  plmtex("t", 1.2, 0.5, 0.5, "open markers on the bottom edge: zero to round-off (below 1e-9°: a still clip, or an exact method)");
   plschr(0.0, kTextScale);
   // Labels without the directory all clips share.
   std::size_t common = clips.empty() ? 0 : clips.front().size();
@@ -405,7 +426,7 @@ Status clips_plot(const Summary& s) {
         }
     draw_series(mi, x, y, yr, false);
   }
-  legend(methods, PL_POSITION_INSIDE | PL_POSITION_TOP, 4);
+  legend(methods, PL_POSITION_OUTSIDE | PL_POSITION_RIGHT, 1, 0.0);
   return Ok{};
 }
 
@@ -424,6 +445,18 @@ std::string svg_name(const char* png_name) {
 }
 
 }  // namespace
+
+std::vector<AngleAxis> plot_angle_axes(const Summary& s) {
+  auto degrees = [](const char* plot, const LogRange& r) {
+    return r.log ? AngleAxis{plot, std::pow(10.0, r.lo), std::pow(10.0, r.hi)} : AngleAxis{plot, r.lo, r.hi};
+  };
+  std::vector<AngleAxis> axes;
+  for (const SpacingPanel& p : kSpacingPanels)
+    axes.push_back(degrees(kSpacingPlotName, spacing_axis(s, p)));
+  axes.push_back(degrees(kWorstClipPlotName, worst_clip_axis(s)));
+  axes.push_back(degrees(kClipsPlotName, clips_axis(s)));
+  return axes;
+}
 
 std::vector<std::string> plot_file_names() {
   std::vector<std::string> names;

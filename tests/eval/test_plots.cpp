@@ -112,3 +112,36 @@ TEST(Plots, EveryRegisteredMethodHasAColourOfItsOwn) {
 
 }  // namespace
 }  // namespace rotinterp
+
+namespace rotinterp {
+namespace {
+
+// Issue 28: error_vs_spacing's RMS panel ran to ~30 000° to make room for its legend,
+// and clip_errors' axis to 10^1.2 times its largest value. Every angle axis covers its
+// values and stops at 180°, however large they are.
+TEST(Plots, EveryAngleAxisCoversItsValuesAndStopsAt180Degrees) {
+  for (double scale : {1.0, 50.0, 800.0}) {  // largest values 2.56°·scale, capped at 179°
+    Summary s = hand_summary();
+    auto grow = [scale](double& v) { v = std::min(v * scale, 179.0); };
+    for (SummaryEntry& e : s.entries) grow(e.rms_deg), grow(e.max_deg), grow(e.clip_rms_median_deg);
+    for (ClipResult& c : s.clip_results) grow(c.rms_deg);
+    for (ErrorRow& r : s.worst_clip_rows) grow(r.rms_deg);
+    const std::vector<AngleAxis> axes = plot_angle_axes(s);
+    ASSERT_EQ(axes.size(), 5u);
+    std::vector<double> largest = {0, 0, 0, 0, 0};
+    for (const SummaryEntry& e : s.entries)
+      largest[0] = std::max(largest[0], e.rms_deg), largest[1] = std::max(largest[1], e.clip_rms_median_deg),
+      largest[2] = std::max(largest[2], e.max_deg);
+    for (const ErrorRow& r : s.worst_clip_rows) largest[3] = std::max(largest[3], r.rms_deg);
+    for (const ClipResult& c : s.clip_results) largest[4] = std::max(largest[4], c.rms_deg);
+    for (std::size_t i = 0; i < axes.size(); ++i) {
+      SCOPED_TRACE(axes[i].plot + " axis " + std::to_string(i) + ", scale " + std::to_string(scale));
+      EXPECT_LE(axes[i].hi_deg, 180.0 + 1e-9);
+      EXPECT_GE(axes[i].hi_deg, largest[i] - 1e-9);
+      EXPECT_LT(axes[i].lo_deg, axes[i].hi_deg);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace rotinterp

@@ -71,8 +71,8 @@ double error_scale(double max_error_deg) {
   if (!std::isfinite(max_error_deg) || max_error_deg <= 1.0) return 1.0;
   const double decade = std::pow(10.0, std::floor(std::log10(max_error_deg)));
   for (double m : {1.0, 2.0, 5.0, 10.0})
-    if (m * decade >= max_error_deg * (1.0 - 1e-12)) return m * decade;
-  return 10.0 * decade;
+    if (m * decade >= max_error_deg * (1.0 - 1e-12)) return std::min(m * decade, 180.0);
+  return 180.0;
 }
 
 Color error_colour(double error_deg, double scale_deg) {

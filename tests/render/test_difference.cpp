@@ -67,7 +67,7 @@ TEST(ColourMap, ViridisPassesThroughItsPublishedEntriesAndGetsLighterThroughout)
   }
 }
 
-TEST(ColourMap, ErrorScaleIsTheNext125StepAndAtLeastOneDegree) {
+TEST(ColourMap, ErrorScaleIsTheNext125StepFromOneDegreeTo180) {
   EXPECT_EQ(error_scale(0.0), 1.0);
   EXPECT_EQ(error_scale(0.3), 1.0);
   EXPECT_EQ(error_scale(1.0), 1.0);
@@ -75,7 +75,10 @@ TEST(ColourMap, ErrorScaleIsTheNext125StepAndAtLeastOneDegree) {
   EXPECT_EQ(error_scale(4.2), 5.0);
   EXPECT_EQ(error_scale(5.0), 5.0);
   EXPECT_EQ(error_scale(14.54), 20.0);
-  EXPECT_EQ(error_scale(170.0), 200.0);
+  EXPECT_EQ(error_scale(101.0), 180.0);  // angles stop at 180°: no bar or strip runs to 200°
+  EXPECT_EQ(error_scale(170.0), 180.0);
+  EXPECT_EQ(error_scale(180.0), 180.0);
+  EXPECT_EQ(error_scale(1e6), 180.0);
   EXPECT_EQ(error_scale(std::nan("")), 1.0);
   EXPECT_EQ(to_bytes(error_colour(5.0, 20.0)), to_bytes(viridis(0.25)));
   EXPECT_EQ(to_bytes(error_colour(30.0, 20.0)), to_bytes(viridis(1.0)));

@@ -15,7 +15,8 @@ Color viridis(double t);
 
 // The colour bar's top, degrees: the smallest 1-2-5 step (…, 0.5, 1, 2, 5, 10, …)
 // at or above `max_error_deg`, at least 1° (a frame whose worst error is tiny —
-// a key — does not blow noise up to the whole map). Non-finite input gives 1.
+// a key — does not blow noise up to the whole map) and at most 180° (angles stop
+// there: 200 would leave the bar's top unused). Non-finite input gives 1.
 double error_scale(double max_error_deg);
 
 // The colour of `error_deg` on a bar from 0 to `scale_deg`.

@@ -17,6 +17,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <new>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -71,6 +72,11 @@ int run(const EvalArgs& a) {
   // A file without animation is said at the end: alone, it is the one line of a run
   // that had nothing to evaluate (a static mesh), not an empty table.
   auto print_failure = [](const EvalFailure& f) {
+    // Out of memory ends the run, as in every command: one line, exit 1, nothing written.
+    if (f.kind == ErrorKind::out_of_memory) {
+      name_out_of_memory_file(f.file);
+      throw std::bad_alloc();
+    }
     if (f.kind != ErrorKind::no_animation) std::fprintf(stderr, "rotinterp: %s\n", f.message.c_str());
   };
   Result<EvalReport> report = make_error("");

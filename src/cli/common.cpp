@@ -20,6 +20,16 @@
 
 namespace rotinterp::cli {
 
+namespace {
+char oom_line[600] = "rotinterp: out of memory\n";
+}  // namespace
+
+void name_out_of_memory_file(const std::string& file) {
+  if (file.size() < 400) std::snprintf(oom_line, sizeof oom_line, "rotinterp: %s: out of memory\n", file.c_str());
+}
+
+const char* out_of_memory_line() { return oom_line; }
+
 int fail(std::string_view message) {
   std::fprintf(stderr, "rotinterp: %.*s\n", static_cast<int>(message.size()), message.data());
   return kExitFailure;

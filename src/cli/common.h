@@ -27,6 +27,12 @@ constexpr int kExitPartial = 3;  // eval: some inputs failed, the rest were writ
 // Largest --keep-every (frames between keys): far above any clip's frame count.
 constexpr long long kMaxKeepEvery = 1000000000;
 
+// Out of memory ends a run with one line naming the file it happened on: "rotinterp:
+// FILE: out of memory" (main prints it; the line is kept ready, as the handler may
+// not allocate). main names the command's first input; a batch names the clip.
+void name_out_of_memory_file(const std::string& file);
+const char* out_of_memory_line();
+
 // Prints "rotinterp: <message>" on stderr and returns kExitFailure.
 int fail(std::string_view message);
 // The same for a bad option value, pointing to the running subcommand's help

@@ -8,11 +8,28 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstring>
+#include <filesystem>
 #include <exception>
 #include <new>
 #include <string>
 
 namespace {
+
+// The command's input, for the out-of-memory line: the first argument after the
+// subcommand that is no option, not -o's value and names an existing path.
+void note_input(int argc, char** argv) {
+  for (int i = 2; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a.empty() || a[0] == '-') continue;
+    const std::string before = argv[i - 1];
+    if (before == "-o" || before == "--output") continue;
+    std::error_code ec;
+    if (!std::filesystem::exists(a, ec)) continue;
+    rotinterp::cli::name_out_of_memory_file(a);
+    return;
+  }
+}
 
 // Out of memory on any thread (a worker of eval or render) ends the run with one
 // line and exit 1, its temporary files removed, instead of an abort; anything else
@@ -22,9 +39,9 @@ namespace {
     try {
       std::rethrow_exception(current);
     } catch (const std::bad_alloc&) {
-      static const char line[] = "rotinterp: out of memory\n";
       rotinterp::remove_live_temporaries();
-      (void)!::write(STDERR_FILENO, line, sizeof line - 1);
+      const char* line = rotinterp::cli::out_of_memory_line();
+      (void)!::write(STDERR_FILENO, line, std::strlen(line));
       _exit(rotinterp::cli::kExitFailure);
     } catch (const std::exception& e) {
       std::fprintf(stderr, "rotinterp: internal error: %s\n", e.what());
@@ -40,6 +57,7 @@ int main(int argc, char** argv) {
   using namespace rotinterp::cli;
   rotinterp::install_interrupt_cleanup();
   std::set_terminate(on_terminate);
+  note_input(argc, argv);
 
   CLI::App app{"rotinterp: resample, compare and evaluate keyframed 3-D orientations in motion clips"};
   app.set_version_flag("--version", std::string("rotinterp ") + ROTINTERP_VERSION);
@@ -66,7 +84,8 @@ int main(int argc, char** argv) {
     return kExitUsage;
   } catch (const std::bad_alloc&) {
     // Unwound: every AtomicOutput on the way removed its temporary.
-    return fail("out of memory");
+    std::fputs(out_of_memory_line(), stderr);
+    return kExitFailure;
   } catch (const std::exception& e) {
     return fail(e.what());
   }

@@ -71,7 +71,7 @@ Result<ClipFileInfo> inspect_clip(const fs::path& path, const ReadOptions& optio
   try {
     return load(path, options);
   } catch (const std::bad_alloc&) {
-    return make_error(path.string() + ": out of memory while reading");
+    return make_error(path.string() + ": out of memory while reading", ErrorKind::out_of_memory);
   } catch (const std::exception& e) {
     return make_error(path.string() + ": " + one_line(e.what()));
   }

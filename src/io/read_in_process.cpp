@@ -216,6 +216,7 @@ wire::ReadOutcome read_in_this_process(const fs::path& path, const ReadOptions& 
     }
   } catch (const std::bad_alloc&) {
     out.error = path.string() + ": out of memory while reading";
+    out.kind = ErrorKind::out_of_memory;
   } catch (const std::exception& e) {
     out.error = path.string() + ": " + one_line(e.what());
   }

@@ -21,7 +21,8 @@ enum class ErrorKind {
   no_file,       // nothing at the path: missing, a link to nothing, a loop of links
   directory,     // the path is a directory
   cannot_open,   // the system refuses to read it: permissions, not a regular file, I/O
-  last = cannot_open,
+  out_of_memory, // the work needed more memory than the process may have
+  last = out_of_memory,
 };
 
 struct Error {

@@ -1,4 +1,7 @@
-#include "track_sample.h"
+// The union of a clip's key times, for the exporters.
+#include "key_times.h"
+
+#include <algorithm>
 
 namespace rotinterp {
 

@@ -201,7 +201,7 @@ std::string per_frame_csv(const ClipReference& R, const PerFrameRequest& q, cons
   std::string out = "sample,time_s,key";
   for (const Joint& j : R.skeleton.joints) out += "," + csv_field(j.name);
   out += '\n';
-  const std::vector<std::size_t> kf = keep_every_indices(R.frames.size(), static_cast<std::size_t>(q.keep_every));
+  const std::vector<std::size_t> kf = key_frames(R, q.keep_every);  // eval/seam.h: with --loop, the period's
   std::vector<char> key(R.samples, 0);
   for (std::size_t k : kf) key[k * R.per_frame] = 1;
   for (std::size_t m = 0; m < R.samples; ++m) {

@@ -6,6 +6,7 @@
 #include "rotinterp/interp/periodic.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace rotinterp {
 
@@ -26,20 +27,39 @@ Result<CycleFrames> cycle_frames(const Clip& clip, std::optional<LoopForm> form)
   return c;
 }
 
+namespace {
+
+// With a cycle: the key frames inside the period (0, N, 2N, … before t₀ + P), by
+// time — a clip without a frame time has its key times as frames (clip/frames.h),
+// not the cycle's period_frames — and whether the clip has a frame at t₀ + P.
+std::vector<std::size_t> period_keys(const ClipReference& R, std::size_t n, bool& wrap_frame) {
+  const LoopCheck& c = R.cycle->check;
+  const double half_frame = 0.5 * c.period / static_cast<double>(c.period_frames);
+  const double end = R.frames.front() + c.period - half_frame;
+  std::vector<std::size_t> kf;
+  std::size_t k = 0;
+  for (; k < R.frames.size() && R.frames[k] < end; k += n) kf.push_back(k);
+  wrap_frame = std::abs(R.frames.back() - (end + half_frame)) < half_frame;
+  return kf;
+}
+
+}  // namespace
+
+std::vector<std::size_t> key_frames(const ClipReference& R, int keep) {
+  const std::size_t n = static_cast<std::size_t>(std::max(keep, 1));
+  if (!R.cycle) return keep_every_indices(R.frames.size(), n);
+  bool wrap_frame = false;
+  std::vector<std::size_t> kf = period_keys(R, n, wrap_frame);
+  if (wrap_frame && kf.back() != R.frames.size() - 1) kf.push_back(R.frames.size() - 1);
+  return kf;
+}
+
 Result<RebuiltJoint> rebuild_joint(const ClipReference& R, std::size_t j, const std::string& method, int keep) {
   const std::size_t nf = R.frames.size(), n = static_cast<std::size_t>(std::max(keep, 1));
   RebuiltJoint out;
   out.periodic = R.cycle && R.cycle->looped[j];
-  std::vector<std::size_t> kf;
-  if (out.periodic) {
-    // The frames inside the period, by time: a clip without a frame time has its key
-    // times as frames (clip/frames.h), not the cycle's period_frames.
-    const LoopCheck& c = R.cycle->check;
-    const double end = R.frames.front() + c.period - 0.5 * c.period / static_cast<double>(c.period_frames);
-    for (std::size_t k = 0; k < nf && R.frames[k] < end; k += n) kf.push_back(k);
-  } else {
-    kf = keep_every_indices(nf, n);
-  }
+  bool wrap_frame = false;
+  const std::vector<std::size_t> kf = out.periodic ? period_keys(R, n, wrap_frame) : keep_every_indices(nf, n);
   out.keys = decimated_track(R.frames, R.original[j], kf);
   auto curve = out.periodic ? make_periodic_interpolator(method, out.keys, R.cycle->check.period)
                             : make_interpolator(method, out.keys);

@@ -1,6 +1,7 @@
 // eval --loop: the seam of a real cycle, measured on the periodic curves, next to the
 // same figures inside; without the loop the ordinary curves jump there. And the seam
 // columns of errors.csv, clips.csv and summary.json, present with --loop only.
+#include "clip/cycle_clips.h"
 #include "support/run_cli.h"
 
 #include "rotinterp/eval/error_row.h"
@@ -15,6 +16,7 @@
 #include <fstream>
 #include <algorithm>
 #include <string>
+#include <vector>
 
 namespace rotinterp {
 namespace {
@@ -101,6 +103,27 @@ TEST(EvalSeam, WithoutTheLoopTheOrdinaryCurvesJumpAtTheSeam) {
       }
     }
   }
+}
+
+TEST(EvalSeam, KeyFramesWrapAroundThePeriod) {
+  // per_frame.csv's key column: the period's keys, and the closed form's last frame (the wrap key).
+  ClipEvalOptions o = all_methods(true);
+  const char* run = "fbx/digitalrune_Marine_Run.fbx";
+  auto closed = prepare_reference(load(run), run, o);
+  ASSERT_TRUE(closed) << closed.error();
+  std::vector<std::size_t> want;
+  for (std::size_t k = 0; k < 38; k += 4) want.push_back(k);
+  want.push_back(38);
+  EXPECT_EQ(key_frames(*closed, 4), want);
+  o.loop_form = LoopForm::open;
+  auto open = prepare_reference(test::cycle_clip(test::CycleTruth{1.0, Vec3(0.5, 0.0, 0.0)}, 24, LoopForm::open),
+                                "open", o);
+  ASSERT_TRUE(open) << open.error();
+  EXPECT_EQ(key_frames(*open, 5), (std::vector<std::size_t>{0, 5, 10, 15, 20}));  // frame 24 is the next period's 0
+  o.loop = false;
+  auto plain = prepare_reference(load(run), run, o);
+  ASSERT_TRUE(plain);
+  EXPECT_EQ(key_frames(*plain, 8), (std::vector<std::size_t>{0, 8, 16, 24, 32, 38}));
 }
 
 TEST(EvalSeam, AClipThatIsNotACycleFailsUnlessItsFormIsGiven) {

@@ -61,6 +61,11 @@ struct RebuiltJoint {
 Result<RebuiltJoint> rebuild_joint(const ClipReference& reference, std::size_t joint, const std::string& method,
                                    int keep_every);
 
+// The frames where the keys of keep_every N lie (per_frame.csv's `key`): without a
+// cycle every Nth and the last; with one, the period's and the wrap-around frame at
+// t₀ + P where the clip has it (the closed form's last frame).
+std::vector<std::size_t> key_frames(const ClipReference& reference, int keep_every);
+
 struct SeamFigures {
   double angle = 0.0, inner_angle = 0.0;  // rad
   KeyJumps jumps;                         // at the seam: rad/s, rad/s²

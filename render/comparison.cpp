@@ -51,13 +51,15 @@ struct Rebuild {
   bool any_animated = false;
   std::vector<std::vector<std::unique_ptr<Interpolator>>> interpolators;  // [method][joint]
 
-  static Result<Rebuild> build(const Clip& clip, const std::vector<std::string>& methods, std::size_t keep_every) {
+  // `cycle` (render --loop): `clip` is its two periods, keys and curves are its.
+  static Result<Rebuild> build(const Clip& clip, const std::vector<std::string>& methods, std::size_t keep_every,
+                               const CyclePlayedTwice* cycle = nullptr) {
     Rebuild r;
     r.clip = &clip;
     r.dense = dense_clip(clip);
     r.bone_axis = bone_axes(clip.skeleton);
     const std::size_t joints = clip.skeleton.joints.size();
-    r.keys = keep_every_indices(r.frames(), keep_every);
+    r.keys = cycle ? cycle->keys : keep_every_indices(r.frames(), keep_every);
     r.interpolators.resize(methods.size());
     r.animated.resize(joints);
     for (std::size_t j = 0; j < joints; ++j) {
@@ -66,7 +68,7 @@ struct Rebuild {
       const RotationTrack track =
           decimated_track(r.dense.grid.times, r.dense.rotation[j], r.animated[j] ? r.keys : std::vector<std::size_t>{0});
       for (std::size_t m = 0; m < methods.size(); ++m) {
-        auto made = make_interpolator(methods[m], track);
+        auto made = cycle ? cycle->curve(methods[m], j) : make_interpolator(methods[m], track);
         if (!made) return made.failure(methods[m] + ", joint " + clip.skeleton.joints[j].name + ": ");
         r.interpolators[m].push_back(std::move(made).value());
       }
@@ -240,10 +242,18 @@ Result<CameraMode> parse_camera(std::string_view name) {
   return make_error("--camera '" + std::string(name) + "' is not fixed or follow");
 }
 
-Result<std::vector<FrameError>> comparison_errors(const Clip& clip, const std::string& method, std::size_t keep_every) {
+Result<std::vector<FrameError>> comparison_errors(const Clip& clip, const std::string& method, std::size_t keep_every,
+                                                  const std::optional<LoopPlay>& loop) {
   if (Status s = clip.validate(); !s) return s.failure();
   if (!find_method(method)) return make_error(unknown_method_message(method));
-  auto rebuild = Rebuild::build(clip, {method}, std::max<std::size_t>(keep_every, 1));
+  keep_every = std::max<std::size_t>(keep_every, 1);
+  std::optional<CyclePlayedTwice> cycle;
+  if (loop) {
+    auto twice = play_cycle_twice(clip, *loop, keep_every);
+    if (!twice) return twice.failure();
+    cycle = std::move(*twice);
+  }
+  auto rebuild = cycle ? Rebuild::build(cycle->clip, {method}, keep_every, &*cycle) : Rebuild::build(clip, {method}, keep_every);
   if (!rebuild) return rebuild.failure();
   std::vector<FrameError> errors(rebuild->frames());
   std::vector<Quat> local;
@@ -401,7 +411,11 @@ double default_video_fps(const Clip& clip, const Rebuild& rebuild, const std::ve
 
 }  // namespace
 
-Result<ComparisonResult> render_comparison(const Clip& clip, const fs::path& out_dir, const ComparisonOptions& options) {
+namespace {
+
+// render_comparison's work; `cycle`: --loop, `clip` being its two periods.
+Result<ComparisonResult> render_frames(const Clip& clip, const fs::path& out_dir, const ComparisonOptions& options,
+                                       const CyclePlayedTwice* cycle) {
   // ---- validate everything before drawing anything ----
   if (Status s = clip.validate(); !s) return s.failure();
   if (options.methods.empty()) return make_error("no methods to compare");
@@ -456,7 +470,7 @@ Result<ComparisonResult> render_comparison(const Clip& clip, const fs::path& out
     return make_error(probe ? std::string(backend_name(backend)) + " is not available" : probe.error());
   }
 
-  auto built = Rebuild::build(clip, options.methods, options.keep_every);
+  auto built = Rebuild::build(clip, options.methods, options.keep_every, cycle);
   if (!built) return built.failure();
   const Rebuild& rebuild = *built;
   const std::size_t frame_count = rebuild.frames();
@@ -653,6 +667,23 @@ Result<ComparisonResult> render_comparison(const Clip& clip, const fs::path& out
     result.files.push_back(options.video);
   }
   return result;
+}
+
+}  // namespace
+
+Result<ComparisonResult> render_comparison(const Clip& clip, const fs::path& out_dir, const ComparisonOptions& options) {
+  if (!options.loop) return render_frames(clip, out_dir, options, nullptr);
+  if (Status s = clip.validate(); !s) return s.failure();
+  if (options.keep_every < 1) return make_error("--keep-every must be at least 1");
+  auto cycle = play_cycle_twice(clip, *options.loop, options.keep_every);
+  if (!cycle) return cycle.failure();
+  ComparisonOptions twice = options;
+  if (!twice.frames && twice.video.empty()) {  // the seam, one key interval either side, at most 8 frames
+    const std::size_t n = cycle->period_frames, k = options.keep_every;
+    const std::size_t first = n > k ? n - k : 0, last = std::min(n + k, frame_grid(cycle->clip).size() - 1);
+    twice.frames = FrameRange{first, last, std::max<std::size_t>(1, (last - first + 6) / 7)};
+  }
+  return render_frames(cycle->clip, out_dir, twice, &*cycle);
 }
 
 }  // namespace rotinterp::render

@@ -49,6 +49,7 @@ struct EvalArgs {
   std::string floor, unit;
   std::string per_frame;
   std::string table = "text";
+  std::string loop = "off";  // --loop as written
 };
 
 // --per-frame CLIP,METHOD,N (the clip id may itself hold commas: the last two fields are split off).
@@ -149,6 +150,12 @@ int run(const EvalArgs& a) {
       if (!q) return fail_usage(q.error());
       o.per_frame = *q;
     }
+    auto loop = parse_loop_option(a.loop);
+    if (!loop) return fail_usage(loop.error());
+    if (*loop) {
+      o.clip.loop = true;
+      o.clip.loop_form = (*loop)->form;
+    }
     if (a.truth) o.truth_for = synth_truth;
     keep_freed_memory_for_reuse();
     o.progress = make_progress("eval", quiet);
@@ -240,6 +247,11 @@ void add_eval_command(CLI::App& app, int& exit_code) {
                   "(CLIP as in errors.csv); default none");
   sub->add_option("--table", args->table, "The results table on stdout: text, md (Markdown) or latex")
       ->capture_default_str();
+  add_loop_option(*sub, args->loop,
+                  "Each clip is one period: its keys wrap around (every Nth frame inside the period, then frame 0 one "
+                  "period later), each method is rebuilt on its periodic curve, and errors.csv, clips.csv and "
+                  "summary.json add the seam's angle error, velocity and acceleration jump next to the same inside "
+                  "(absent without --loop); a clip that is not a cycle fails.");
   sub->add_flag("--no-plots", args->no_plots, "Skip the plots (default: PNG and SVG plots in -o DIR)");
   add_quiet_option(*sub, args->quiet);
   sub->callback([args, &exit_code] { exit_code = run(*args); });

@@ -100,6 +100,7 @@ struct RenderArgs {
   std::string video;
   std::optional<double> video_fps;  // unset: the clip's rate over the frame step
   bool quiet = false;
+  std::string loop = "off";  // --loop as written
 };
 
 int run_render(const RenderArgs& a) {
@@ -170,6 +171,9 @@ int run_render(const RenderArgs& a) {
   }
   if (!a.out_dir.empty())
     if (Status s = check_output_directory(a.out_dir); !s) return fail_usage(s.error());
+  auto loop = parse_loop_option(a.loop);
+  if (!loop) return fail_usage(loop.error());
+  if (*loop) options.loop = render::LoopPlay{(*loop)->form};
 
   protect_input(a.input);  // no frame written may replace it
   ReadOptions read_options;
@@ -185,7 +189,7 @@ int run_render(const RenderArgs& a) {
                      clip->skeleton.joints.size(),
                      render::draws_axes(options.axes, *clip) ? "each joint's axes there (--axes)"
                                                              : "only the grid (--axes on draws each joint's axes)"));
-  if (options.frames) warn_if_only_keys(*clip, options);
+  if (options.frames && !options.loop) warn_if_only_keys(*clip, options);
   options.progress = make_progress("render", a.quiet);
   auto result = render::render_comparison(*clip, a.out_dir, options);
   end_progress(a.quiet);
@@ -249,6 +253,11 @@ void add_render_command(CLI::App& app, int& exit_code) {
                   "default frames: every frame of the clip");
   sub->add_option("--video-fps", args->video_fps,
                   "Video frame rate, (0, 1000] (default: the clip's rate over the frame step)");
+  add_loop_option(*sub, args->loop,
+                  "The cycle is played twice, time running on and the root moved on by its per-cycle offset, so the "
+                  "seam is seen; each method is rebuilt on its periodic curve; --frames counts over both periods, and "
+                  "without it (and without --video) the frames drawn run from one key interval before the seam to "
+                  "one after.");
   sub->add_option("--backend", args->backend, "OpenGL context: osmesa or egl (default: osmesa where present)")
       ->check(CLI::IsMember({"osmesa", "egl"}));
   add_quiet_option(*sub, args->quiet);

@@ -168,18 +168,28 @@ KeyJumps key_jumps(const Interpolator& curve, const std::vector<double>& key_tim
     } else {
       std::copy(got, got + 5, p);
     }
-    Vec3 w[4];
-    for (int i = 0; i < 4; ++i) w[i] = log(p[i + 1] * p[i].conjugate()).vec() / h;  // unit samples
-    // w[i] is the mean velocity over [tᵢ, tᵢ₊₁]: the velocity at its midpoint to O(h²).
-    const Vec3 a_minus = (w[1] - w[0]) / h;
-    const Vec3 a_plus = (w[3] - w[2]) / h;
-    const Vec3 w_minus = w[1] + 0.5 * h * a_minus;  // extrapolated from t − h/2 to t
-    const Vec3 w_plus = w[2] - 0.5 * h * a_plus;    // from t + h/2 back to t
-    const double dv = (w_plus - w_minus).norm();
-    const double da = (a_plus - a_minus).norm();
-    if (std::isfinite(dv)) out.velocity = std::max(out.velocity, dv);
-    if (std::isfinite(da)) out.acceleration = std::max(out.acceleration, da);
+    const KeyJumps at = one_sided_jumps(p, p + 2, h);
+    out.velocity = std::max(out.velocity, at.velocity);
+    out.acceleration = std::max(out.acceleration, at.acceleration);
   }
+  return out;
+}
+
+KeyJumps one_sided_jumps(const Quat before[3], const Quat after[3], double h) {
+  KeyJumps out;
+  if (!(h > 0.0)) return out;
+  Vec3 w[4];  // unit samples
+  for (int i = 0; i < 2; ++i) w[i] = log(before[i + 1] * before[i].conjugate()).vec() / h;
+  for (int i = 0; i < 2; ++i) w[i + 2] = log(after[i + 1] * after[i].conjugate()).vec() / h;
+  // w[i] is the mean velocity over its step: the velocity at the step's midpoint to O(h²).
+  const Vec3 a_minus = (w[1] - w[0]) / h;
+  const Vec3 a_plus = (w[3] - w[2]) / h;
+  const Vec3 w_minus = w[1] + 0.5 * h * a_minus;  // extrapolated from t − h/2 to t
+  const Vec3 w_plus = w[2] - 0.5 * h * a_plus;    // from t + h/2 back to t
+  const double dv = (w_plus - w_minus).norm();
+  const double da = (a_plus - a_minus).norm();
+  if (std::isfinite(dv)) out.velocity = dv;
+  if (std::isfinite(da)) out.acceleration = da;
   return out;
 }
 

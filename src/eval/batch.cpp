@@ -43,22 +43,24 @@ RunOptions run_options(const EvalOptions& e) {
   return {o.methods,          o.keep_every,           o.subframe,
           o.shell_distance_m, static_cast<bool>(e.truth_for), e.animation,
           o.min_frames,       o.feet.feet,            o.feet.contact_height_m,
-          o.feet.contact_speed_mps, o.feet.floor_m, e.unit};
+          o.feet.contact_speed_mps, o.feet.floor_m, e.unit,
+          o.loop ? (o.loop_form ? loop_form_name(*o.loop_form) : "auto") : "off"};
 }
 
 // errors.csv into an unnamed temporary, one clip's rows at a time; committed with
 // the other outputs by write_outputs.
 class CsvWriter {
  public:
-  explicit CsvWriter(const fs::path& target) : out_(target, TempKind::unnamed) {
-    const std::string header = error_csv_header() + '\n';
+  // `seam`: the seam columns of eval --loop.
+  CsvWriter(const fs::path& target, bool seam) : out_(target, TempKind::unnamed), seam_(seam) {
+    const std::string header = error_csv_header(seam) + '\n';
     (void)out_.write(header.data(), header.size());
   }
   bool good() const { return out_.status().ok(); }
   // Writes the rows of one clip and adds them to the summary.
   void add_clip(const std::vector<ErrorRow>& rows, SummaryBuilder& summary) {
     std::string text;
-    for (const ErrorRow& r : rows) text += format_error_row(r) + '\n';
+    for (const ErrorRow& r : rows) text += format_error_row(r, seam_) + '\n';
     (void)out_.write(text.data(), text.size());
     summary.add_clip(rows);
   }
@@ -67,6 +69,7 @@ class CsvWriter {
 
  private:
   AtomicOutput out_;
+  bool seam_;
 };
 
 // Writes summary.json (the run record and the results) and the plots, then commits them with
@@ -198,7 +201,7 @@ std::string per_frame_csv(const ClipReference& R, const PerFrameRequest& q, cons
   std::string out = "sample,time_s,key";
   for (const Joint& j : R.skeleton.joints) out += "," + csv_field(j.name);
   out += '\n';
-  const std::vector<std::size_t> kf = keep_every_indices(R.frames.size(), static_cast<std::size_t>(q.keep_every));
+  const std::vector<std::size_t> kf = key_frames(R, q.keep_every);  // eval/seam.h: with --loop, the period's
   std::vector<char> key(R.samples, 0);
   for (std::size_t k : kf) key[k * R.per_frame] = 1;
   for (std::size_t m = 0; m < R.samples; ++m) {
@@ -343,7 +346,7 @@ Result<EvalReport> run_eval(const EvalOptions& opt) {
 
   EvalReport report;
   report.files = files.size();
-  CsvWriter csv(opt.output_dir / kErrorsCsvName);
+  CsvWriter csv(opt.output_dir / kErrorsCsvName, opt.clip.loop);
   if (!csv.good()) return make_error(csv.failure());
   SummaryBuilder builder;
   const std::size_t jobs = worker_count(opt.jobs);
@@ -370,6 +373,7 @@ Result<EvalReport> run_eval(const EvalOptions& opt) {
                       "the file's path as found, file#take for a take of a file of several)");
 
   report.summary = builder.finish();
+  report.summary.seam = opt.clip.loop;
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   RunRecord record;
   record.version = ROTINTERP_VERSION;
@@ -408,6 +412,7 @@ class ShardReader {
     return r;
   }
   bool at_end() const { return !lookahead_; }
+  bool has_seam_columns() const { return parser_->has_seam_columns(); }
   const std::string& clip() const { return lookahead_->clip; }
   // The rows of the next clip.
   Result<std::vector<ErrorRow>> next_clip() {
@@ -483,7 +488,12 @@ Result<EvalReport> merge_eval(const std::vector<fs::path>& dirs, const fs::path&
   if (Status s = make_dir(out_dir); !s) return s.failure();
   auto lock = DirectoryLock::acquire(out_dir);
   if (!lock) return lock.failure();
-  CsvWriter csv(out_dir / kErrorsCsvName);
+  const bool seam = merged.options.loop != "off";
+  for (const auto& r : readers)
+    if (r->has_seam_columns() != seam)
+      return make_error(std::string("a shard's errors.csv ") + (seam ? "lacks" : "has") +
+                        " the seam columns (seam_angle_deg … looped) its summary.json's loop option says");
+  CsvWriter csv(out_dir / kErrorsCsvName, seam);
   if (!csv.good()) return make_error(csv.failure());
   SummaryBuilder builder;
   std::string last_clip;
@@ -501,6 +511,7 @@ Result<EvalReport> merge_eval(const std::vector<fs::path>& dirs, const fs::path&
     ++report.clips_evaluated;
   }
   report.summary = builder.finish();
+  report.summary.seam = seam;
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (merged.version.empty()) merged.version = ROTINTERP_VERSION;
   merged.files = report.files;

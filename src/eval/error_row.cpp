@@ -2,7 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <iterator>
 #include <cmath>
 #include <cstdlib>
 
@@ -54,6 +56,17 @@ constexpr Measured kMeasured[] = {
     {kContactFramesRef, &ErrorRow::contact_frames_ref}, {kSkateFramesRef, &ErrorRow::skate_frames_ref},
     {kSkateSpeedRef, &ErrorRow::skate_speed_ref}, {kMetresPerUnit, &ErrorRow::metres_per_unit}};
 
+// eval --loop's columns, after `unit`: written and read only when the run had --loop.
+struct SeamColumn {
+  const char* name;
+  double ErrorRow::*field;
+};
+constexpr SeamColumn kSeamColumns[] = {{"seam_angle_deg", &ErrorRow::seam_angle_deg},
+                                       {"inner_angle_deg", &ErrorRow::inner_angle_deg},
+                                       {"seam_vel_jump_dps", &ErrorRow::seam_vel_jump},
+                                       {"seam_acc_jump_dps2", &ErrorRow::seam_acc_jump},
+                                       {"looped", &ErrorRow::looped}};
+
 // Shortest text that reads back as the same double; finite by construction.
 std::string number(double v) { return fmt::format("{}", std::isfinite(v) ? v : 0.0); }
 
@@ -79,13 +92,15 @@ const std::vector<ErrorValueColumn>& error_value_columns() {
   return columns;
 }
 
-std::string error_csv_header() {
+std::string error_csv_header(bool seam_columns) {
   std::string h;
   for (int c = 0; c < kColumnCount; ++c) h += (c ? "," : "") + std::string(kColumnNames[c]);
+  if (seam_columns)
+    for (const SeamColumn& c : kSeamColumns) h += "," + std::string(c.name);
   return h;
 }
 
-std::string format_error_row(const ErrorRow& r) {
+std::string format_error_row(const ErrorRow& r, bool seam_columns) {
   double values[kColumnCount] = {};
   for (const Measured& m : kMeasured) values[m.col] = r.*m.field;
   std::string line = csv_field(r.clip) + "," + csv_field(r.method) + "," + std::to_string(r.keep_every) + "," +
@@ -99,7 +114,10 @@ std::string format_error_row(const ErrorRow& r) {
     line += ',';
     if (!is_empty_for(r, c)) line += number(values[c]);
   }
-  return line + "," + csv_field(r.unit);
+  line += "," + csv_field(r.unit);
+  if (seam_columns)
+    for (const SeamColumn& c : kSeamColumns) line += "," + (r.seam && !r.end_site ? number(r.*c.field) : "");
+  return line;
 }
 
 std::string csv_field(std::string_view s) {
@@ -150,6 +168,12 @@ Result<ErrorRowParser> ErrorRowParser::from_header(std::string_view header) {
       if ((*fields)[i] == kColumnNames[c]) p.column_[c] = static_cast<int>(i);
   for (int c = 0; c < kColumnCount; ++c)
     if (p.column_[c] < 0) return make_error(std::string("header has no column '") + kColumnNames[c] + "'");
+  for (const SeamColumn& c : kSeamColumns) {
+    const auto at = std::find(fields->begin(), fields->end(), c.name);
+    if (at != fields->end()) p.seam_column_.push_back(static_cast<int>(at - fields->begin()));
+  }
+  if (!p.seam_column_.empty() && p.seam_column_.size() != std::size(kSeamColumns))
+    return make_error("header has some of the seam columns (seam_angle_deg … looped), not all");
   return p;
 }
 
@@ -176,6 +200,14 @@ Result<ErrorRow> ErrorRowParser::parse(std::string_view line) const {
     auto v = to_double(field(m.col), kColumnNames[m.col]);
     if (!v) return v.failure();
     r.*m.field = *v;
+  }
+  r.seam = !r.end_site && !seam_column_.empty() && seam_column_[0] < static_cast<int>(fields->size()) &&
+           !(*fields)[static_cast<std::size_t>(seam_column_[0])].empty();
+  for (std::size_t i = 0; r.seam && i < seam_column_.size(); ++i) {
+    const auto at = static_cast<std::size_t>(seam_column_[i]);
+    auto v = to_double(at < fields->size() ? (*fields)[at] : std::string(), kSeamColumns[i].name);
+    if (!v) return v.failure();
+    r.*kSeamColumns[i].field = *v;
   }
   for (int c : {kKeepEvery, kFrames, kSamples}) {
     auto v = to_double(field(c), kColumnNames[c]);

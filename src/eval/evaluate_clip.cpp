@@ -205,6 +205,11 @@ Result<ClipReference> prepare_reference(const Clip& clip, const std::string& cli
   if (options.subframe < 0 || options.subframe > 1000)
     return make_error(clip_id + ": subframe must be between 0 and 1000");
   ClipReference R;
+  if (options.loop) {
+    auto cycle = cycle_frames(clip, options.loop_form);
+    if (!cycle) return cycle.failure(clip_id + ": ");
+    R.cycle = std::move(*cycle);
+  }
   R.clip_id = clip_id;
   R.skeleton = clip.skeleton;
   const Skeleton& skel = R.skeleton;
@@ -342,14 +347,14 @@ Result<std::vector<ErrorRow>> evaluate_method(const ClipReference& R, const std:
   for (int keep : options.keep_every) {
     if (std::find(skipped.begin(), skipped.end(), keep) != skipped.end()) continue;
     const std::vector<std::size_t> kf = keep_every_indices(nf, static_cast<std::size_t>(keep));
-    std::vector<RotationTrack> tracks(nj);
-    std::vector<std::unique_ptr<Interpolator>> curves(nj);
+    std::vector<RebuiltJoint> rebuilt(nj);  // eval/seam.h: periodic curves with --loop
+    std::vector<const Interpolator*> curves(nj);
     for (std::size_t j = 0; j < nj; ++j) {
-      tracks[j] = decimated_track(R.frames, R.original[j], kf);
-      auto curve = make_interpolator(method, tracks[j]);
-      if (!curve)
-        return curve.failure(R.clip_id + ": joint '" + skel.joints[j].name + "', method " + method + ": ");
-      curves[j] = std::move(*curve);
+      auto joint = rebuild_joint(R, j, method, keep);
+      if (!joint)
+        return joint.failure(R.clip_id + ": joint '" + skel.joints[j].name + "', method " + method + ": ");
+      rebuilt[j] = std::move(*joint);
+      curves[j] = rebuilt[j].curve.get();
     }
     std::vector<std::vector<Quat>> at_keys(nj, std::vector<Quat>(kf.size()));
     std::vector<SmoothnessSum> smooth(nj);
@@ -434,7 +439,8 @@ Result<std::vector<ErrorRow>> evaluate_method(const ClipReference& R, const std:
       a.p95 = frac == 0.0 || lo + 1 >= a.count ? v0 : v0 + frac * (v1 - v0);
     }
     for (std::size_t j = 0; j < nj; ++j) {
-      const KeyJumps jumps = key_jumps(*curves[j], tracks[j].times, at_keys[j].data());
+      // With --loop the keys are the period's, not kf: the curve at them is computed again.
+      const KeyJumps jumps = key_jumps(*curves[j], rebuilt[j].jump_times, R.cycle ? nullptr : at_keys[j].data());
       const RotationError& e = err[j];
       ErrorRow r;
       r.clip = R.clip_id;
@@ -464,6 +470,7 @@ Result<std::vector<ErrorRow>> evaluate_method(const ClipReference& R, const std:
       r.unit = R.unit;
       r.keys = R.keys[j];
       r.motion_deg = R.motion_deg[j];
+      if (R.cycle) fill_seam_columns(r, R, j, rebuilt[j]);
       rows.push_back(std::move(r));
     }
     ErrorRow* const joint_rows = rows.data() + rows.size() - nj;
@@ -503,8 +510,7 @@ Result<std::vector<ErrorRow>> evaluate_method(const ClipReference& R, const std:
 }
 
 Result<PerFrameErrors> per_frame_errors(const ClipReference& R, const std::string& method, int keep) {
-  const std::size_t nj = R.skeleton.joints.size(), nf = R.frames.size(), ns = R.samples;
-  const std::vector<std::size_t> kf = keep_every_indices(nf, static_cast<std::size_t>(std::max(keep, 1)));
+  const std::size_t nj = R.skeleton.joints.size(), ns = R.samples;
   PerFrameErrors out;
   out.angle.assign(nj, std::vector<double>(ns));
   out.times.resize(ns);
@@ -512,7 +518,7 @@ Result<PerFrameErrors> per_frame_errors(const ClipReference& R, const std::strin
   std::vector<Quat> test;
   Block block;
   for (std::size_t j = 0; j < nj; ++j) {
-    auto curve = make_interpolator(method, decimated_track(R.frames, R.original[j], kf));
+    auto curve = rebuild_joint(R, j, method, keep);
     if (!curve)
       return curve.failure(R.clip_id + ": joint '" + R.skeleton.joints[j].name + "', method " + method + ": ");
     const std::size_t bs = block_samples(R);
@@ -520,7 +526,7 @@ Result<PerFrameErrors> per_frame_errors(const ClipReference& R, const std::strin
       const std::size_t n = std::min(bs, ns - m0);
       block.fill(R, m0, n, false, j);
       test.resize(n);
-      (*curve)->evaluate(block.times().data(), n, test.data());
+      curve->curve->evaluate(block.times().data(), n, test.data());
       const Quat* ref = block.rotation(R, j);
       for (std::size_t m = 0; m < n; ++m) out.angle[j][m0 + m] = angular_distance(ref[m], test[m]) * kRadToDeg;
     }

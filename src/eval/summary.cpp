@@ -1,6 +1,7 @@
 #include "rotinterp/eval/summary.h"
 
 #include "rotinterp/clip/metrics.h"
+#include "seam_summary.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -71,6 +72,7 @@ std::vector<ClipResult> clip_results_of(const std::vector<ErrorRow>& rows) {
     a.p95.push_back(r.p95_deg);
     if (c.max_joint.empty() || r.max_deg > c.max_deg) c.max_deg = r.max_deg, c.max_joint = r.joint;
     if (r.foot) c.skating.add(r);
+    if (r.seam) c.seam.add(r);
   }
   for (std::size_t i = 0; i < out.size(); ++i) {
     ClipResult& c = out[i];
@@ -147,6 +149,7 @@ void SummaryBuilder::add_clip(const std::vector<ErrorRow>& rows) {
     a.clip_p95.push_back(c.p95_deg);
     a.clip_max.push_back(c.max_deg);
     a.entry.skating.add(c.skating);
+    a.entry.seam.add(c.seam);
     clip_results_.push_back(std::move(c));
   }
   const double score = score_w > 0 ? std::sqrt(score_sq / score_w) : 0.0;
@@ -286,7 +289,8 @@ std::string clips_csv(const Summary& s) {
   std::string out =
       "clip,method,keep_every,frames,joints,keys,motion_deg,samples,mean_deg,rms_deg,p95_deg,max_deg,max_joint,"
       "pos_rms_pct,pos_max_pct,shell_rms_pct,shell_max_pct,feet,contact_frames,skate_ratio,skate_speed_mps,"
-      "contact_frames_ref,skate_ratio_ref,skate_speed_ref_mps,extra_skate_ratio,extra_skate_speed_mps\n";
+      "contact_frames_ref,skate_ratio_ref,skate_speed_ref_mps,extra_skate_ratio,extra_skate_speed_mps";
+  out += s.seam ? "," + seam_csv_header() + "\n" : "\n";
   const auto q = csv_field;
   for (const ClipResult& c : s.clip_results) {
     out += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}", q(c.clip), q(c.method), c.keep_every,
@@ -295,10 +299,11 @@ std::string clips_csv(const Summary& s) {
                        c.skating.feet);
     const FootSkating& f = c.skating;
     if (f.feet)
-      out += fmt::format(",{},{},{},{},{},{},{},{}\n", f.contact, f.ratio(), f.speed(), f.contact_ref, f.ratio_ref(),
+      out += fmt::format(",{},{},{},{},{},{},{},{}", f.contact, f.ratio(), f.speed(), f.contact_ref, f.ratio_ref(),
                          f.speed_ref(), f.ratio() - f.ratio_ref(), f.speed() - f.speed_ref());
     else
-      out += ",,,,,,,,\n";
+      out += ",,,,,,,,";
+    out += s.seam ? "," + seam_csv_fields(c.seam) + "\n" : "\n";
   }
   return out;
 }
@@ -320,8 +325,8 @@ json skating_json(const FootSkating& f) {
           {"extra_skate_speed_mps", f.speed() - f.speed_ref()}};
 }
 
-json entry_json(const SummaryEntry& e) {
-  return {{"method", e.method},
+json entry_json(const SummaryEntry& e, bool seam) {
+  json j = {{"method", e.method},
           {"keep_every", e.keep_every},
           {"clips", e.clips},
           {"joints", e.joints},
@@ -345,6 +350,8 @@ json entry_json(const SummaryEntry& e) {
           {"acc_jump_max_dps2", e.acc_jump_max},
           {"foot_skating", skating_json(e.skating)},
           {"worst", {{"clip", e.worst_clip}, {"joint", e.worst_joint}}}};
+  if (seam) j["seam"] = seam_json(e.seam);
+  return j;
 }
 
 // The "clips" section: one object per clip, its results per method × keep_every.
@@ -372,6 +379,7 @@ json clips_json(const Summary& s) {
                                        {"shell_rms_pct", c.shell_rms_pct},
                                        {"shell_max_pct", c.shell_max_pct},
                                        {"foot_skating", skating_json(c.skating)}});
+    if (s.seam) clips.back()["results"].back()["seam"] = seam_json(c.seam);
   }
   return clips;
 }
@@ -399,7 +407,8 @@ std::string summary_json(const RunRecord& r, const Summary& summary) {
               {"contact_height_m", r.options.contact_height_m},
               {"contact_speed_mps", r.options.contact_speed_mps},
               {"floor_m", r.options.floor_m ? json(*r.options.floor_m) : json(nullptr)},
-              {"unit_metres_per_unit", r.options.unit ? json(*r.options.unit) : json(nullptr)}}},
+              {"unit_metres_per_unit", r.options.unit ? json(*r.options.unit) : json(nullptr)},
+              {"loop", r.options.loop}}},
             {"started", r.started},
             {"seconds", r.seconds},
             {"failed", failed},
@@ -413,7 +422,7 @@ std::string summary_json(const RunRecord& r, const Summary& summary) {
     j["merge_seconds"] = r.merge_seconds;
   }
   json results = json::array();
-  for (const SummaryEntry& e : summary.entries) results.push_back(entry_json(e));
+  for (const SummaryEntry& e : summary.entries) results.push_back(entry_json(e, summary.seam));
   j["clips_evaluated"] = summary.clips;
   j["results"] = std::move(results);
   j["worst_clip"] = {{"clip", summary.worst_clip}, {"keep_every", summary.worst_keep_every}};
@@ -453,6 +462,7 @@ Result<RunRecord> read_summary_json(const std::filesystem::path& file) {
     r.options.shell_distance_m = o.at("shell_distance_m").get<double>();
     r.options.truth = o.at("truth").get<bool>();
     r.options.animation = o.value("anim", "");
+    r.options.loop = o.value("loop", "off");
     r.options.min_frames = o.value("min_frames", std::size_t{0});
     r.options.feet = o.value("feet", std::vector<std::string>{});
     r.options.contact_height_m = o.value("contact_height_m", 0.0);

@@ -147,4 +147,9 @@ constexpr double kKeyJumpStep = 1e-3;
 // the curve there already): the stencils then skip their centres.
 KeyJumps key_jumps(const Interpolator& curve, const std::vector<double>& key_times, const Quat* at_keys = nullptr);
 
+// The jumps between two one-sided stencils of step h > 0: `before` at t − 2h, t − h, t
+// and `after` at t', t' + h, t' + 2h (t' = t at a key; at a cycle's seam t is the
+// end of one period and t' the start of the next, eval/seam.h). key_jumps' rule.
+KeyJumps one_sided_jumps(const Quat before[3], const Quat after[3], double h);
+
 }  // namespace rotinterp

@@ -45,6 +45,12 @@ struct ErrorRow {
   // The clip's unit (clip/units.h): metres per unit, and its name and reason.
   double metres_per_unit = 1;
   std::string unit;
+  // eval --loop (eval/seam.h; joint rows, `seam` true): the largest angle error at the
+  // frames of the two key intervals meeting at the seam and at the other frames (degrees),
+  // the velocity (deg/s) and acceleration (deg/s²) jump at the seam, and whether the
+  // joint was rebuilt on its periodic curve (1) or misses closure and kept its ends (0).
+  bool seam = false;
+  double seam_angle_deg = 0, inner_angle_deg = 0, seam_vel_jump = 0, seam_acc_jump = 0, looped = 0;
 };
 
 // A measured (floating-point) column of errors.csv: its name, the ErrorRow field
@@ -59,21 +65,26 @@ struct ErrorValueColumn {
 // mean_deg … acc_jump_max_dps2, height_m, keys … skate_speed_ref_mps, metres_per_unit, in file order.
 const std::vector<ErrorValueColumn>& error_value_columns();
 
-// The CSV header line (no newline): clip,method,keep_every,joint,frames,mean_deg,…
-std::string error_csv_header();
+// The CSV header line (no newline): clip,method,keep_every,joint,frames,mean_deg,…,
+// with `seam_columns` (eval --loop) then seam_angle_deg … looped.
+std::string error_csv_header(bool seam_columns = false);
 // One CSV line (no newline). Text fields are quoted when they hold a comma, quote or
-// line break; End Site rows leave the joint-only columns empty.
-std::string format_error_row(const ErrorRow& row);
+// line break; End Site rows leave the joint-only columns empty, and the seam columns
+// (written with `seam_columns` only) are empty where the row has none.
+std::string format_error_row(const ErrorRow& row, bool seam_columns = false);
 
 // Reads CSV lines back. Construct from the header line; columns are found by name.
 class ErrorRowParser {
  public:
+  // The seam columns are read when the header has them (an eval --loop run).
   static Result<ErrorRowParser> from_header(std::string_view header);
+  bool has_seam_columns() const { return !seam_column_.empty(); }
   // `line` is one data line; the error names the problem (the caller adds file:line).
   Result<ErrorRow> parse(std::string_view line) const;
 
  private:
-  std::vector<int> column_;  // field index per known column, −1 when absent
+  std::vector<int> column_;       // field index per known column, −1 when absent
+  std::vector<int> seam_column_;  // field index per seam column; empty when the file has none
 };
 
 // A text field as CSV writes it: quoted (quotes doubled) when it holds a comma, quote

@@ -13,6 +13,7 @@
 #include "rotinterp/core/result.h"
 #include "rotinterp/eval/error_row.h"
 #include "rotinterp/eval/foot_skating.h"
+#include "rotinterp/eval/seam.h"
 
 #include <functional>
 #include <optional>
@@ -33,6 +34,10 @@ struct ClipEvalOptions {
   TruthFn truth;                     // optional reference instead of the clip's frames
   std::size_t min_frames = 0;        // clips with fewer frames are skipped (see skipped_spacings)
   FootContactOptions feet;           // foot joints, contact thresholds, floor
+  // eval --loop (eval/seam.h): the clip is one period of a cycle, in loop_form or the
+  // form detected; the rows carry the seam columns.
+  bool loop = false;
+  std::optional<LoopForm> loop_form;
 };
 
 // The spacings of options.keep_every a clip of `frames` frames is not evaluated at:
@@ -72,6 +77,7 @@ struct ClipReference {
   double floor = 0.0, metres_per_unit = 1.0;
   std::string unit;
   std::vector<FootContact> foot_ref;
+  std::optional<CycleFrames> cycle;  // with options.loop (eval/seam.h)
 };
 
 // Time of sample m < reference.samples: frame k = m / per_frame, then the fraction

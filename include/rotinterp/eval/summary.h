@@ -34,6 +34,18 @@ struct FootSkating {
   double speed_ref() const { return contact_ref > 0 ? speed_sum_ref / contact_ref : 0.0; }
 };
 
+// eval --loop (eval/seam.h): the seam against the inside, over the joint rows rebuilt
+// on their periodic curves (looped); the rows of joints that miss closure are counted
+// apart (their pop is in errors.csv). Largest values; degrees, deg/s, deg/s².
+struct SeamSummary {
+  double angle_deg = 0, inner_angle_deg = 0;
+  double vel_jump = 0, inner_vel_jump = 0;
+  double acc_jump = 0, inner_acc_jump = 0;
+  std::size_t looped = 0, not_looped = 0;  // joint rows
+  void add(const ErrorRow& joint_row);     // a row with seam columns
+  void add(const SeamSummary& other);
+};
+
 // One clip × method × keep_every: the aggregates of its rows (clips.csv, and the
 // "clips" section of summary.json). Angles in degrees, "_pct" in % of its height.
 struct ClipResult {
@@ -50,6 +62,7 @@ struct ClipResult {
   std::string max_joint;           // where max_deg occurs
   double pos_rms_pct = 0, pos_max_pct = 0, shell_rms_pct = 0, shell_max_pct = 0;
   FootSkating skating;
+  SeamSummary seam;  // with --loop (Summary::seam)
 };
 
 // One method × keep_every. Angles in degrees; "_pct" in % of each clip's skeleton
@@ -74,6 +87,7 @@ struct SummaryEntry {
   // (ClipResult), beside the sample-weighted values above.
   double clip_rms_median_deg = 0, clip_p95_median_deg = 0, clip_max_median_deg = 0;
   FootSkating skating;                          // summed over the clips with feet
+  SeamSummary seam;                             // over the clips, with --loop
 };
 
 struct Summary {
@@ -85,6 +99,7 @@ struct Summary {
   std::string worst_clip;
   int worst_keep_every = 0;
   std::vector<ErrorRow> worst_clip_rows;
+  bool seam = false;  // the rows carry seam columns (eval --loop): clips.csv and summary.json report them
 };
 
 // Feed the rows of one clip at a time, in file order; then finish().
@@ -148,8 +163,9 @@ struct RunOptions {
   double contact_height_m = 0, contact_speed_mps = 0;
   std::optional<double> floor_m;
   std::optional<double> unit;       // --unit, metres per unit of files that state none
+  std::string loop = "off";         // --loop: off, auto, closed or open
   friend bool operator==(const RunOptions& a, const RunOptions& b) {
-    return a.methods == b.methods && a.keep_every == b.keep_every && a.subframe == b.subframe &&
+    return a.methods == b.methods && a.keep_every == b.keep_every && a.subframe == b.subframe && a.loop == b.loop &&
            a.shell_distance_m == b.shell_distance_m && a.truth == b.truth && a.animation == b.animation &&
            a.min_frames == b.min_frames && a.feet == b.feet && a.contact_height_m == b.contact_height_m &&
            a.contact_speed_mps == b.contact_speed_mps && a.floor_m == b.floor_m && a.unit == b.unit;

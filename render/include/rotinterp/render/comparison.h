@@ -16,6 +16,7 @@
 #include "rotinterp/core/result.h"
 #include "rotinterp/render/axes.h"
 #include "rotinterp/render/context.h"
+#include "rotinterp/render/loop_play.h"
 #include "rotinterp/render/renderer.h"
 
 #include <cstddef>
@@ -72,6 +73,10 @@ struct ComparisonOptions {
   bool pngs = true;                   // write frame_NNNNNN.png (and sheet.png) into the output directory
   std::filesystem::path video;        // non-empty: also encode the frames into this .mp4 or .gif
   double video_fps = 0.0;             // frames per second of the video; 0: the clip's rate / frame step
+  // --loop (render/loop_play.h): the cycle played twice, each method on its periodic
+  // curve; frames are numbered over both periods, and unset `frames` (without a
+  // video) are those from one key interval before the seam to one after it.
+  std::optional<LoopPlay> loop;
   std::optional<Backend> backend;     // unset: default_backend()
   ProgressFn progress;                // (images done, images in all), from worker threads
 };
@@ -93,7 +98,9 @@ struct FrameError {
 
 // `method`'s error at every frame of the clip (clip/frames.h, the frames eval
 // measures) when rebuilt from every keep_every-th frame.
-Result<std::vector<FrameError>> comparison_errors(const Clip& clip, const std::string& method, std::size_t keep_every);
+// With `loop`, at every frame of the cycle played twice (render/loop_play.h).
+Result<std::vector<FrameError>> comparison_errors(const Clip& clip, const std::string& method, std::size_t keep_every,
+                                                  const std::optional<LoopPlay>& loop = std::nullopt);
 
 // The frames the options select in `clip` (checked against its frame count).
 Result<std::vector<std::size_t>> comparison_frames(const Clip& clip, const ComparisonOptions& options);

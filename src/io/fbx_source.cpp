@@ -73,8 +73,8 @@ Result<SourceClip> read_source_clip(const std::filesystem::path& path, const Rea
   return out;
 }
 
-Result<std::size_t> replay_fbx_rotations(Clip& clip, const SourceClip& source, const std::vector<std::string>& keep,
-                                         const std::string& label) {
+Result<std::vector<FbxJointCurves>> fbx_joint_curves(const Clip& clip, const SourceClip& source,
+                                                     const std::vector<std::string>& keep, const std::string& label) {
   const FbxTake& take = source.curves.takes.at(source.take);
   std::map<std::string, NodeCurves> by_node;
   for (const FbxCurve& c : take.curves) {
@@ -87,10 +87,9 @@ Result<std::size_t> replay_fbx_rotations(Clip& clip, const SourceClip& source, c
   std::map<std::string, const FbxModel*> models;
   for (const FbxModel& m : source.curves.models) models.emplace(m.name, &m);
 
-  const double ticks_per_second = static_cast<double>(kFbxTicksPerSecond);
-  const double start = static_cast<double>(take.start);
-  std::size_t replayed = 0;
-  for (std::size_t j = 0; j < clip.skeleton.joints.size(); ++j) {
+  std::vector<FbxJointCurves> out(clip.skeleton.joints.size());
+  std::size_t found = 0;
+  for (std::size_t j = 0; j < out.size(); ++j) {
     const std::string& name = clip.skeleton.joints[j].name;
     if (std::find(keep.begin(), keep.end(), name) != keep.end()) continue;
     const auto curves = by_node.find(name);
@@ -98,17 +97,33 @@ Result<std::size_t> replay_fbx_rotations(Clip& clip, const SourceClip& source, c
     if (curves == by_node.end() || model == models.end()) continue;
     if (curves->second.layers.size() > 1)
       return make_error(label + ": --method source: joint '" + name + "' is animated in " +
-                        std::to_string(curves->second.layers.size()) +
-                        " layers of take '" + take.name + "'; blending layers is not evaluated yet");
+                        std::to_string(curves->second.layers.size()) + " layers of take '" + take.name +
+                        "'; blending layers is not evaluated yet");
+    out[j] = {model->second, curves->second.channels};
+    ++found;
+  }
+  if (found == 0) return make_error(label + ": --method source: no joint has rotation curves in take '" + take.name + "'");
+  return out;
+}
+
+double fbx_source_ticks(const SourceClip& source, double t) {
+  return static_cast<double>(source.curves.takes.at(source.take).start) + t * static_cast<double>(kFbxTicksPerSecond);
+}
+
+Result<std::size_t> replay_fbx_rotations(Clip& clip, const SourceClip& source, const std::vector<std::string>& keep,
+                                         const std::string& label) {
+  auto joints = fbx_joint_curves(clip, source, keep, label);
+  if (!joints) return joints.failure();
+  std::size_t replayed = 0;
+  for (std::size_t j = 0; j < joints->size(); ++j) {
+    const FbxJointCurves& curves = (*joints)[j];
+    if (!curves.model) continue;
     RotationTrack& track = clip.rotations[j];
     for (std::size_t k = 0; k < track.times.size(); ++k)
-      track.keys[k] = fbx_local_rotation(*model->second, curves->second.channels,
-                                         start + track.times[k] * ticks_per_second);
+      track.keys[k] = fbx_local_rotation(*curves.model, curves.channels, fbx_source_ticks(source, track.times[k]));
     track.make_sign_continuous();
     ++replayed;
   }
-  if (replayed == 0)
-    return make_error(label + ": --method source: no joint has rotation curves in take '" + take.name + "'");
   return replayed;
 }
 

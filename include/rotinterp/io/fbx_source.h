@@ -46,6 +46,19 @@ struct SourceClip {
 // stack, and every error read_clip() gives.
 Result<SourceClip> read_source_clip(const std::filesystem::path& path, const ReadOptions& options);
 
+// The node and Lcl Rotation channels of one joint (model nullptr: the joint has
+// no rotation curves, or is kept).
+struct FbxJointCurves {
+  const FbxModel* model = nullptr;
+  std::array<const FbxCurve*, 3> channels{nullptr, nullptr, nullptr};
+};
+// Per joint of `clip` (by name), pointing into `source` (keep it alive and in
+// place). Joints named in `keep` get none. Errors as replay_fbx_rotations's.
+Result<std::vector<FbxJointCurves>> fbx_joint_curves(const Clip& clip, const SourceClip& source,
+                                                     const std::vector<std::string>& keep, const std::string& label);
+// The FBX time (ticks) of clip time t: take start + t.
+double fbx_source_ticks(const SourceClip& source, double t);
+
 // Replaces every rotation key of each joint of `clip` whose node has Lcl Rotation
 // curves in `source`'s take with the curves' value at the key's time (clip time t
 // is FBX time take start + t, assimp's re-basing) and makes the tracks

@@ -4,6 +4,7 @@
 #include "rotinterp/eval/batch.h"
 #include "rotinterp/io/dataset.h"
 #include "rotinterp/eval/plots.h"
+#include "rotinterp/eval/source_truth.h"
 #include "rotinterp/eval/synth_truth.h"
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/io/atomic_file.h"
@@ -39,7 +40,7 @@ struct EvalArgs {
   // Lengths as the user writes them, their defaults the library's (metres → cm text).
   std::string shell_distance = fmt::format("{}cm", kDefaultShellDistanceMetres * 100);
   bool no_plots = false;
-  bool truth = false;
+  std::string truth;  // --truth [synth|source] as written; empty: not given
   bool quiet = false;
   std::string anim;
   long long min_frames = 0;
@@ -156,7 +157,8 @@ int run(const EvalArgs& a) {
       o.clip.loop = true;
       o.clip.loop_form = (*loop)->form;
     }
-    if (a.truth) o.truth_for = synth_truth;
+    if (a.truth == "synth") o.truth_for = synth_truth;
+    if (a.truth == "source") o.truth_for = source_truth;
     keep_freed_memory_for_reuse();
     o.progress = make_progress("eval", quiet);
     o.on_failure = print_failure;
@@ -186,6 +188,9 @@ int run(const EvalArgs& a) {
       std::fprintf(stderr, "rotinterp: note: %zu file(s) found in directories hold no animation and were skipped "
                    "(listed in %s/%s)\n", report->skipped.size(), a.output.c_str(), kSummaryJsonName);
     fmt::print("{}", format_summary_table(report->summary, table));
+    if (!a.truth.empty())
+      fmt::print("truth: {}\n", a.truth == "source" ? "each FBX file's own rotation curves (--truth source)"
+                                                    : "each synth clip's analytic motion (--truth)");
     if (table == TableFormat::text)
       fmt::print("wrote {}/{}, {}/{}, {}/{}{}\n", a.output, kErrorsCsvName, a.output, kClipsCsvName, a.output,
                  kSummaryJsonName, a.no_plots || report->summary.clips == 0 ? "" : ", and plots (PNG, SVG)");
@@ -222,9 +227,12 @@ void add_eval_command(CLI::App& app, int& exit_code) {
   sub->add_option("--shell-distance", args->shell_distance,
                   "Virtual-vertex distance: a length (3cm); a bare number is metres (converted by each clip's unit)")
       ->capture_default_str();
-  sub->add_flag("--truth", args->truth,
-                "Compare with the analytic motion of synth clips (CLIP.synth, from rotinterp synth) at every "
-                "frame and subframe; a clip without one fails (default: off, compare with the source frames)");
+  auto* truth = sub->add_option("--truth", args->truth,
+                                "Compare at every frame and subframe with: synth (bare --truth), the analytic motion "
+                                "of synth clips (CLIP.synth, from rotinterp synth); or source, an FBX file's own "
+                                "rotation curves (as resample --method source replays them). A clip without one "
+                                "fails (default: off, compare with the source frames)")
+                    ->expected(0, 1);
   add_anim_option(*sub, args->anim, true);
   sub->add_option("--min-frames", args->min_frames,
                   "Skip clips with fewer frames (listed); spacings N need at least 2N+1 frames in any case")
@@ -254,7 +262,14 @@ void add_eval_command(CLI::App& app, int& exit_code) {
                   "(absent without --loop); a clip that is not a cycle fails.");
   sub->add_flag("--no-plots", args->no_plots, "Skip the plots (default: PNG and SVG plots in -o DIR)");
   add_quiet_option(*sub, args->quiet);
-  sub->callback([args, &exit_code] { exit_code = run(*args); });
+  sub->callback([args, truth, &exit_code] {
+    // A bare --truth is synth; a value that is neither name is an input path it took.
+    if (truth->count() > 0 && args->truth != "source") {
+      if (!args->truth.empty() && args->truth != "synth") args->paths.insert(args->paths.begin(), args->truth);
+      args->truth = "synth";
+    }
+    exit_code = run(*args);
+  });
 }
 
 }  // namespace rotinterp::cli

@@ -14,6 +14,7 @@
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/io/atomic_file.h"
 #include "rotinterp/io/dataset.h"
+#include "rotinterp/io/fbx_source.h"
 #include "rotinterp/io/read.h"
 #include "rotinterp/io/write.h"
 
@@ -73,6 +74,7 @@ struct FileRun {
   ClipUnit unit;             // the input's (clip/units.h)
   double output_metres_per_unit = 0.0;
   std::string cycle;  // --loop: the cycle's summary (clip/resample_loop.h)
+  std::size_t replayed = 0;  // --method source: joints evaluated from the file's curves
 };
 
 bool valid_bvh_order(std::string order) {
@@ -94,7 +96,9 @@ Result<ResampleOptions> resample_options(const ResampleArgs& a) {
     if (!n) return n.failure();
     opt.keep_every = static_cast<std::size_t>(*n);
   }
-  auto method = parse_methods(a.method, false);
+  // source is no interpolator of the registry: resample_file reads the curves.
+  auto method = is_source_method(a.method) ? Result<std::vector<std::string>>(std::vector<std::string>{kSourceMethodName})
+                                           : parse_methods(a.method, false);
   if (!method) return method.failure();
   opt.method = method->front();
   for (const std::string& item : a.method_for) {
@@ -127,7 +131,19 @@ Status resample_file(FileRun& run, const ResampleArgs& a, const ResampleOptions&
   read_options.unit = a.unit_m;
   read_options.on_warning = warn;
   stage("reading " + run.input);
-  auto clip = read_clip(run.input, read_options);
+  // --method source: the frames come from the grid and the default method, then the
+  // joints with curves are evaluated from them (io/fbx_source.h).
+  const bool source = opt.method == kSourceMethodName;
+  std::optional<SourceClip> curves;
+  Result<Clip> clip = make_error("");
+  if (source) {
+    auto read = read_source_clip(run.input, read_options);
+    if (!read) return read.failure();
+    curves = std::move(*read);
+    clip = curves->clip;
+  } else {
+    clip = read_clip(run.input, read_options);
+  }
   if (!clip) return clip.failure();
   run.frame_time = frame_time_text(*clip);
   run.rate = clip_rate(*clip);
@@ -143,9 +159,18 @@ Status resample_file(FileRun& run, const ResampleArgs& a, const ResampleOptions&
     run.cycle = cycle->summary();
     out = std::move(cycle->clip);
   } else {
-    out = resample_clip(*clip, opt);
+    ResampleOptions base = opt;
+    if (source) base.method = kDefaultResampleMethod;
+    out = resample_clip(*clip, base);
   }
   if (!out) return out.failure(run.input + ": ");
+  if (curves) {
+    std::vector<std::string> keep;
+    for (const auto& [joint, method] : opt.method_for) keep.push_back(joint);
+    auto replayed = replay_fbx_rotations(*out, *curves, keep, run.input);
+    if (!replayed) return replayed.failure();
+    run.replayed = *replayed;
+  }
   if (a.out_unit_m) convert_unit(*out, *a.out_unit_m, "--out-unit " + a.out_unit);
   run.output_metres_per_unit = out->unit.metres_per_unit;
   run.output_frames = out->frame_count();
@@ -191,6 +216,9 @@ int run_single(const ResampleArgs& a, ResampleOptions opt) {
                         : run.output_rate ? run.output_rate->to_string()
                                           : "?");
     std::string methods = opt.method;
+    if (run.replayed)
+      methods += fmt::format(" ({} of {} joints from the file's curves, the rest {} over the baked keys)", run.replayed,
+                             run.joints, kDefaultResampleMethod);
     if (!opt.method_for.empty()) methods += fmt::format(" (+{} per-joint override{})", opt.method_for.size(),
                                                         opt.method_for.size() == 1 ? "" : "s");
     fmt::print("{} → {}: {} → {} frames ({}), method {}, translation {}, {:.3f} s; unit {}{}\n", input, a.output,
@@ -343,6 +371,9 @@ int run_resample(ResampleArgs a) {
   auto loop = parse_loop_option(a.loop);
   if (!loop) return fail_usage(loop.error());
   a.loop_request = *loop;
+  if (opt->method == kSourceMethodName && (opt->keep_every || opt->range || a.loop_request))
+    return fail_usage("--method source evaluates the file's curves on the output grid (--fps); --keep-every, --range "
+                      "and --loop do not apply to it");
   auto unit = parse_unit_option(a.unit);
   if (!unit) return fail_usage(unit.error());
   a.unit_m = *unit;
@@ -385,7 +416,10 @@ void add_resample_command(CLI::App& app, int& exit_code) {
                  "the output rate: frames at start + k/HZ, k = 0 … floor(duration·HZ + 1e-9); default the source's "
                  "rate (or --keep-every)");
   add_keep_every_option(*sub, a->keep_every, false, "every source frame is rebuilt (default: unset, see --fps)");
-  add_method_option(*sub, a->method, false, std::string(kDefaultResampleMethod) + ", for every joint");
+  add_method_option(*sub, a->method, false,
+                    std::string(kDefaultResampleMethod) +
+                        ", for every joint; 'source' replays an FBX file's own curves (tangents, Euler order, "
+                        "pre/post-rotation) on the joints that have them, " + kDefaultResampleMethod + " on the rest");
   sub->add_option("--method-for", a->method_for, "Per-joint override JOINT=METHOD (repeatable; default none)");
   sub->add_option("--translation", a->translation,
                   "Translation tracks: linear, or cubic (default: C¹, Steffen tangents — never overshoots between keys)");

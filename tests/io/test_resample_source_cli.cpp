@@ -1,0 +1,44 @@
+// `rotinterp resample --method source`: the importer-process read with curves,
+// the summary saying which joints came from the curves, one-line refusals.
+#include "io_test_util.h"
+#include "support/run_cli.h"
+
+#include <gtest/gtest.h>
+
+namespace rotinterp {
+namespace {
+
+TEST(ResampleSourceCli, AKeyedFbxIsWrittenWithItsJointsFromTheCurves) {
+  test::TempDir dir;
+  const auto out = dir / "run.bvh";
+  const test::CliResult r = test::run_cli("resample '" + (test::kData / "fbx/digitalrune_Marine_Run.fbx").string() +
+                                          "' -o '" + out.string() + "' --fps 60 -m source");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("method source (36 of "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("joints from the file's curves"), std::string::npos) << r.out;
+  EXPECT_TRUE(std::filesystem::is_regular_file(out));
+}
+
+TEST(ResampleSourceCli, ABvhIsRefusedInOneLineAndNothingIsWritten) {
+  test::TempDir dir;
+  const auto out = dir / "run.bvh";
+  const std::string in = (test::kData / "bvh/bvhio_example.bvh").string();
+  const test::CliResult r = test::run_cli("resample '" + in + "' -o '" + out.string() + "' -m source");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find(in + ": --method source replays FBX curves; this is a 'bvh' file"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST(ResampleSourceCli, KeepEveryRangeAndLoopAreUsageErrorsWithSource) {
+  test::TempDir dir;
+  const std::string in = (test::kData / "fbx/digitalrune_Marine_Run.fbx").string();
+  for (const char* extra : {"--keep-every 2", "--range 0:0.5", "--loop closed"}) {
+    const test::CliResult r =
+        test::run_cli("resample '" + in + "' -o '" + (dir / "x.bvh").string() + "' -m source " + extra);
+    EXPECT_EQ(r.exit_code, 2) << extra << ": " << r.err;
+    EXPECT_NE(r.err.find("--method source evaluates the file's curves"), std::string::npos) << r.err;
+  }
+}
+
+}  // namespace
+}  // namespace rotinterp

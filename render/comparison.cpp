@@ -4,6 +4,7 @@
 #include "rotinterp/core/work_queue.h"
 #include "rotinterp/core/rotation.h"
 #include "rotinterp/interp/interpolator.h"
+#include "rotinterp/interp/method_style.h"
 #include "rotinterp/clip/metrics.h"
 #include "rotinterp/render/colour_map.h"
 #include "rotinterp/render/layout.h"
@@ -33,18 +34,10 @@ Result<std::size_t> parse_count(std::string_view text, const char* what) {
   return value;
 }
 
-// Solid colours of the methods, one per registered method (then repeating).
-constexpr Color kPalette[] = {{0.96f, 0.56f, 0.20f}, {0.26f, 0.62f, 0.96f}, {0.40f, 0.80f, 0.38f},
-                              {0.90f, 0.36f, 0.62f}, {0.94f, 0.82f, 0.28f}, {0.36f, 0.84f, 0.84f},
-                              {0.66f, 0.52f, 0.94f}, {0.92f, 0.40f, 0.34f}, {0.84f, 0.70f, 0.50f}};
-
-// A method's colour follows its place in the registry, so a method looks the same
-// in every image, whatever else is compared with it.
+// A method's colour: its registry slot's (interp/method_style.h), as in eval's plots.
 Color method_colour(const std::string& method) {
-  const auto& all = methods();
-  std::size_t i = 0;
-  while (i < all.size() && all[i].name != method) ++i;
-  return kPalette[i % std::size(kPalette)];
+  const auto& rgb = method_style(method_slot(method)).rgb;
+  return {rgb[0] / 255.0f, rgb[1] / 255.0f, rgb[2] / 255.0f};
 }
 
 // The clip's frames (clip/frames.h, as eval measures them), and every method

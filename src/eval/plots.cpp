@@ -1,5 +1,6 @@
 #include "rotinterp/eval/plots.h"
 
+#include "rotinterp/interp/method_style.h"
 #include "rotinterp/io/atomic_file.h"
 
 #include <fmt/format.h>
@@ -19,26 +20,22 @@ namespace rotinterp {
 namespace {
 
 // Colour map 0: 0 background (white), 1 axes and text (black), 2 grid (light grey),
-// 3… one per method (colour-blind safe: Okabe–Ito, then Paul Tol's wine for a ninth).
+// 3… the method styles (interp/method_style.h), one per slot.
 constexpr int kText = 1, kGrid = 2, kFirstSeries = 3;
-constexpr int kPalette[][3] = {{0, 114, 178}, {213, 94, 0},    {0, 158, 115}, {204, 121, 167}, {230, 159, 0},
-                               {86, 180, 233}, {120, 120, 120}, {0, 0, 0},     {136, 34, 85}};
-constexpr int kPaletteSize = sizeof(kPalette) / sizeof(kPalette[0]);
 // Angles below this (degrees) are zero to round-off: drawn as zeros on a log axis
 // (a method that reproduces a still clip gives 1e-14°, which would stretch the axis
 // over fifteen decades).
 constexpr double kZeroDeg = 1e-9;
 
-int series_colour(std::size_t i) { return kFirstSeries + static_cast<int>(i % kPaletteSize); }
-// Per method: a filled marker, its open form (for zeros on a log axis), a dash pattern.
-constexpr const char* kMarker[] = {"●", "■", "▲", "◆", "▼", "★", "✚", "✖", "◀"};
-constexpr const char* kOpenMarker[] = {"○", "□", "△", "◇", "▽", "☆", "✚", "✖", "◁"};
-constexpr int kMarkers = sizeof(kMarker) / sizeof(kMarker[0]);
-const char* marker(std::size_t i, bool open = false) {
-  const std::size_t k = i % kMarkers;
-  return open ? kOpenMarker[k] : kMarker[k];
+// A method's colour map entry, marker and PLplot line style: its registry slot's.
+int series_colour(const std::string& method) {
+  return kFirstSeries + static_cast<int>(method_slot(method) % kMethodStyles);
 }
-int dash(std::size_t i) { return 1 + static_cast<int>(i % 8); }  // PLplot's eight line styles
+const char* marker(const std::string& method, bool open = false) {
+  const MethodStyle& style = method_style(method_slot(method));
+  return open ? style.open_marker : style.marker;
+}
+int dash(const std::string& method) { return method_style(method_slot(method)).dash; }
 // Character heights relative to PLplot's default: text, and the markers.
 constexpr double kTextScale = 0.8, kMarkerScale = 0.6;
 
@@ -113,16 +110,16 @@ double offset(std::size_t i, std::size_t n, double dx) {
 
 // One method's points (and, with `lines`, their line in its dash pattern). On a log
 // axis a zero (below kZeroDeg) is an open marker on the bottom edge and breaks the line.
-void draw_series(std::size_t mi, const std::vector<double>& x, const std::vector<double>& y, const LogRange& yr,
+void draw_series(const std::string& method, const std::vector<double>& x, const std::vector<double>& y, const LogRange& yr,
                  bool lines) {
-  plcol0(series_colour(mi));
+  plcol0(series_colour(method));
   plwidth(2.0);
-  pllsty(dash(mi));
+  pllsty(dash(method));
   std::vector<PLFLT> px, py;
   auto flush = [&] {
     if (lines && px.size() > 1) plline(static_cast<PLINT>(px.size()), px.data(), py.data());
     plschr(0.0, kMarkerScale);
-    if (!px.empty()) plstring(static_cast<PLINT>(px.size()), px.data(), py.data(), marker(mi));
+    if (!px.empty()) plstring(static_cast<PLINT>(px.size()), px.data(), py.data(), marker(method));
     plschr(0.0, kTextScale);
     px.clear(), py.clear();
   };
@@ -138,7 +135,7 @@ void draw_series(std::size_t mi, const std::vector<double>& x, const std::vector
     flush();
     PLFLT zx = x[i], zy = yr.lo;
     plschr(0.0, kMarkerScale);
-    plstring(1, &zx, &zy, marker(mi, true));
+    plstring(1, &zx, &zy, marker(method, true));
     plschr(0.0, kTextScale);
   }
   flush();
@@ -183,11 +180,14 @@ void begin_page(FILE* file, const char* device, int w, int h) {
   plsdev(device);
   plsfile(file);
   plspage(0.0, 0.0, w, h, 0, 0);
-  plscmap0n(kFirstSeries + kPaletteSize);
+  plscmap0n(kFirstSeries + static_cast<int>(kMethodStyles));
   plscol0(0, 255, 255, 255);
   plscol0(kText, 0, 0, 0);
   plscol0(kGrid, 215, 215, 215);
-  for (int i = 0; i < kPaletteSize; ++i) plscol0(kFirstSeries + i, kPalette[i][0], kPalette[i][1], kPalette[i][2]);
+  for (std::size_t i = 0; i < kMethodStyles; ++i) {
+    const auto& rgb = method_style(i).rgb;
+    plscol0(kFirstSeries + static_cast<int>(i), rgb[0], rgb[1], rgb[2]);
+  }
   plinit();
   pladv(0);
   plschr(0.0, kTextScale);
@@ -207,10 +207,10 @@ void legend(const std::vector<std::string>& names, PLINT position, int columns, 
   std::vector<PLFLT> widths(n, 2.0), sscale(n, 0.8);
   std::vector<const char*> text(n), sym(n);
   for (std::size_t i = 0; i < n; ++i) {
-    colours[i] = series_colour(i);
-    lstyle[i] = dash(i);
+    colours[i] = series_colour(names[i]);
+    lstyle[i] = dash(names[i]);
     text[i] = names[i].c_str();
-    sym[i] = marker(i);
+    sym[i] = marker(names[i]);
   }
   std::vector<PLINT> text_colours(n, kText);
   const PLINT ncol = std::max(1, columns), nrow = static_cast<PLINT>((static_cast<int>(n) + ncol - 1) / ncol);
@@ -311,7 +311,7 @@ Status spacing_plot(const Summary& s) {
           x.push_back(std::log2(std::max(1, e.keep_every)) + offset(mi, methods.size(), dx));
           y.push_back(e.*kSpacingPanels[p].value);
         }
-      draw_series(mi, x, y, yr, true);
+      draw_series(methods[mi], x, y, yr, true);
     }
     if (!yr.any) plmtex("t", -4.0, 0.5, 0.5, "all zero");
   }
@@ -376,7 +376,7 @@ Status worst_clip_plot(const Summary& s) {
       x.push_back(static_cast<double>(i) + offset(mi, methods.size(), dx));
       y.push_back(it->second);
     }
-    draw_series(mi, x, y, LogRange{}, joints.size() <= 40);
+    draw_series(methods[mi], x, y, LogRange{}, joints.size() <= 40);
   }
   legend(methods, PL_POSITION_INSIDE | PL_POSITION_TOP, 4);
   return Ok{};
@@ -424,7 +424,7 @@ Status clips_plot(const Summary& s) {
           x.push_back(static_cast<double>(i) + offset(mi, methods.size(), dx));
           y.push_back(c.rms_deg);
         }
-    draw_series(mi, x, y, yr, false);
+    draw_series(methods[mi], x, y, yr, false);
   }
   legend(methods, PL_POSITION_OUTSIDE | PL_POSITION_RIGHT, 1, 0.0);
   return Ok{};

@@ -1,9 +1,12 @@
 // The plots are written as real PNG files, atomically.
 #include "rotinterp/eval/plots.h"
 #include "rotinterp/interp/interpolator.h"
+#include "rotinterp/interp/method_style.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <set>
@@ -108,6 +111,52 @@ TEST(Plots, EveryRegisteredMethodHasAColourOfItsOwn) {
     colours.insert(svg.substr(at, svg.find(')', at) - at));
   // The methods' colours (black among them), plus the white page and the grey grid.
   EXPECT_GE(colours.size(), methods().size() + 2);
+}
+
+
+// Issue 29: the plots coloured methods by order of appearance and render by registry
+// place, so one method had two colours in one report. Both now take the method's slot.
+TEST(Plots, AMethodHasItsRegistryColourWhateverElseIsPlotted) {
+  auto svg_of = [](const std::vector<std::string>& names, const char* dir_name) {
+    Summary s;
+    s.clips = 1;
+    for (const std::string& name : names)
+      for (int keep : {2, 4}) {
+        SummaryEntry e;
+        e.method = name;
+        e.keep_every = keep;
+        e.rms_deg = e.max_deg = e.clip_rms_median_deg = 0.1 * keep;
+        s.entries.push_back(e);
+      }
+    const fs::path dir = fs::path(testing::TempDir()) / dir_name;
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    EXPECT_TRUE(write_plots(s, dir).ok());
+    std::ifstream in(dir / "error_vs_spacing.svg");
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+  };
+  auto cairo_rgb = [](const std::string& method) {  // cairo writes rgb(90.196078%,62.352941%,0%)
+    std::string out = "rgb(";
+    for (std::uint8_t c : method_style(method_slot(method)).rgb) {
+      char v[32];
+      std::snprintf(v, sizeof v, "%f", c / 255.0 * 100.0);
+      std::string t = v;
+      t.erase(t.find_last_not_of('0') + 1);
+      if (t.back() == '.') t.pop_back();
+      out += t + "%,";
+    }
+    out.back() = ')';
+    return out;
+  };
+  const std::string alone = svg_of({"bf"}, "rotinterp_plots_bf_alone");
+  const std::string reordered = svg_of({"c2", "BF", "slerp"}, "rotinterp_plots_bf_third");
+  ASSERT_NE(method_slot("bf"), method_slot("slerp"));
+  for (const std::string* svg : {&alone, &reordered}) {
+    EXPECT_NE(svg->find(cairo_rgb("bf")), std::string::npos) << cairo_rgb("bf");
+  }
+  EXPECT_EQ(alone.find(cairo_rgb("slerp")), std::string::npos);  // the first slot's colour is slerp's
 }
 
 }  // namespace

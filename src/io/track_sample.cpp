@@ -1,3 +1,4 @@
+// A keyed track's value at any time, as importers read it (slerp or lerp, clamped).
 #include "track_sample.h"
 
 namespace rotinterp {

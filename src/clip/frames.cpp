@@ -1,37 +1,12 @@
 // A clip's frame grid, its tracks sampled at every frame, kept key frames and bone axes.
 #include "rotinterp/clip/frames.h"
 
-#include "rotinterp/interp/slerp.h"
+#include "rotinterp/track/sample.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace rotinterp {
-
-namespace {
-
-// A track at sorted times: its key where one lies within `snap` of the time, else
-// `blend` of the two neighbouring keys at the fraction between them; held
-// constant outside the keys.
-template <class Track, class Value, class Blend>
-void sample_track(const Track& track, const std::vector<double>& times, double snap, Value* out, Blend blend) {
-  const std::size_t n = track.times.size();
-  std::size_t i = 0;  // the last key at or before t + snap
-  for (std::size_t m = 0; m < times.size(); ++m) {
-    const double t = times[m];
-    while (i + 1 < n && track.times[i + 1] <= t + snap) ++i;
-    if (std::abs(track.times[i] - t) <= snap || i + 1 >= n) {
-      out[m] = track.keys[i];
-    } else if (t < track.times[i]) {  // before the first key
-      out[m] = track.keys[0];
-    } else {
-      const double u = (t - track.times[i]) / (track.times[i + 1] - track.times[i]);
-      out[m] = blend(track.keys[i], track.keys[i + 1], u);
-    }
-  }
-}
-
-}  // namespace
 
 double FrameGrid::exact_time(std::size_t k) const {
   return rate ? start + rate->time_of(static_cast<std::int64_t>(k)) : times[k];
@@ -71,14 +46,6 @@ FrameGrid frame_grid(const Clip& clip) {
   if (g.times.size() > 1)
     g.snap = kFrameSnap * (g.times.back() - g.times.front()) / static_cast<double>(g.times.size() - 1);
   return g;
-}
-
-void sample_rotations(const RotationTrack& track, const std::vector<double>& times, double snap, Quat* out) {
-  sample_track(track, times, snap, out, [](const Quat& a, const Quat& b, double u) { return slerp(a, b, u); });
-}
-
-void sample_translations(const TranslationTrack& track, const std::vector<double>& times, double snap, Vec3* out) {
-  sample_track(track, times, snap, out, [](const Vec3& a, const Vec3& b, double u) -> Vec3 { return a + u * (b - a); });
 }
 
 DenseClip dense_clip(const Clip& clip) {

@@ -3,6 +3,7 @@
 // rotinterp/core/so3_jacobian.h.)
 #pragma once
 
+#include "rotinterp/core/geodesic.h"
 #include "rotinterp/interp/interpolator.h"
 
 #include <algorithm>
@@ -15,19 +16,7 @@ namespace rotinterp::detail {
 
 inline Quat negated(const Quat& q) { return Quat(-q.w(), -q.x(), -q.y(), -q.z()); }
 
-// b or −b, whichever lies in a's hemisphere. When a·b is exactly 0 (orientations
-// exactly 180° apart) the sign is the one for which the vector part of a⁻¹b has
-// its first non-zero component positive — the core log's convention — so the path
-// taken does not depend on the stored sign of b.
-inline Quat align_pair(const Quat& a, const Quat& b) {
-  const double d = a.dot(b);
-  if (d > 0.0) return b;
-  if (d < 0.0) return negated(b);
-  const Vec3 v = (a.conjugate() * b).vec();
-  for (int i = 0; i < 3; ++i)
-    if (v[i] != 0.0) return v[i] < 0.0 ? negated(b) : b;
-  return b;
-}
+using rotinterp::align_pair;  // core/geodesic.h
 
 // Steffen's limiter on rate vectors (clamped and gltf-cubic): p̂·min(|p|, 2|a|, 2|b|),
 // zero unless a·b > 0 — a hold, a stop, a reversal or a turn of 90° or more.

@@ -7,8 +7,6 @@
 
 namespace rotinterp {
 
-Quat detail::slerp_tie_sign(const Quat& a, const Quat& b) { return align_pair(a, b); }
-
 namespace {
 
 class SlerpInterpolator final : public detail::SegmentInterpolator<SlerpInterpolator> {

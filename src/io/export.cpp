@@ -4,7 +4,8 @@
 #include "assimp_iosystem.h"
 #include "assimp_text.h"
 #include "rotinterp/clip/clip.h"
-#include "track_sample.h"
+#include "key_times.h"
+#include "rotinterp/track/sample.h"
 #include "rotinterp/io/atomic_file.h"
 
 #include <assimp/Exporter.hpp>

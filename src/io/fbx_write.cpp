@@ -7,7 +7,8 @@
 #include "rotinterp/clip/frames.h"
 #include "rotinterp/clip/sampling.h"
 #include "rotinterp/io/euler.h"
-#include "track_sample.h"
+#include "key_times.h"
+#include "rotinterp/track/sample.h"
 
 #include <array>
 #include <cmath>

@@ -8,7 +8,8 @@
 #include "rotinterp/clip/translation_curve.h"
 #include "rotinterp/interp/gltf_cubic.h"
 #include "rotinterp/io/atomic_file.h"
-#include "track_sample.h"
+#include "key_times.h"
+#include "rotinterp/track/sample.h"
 
 #include <nlohmann/json.hpp>
 

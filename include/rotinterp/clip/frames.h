@@ -16,6 +16,7 @@
 
 #include "rotinterp/clip/clip.h"
 #include "rotinterp/clip/sampling.h"
+#include "rotinterp/track/sample.h"  // sample_rotations, sample_translations: "Values" above
 
 #include <cstddef>
 #include <optional>
@@ -46,10 +47,6 @@ FrameGrid frame_grid(const Clip& clip);
 // The exact frame rate of a clip's source (rate_from_frame_time(clip.frame_time)),
 // or nothing for a clip without a frame time: frame_grid(clip).rate, without the grid.
 std::optional<Rate> clip_rate(const Clip& clip);
-
-// A track at sorted times (see "Values" above); `snap` in seconds.
-void sample_rotations(const RotationTrack& track, const std::vector<double>& times, double snap, Quat* out);
-void sample_translations(const TranslationTrack& track, const std::vector<double>& times, double snap, Vec3* out);
 
 // The source's motion at every frame of its grid, joint-major: what the methods are
 // measured against and where their keys are taken.

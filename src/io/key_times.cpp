@@ -1,5 +1,7 @@
-// A keyed track's value at any time, as importers read it (slerp or lerp, clamped).
-#include "track_sample.h"
+// The union of a clip's key times, for the exporters.
+#include "key_times.h"
+
+#include <algorithm>
 
 namespace rotinterp {
 

@@ -1,19 +1,17 @@
+// rotinterp resample: its options, the one-file run and the step each file takes
+// (the folder run is cmd_resample_folder.cpp).
 // rotinterp resample IN -o OUT [--fps HZ | --keep-every N] [--method NAME] [--method-for JOINT=NAME ...]
 //                    [--translation linear|cubic] [--range START:END] [--anim NAME|INDEX] [--bvh-order ZXY]
 //                    [--unit U] [--out-unit U] [--quiet]
 // rotinterp resample PATH... -o OUTDIR [the same] [-j N] [--shard I/N] [--skip-existing] [--format EXT]
 //                    [--manifest FILE.csv]: a whole dataset, its layout mirrored under OUTDIR.
+#include "cmd_resample.h"
 #include "common.h"
 #include "rotinterp/clip/frames.h"
 #include "rotinterp/clip/bvh_layout.h"
-#include "rotinterp/clip/resample.h"
 #include "rotinterp/clip/resample_loop.h"
-#include "rotinterp/clip/units.h"
-#include "rotinterp/core/work_queue.h"
-#include "rotinterp/eval/error_row.h"  // csv_field: the one CSV quoting
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/io/atomic_file.h"
-#include "rotinterp/io/dataset.h"
 #include "rotinterp/io/fbx_source.h"
 #include "rotinterp/io/read.h"
 #include "rotinterp/io/write.h"
@@ -23,59 +21,18 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
-#include <cerrno>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <functional>
 #include <memory>
-#include <mutex>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <vector>
 
 namespace rotinterp::cli {
 
 namespace {
-
-struct ResampleArgs {
-  std::vector<std::string> inputs;
-  std::string output;
-  std::string fps, keep_every, method = kDefaultResampleMethod, translation = "cubic", range, anim, bvh_order = "ZXY";
-  std::vector<std::string> method_for;
-  bool quiet = false;
-  bool fbx_ascii = false;
-  // Folder runs.
-  int jobs = 0;
-  std::string shard, format, manifest;
-  bool skip_existing = false;
-  std::string unit, out_unit;  // as written; parsed into:
-  std::optional<double> unit_m, out_unit_m;  // metres per unit
-  std::string loop = "off";                  // --loop as written; parsed into:
-  std::optional<LoopRequest> loop_request;
-};
-
-// One file's run: a row of the manifest.
-struct FileRun {
-  std::string input;
-  std::filesystem::path output;
-  std::string status = "ok";  // ok, exists (--skip-existing), no-animation, failed
-  std::string message;        // the error line of a failed file
-  std::string frame_time;     // as written in the file (BVH), else empty
-  std::optional<Rate> rate;   // as recognized
-  std::optional<Rate> output_rate;
-  std::size_t frames = 0, joints = 0, output_frames = 0;
-  double duration = 0.0, seconds = 0.0;
-  std::uintmax_t bytes = 0;  // of the input
-  ClipUnit unit;             // the input's (clip/units.h)
-  double output_metres_per_unit = 0.0;
-  std::string cycle;  // --loop: the cycle's summary (clip/resample_loop.h)
-  std::size_t replayed = 0;  // --method source: joints evaluated from the file's curves
-};
 
 bool valid_bvh_order(std::string order) {
   std::sort(order.begin(), order.end());
@@ -122,7 +79,8 @@ Result<ResampleOptions> resample_options(const ResampleArgs& a) {
   return opt;
 }
 
-// Reads, resamples and writes one file, filling `run`; `stage` names each step.
+}  // namespace
+
 Status resample_file(FileRun& run, const ResampleArgs& a, const ResampleOptions& opt,
                      const std::function<void(const std::string&)>& stage) {
   const auto started = std::chrono::steady_clock::now();
@@ -186,6 +144,8 @@ Status resample_file(FileRun& run, const ResampleArgs& a, const ResampleOptions&
   return written;
 }
 
+namespace {
+
 int run_single(const ResampleArgs& a, ResampleOptions opt) {
   const std::string& input = a.inputs.front();
   protect_input(input);
@@ -229,141 +189,6 @@ int run_single(const ResampleArgs& a, ResampleOptions opt) {
   return kExitOk;
 }
 
-Status write_manifest(const std::string& path, const std::vector<FileRun>& runs, const ResampleOptions& opt) {
-  return write_file_atomically(path, [&](std::ostream& out) -> Status {
-    out << "input,output,status,frame_time_written,rate_hz,rate,frames,duration_s,joints,output_frames,method,"
-           "seconds,message,metres_per_unit,unit\n";
-    for (const FileRun& r : runs) {
-      const bool read = r.status == "ok" || (r.status == "failed" && r.frames > 0);
-      out << csv_field(r.input) << ',' << csv_field(r.output.string()) << ',' << r.status << ','
-          << csv_field(r.frame_time) << ',' << (r.rate ? fmt::format("{:.9g}", r.rate->hz()) : "") << ','
-          << (r.rate ? r.rate->to_string() : "") << ',' << (read ? std::to_string(r.frames) : "") << ','
-          << (read ? fmt::format("{:.9g}", r.duration) : "") << ',' << (read ? std::to_string(r.joints) : "") << ','
-          << (r.status == "ok" ? std::to_string(r.output_frames) : "") << ',' << csv_field(opt.method) << ','
-          << (r.status == "ok" ? fmt::format("{:.3f}", r.seconds) : "") << ',' << csv_field(r.message) << ','
-          << (read ? fmt::format("{}", r.unit.metres_per_unit) : "") << ','
-          << (read ? csv_field(describe_unit(r.unit)) : "") << '\n';
-    }
-    return Ok{};
-  });
-}
-
-// "1m05s", "42s".
-std::string duration_text(double seconds) {
-  const auto s = static_cast<long long>(std::llround(seconds));
-  return s >= 60 ? fmt::format("{}m{:02}s", s / 60, s % 60) : fmt::format("{}s", s);
-}
-
-int run_folder(const ResampleArgs& a, ResampleOptions opt) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  if (fs::exists(a.output, ec) ? !fs::is_directory(a.output, ec) : can_write_format(a.output))
-    return fail_usage("output '" + a.output + "' is a file name; several inputs or a folder need an output directory");
-  if (!a.format.empty() && !can_write_format(fs::path("x." + a.format)))
-    return fail_usage("--format '" + a.format + "': unknown format (use bvh, fbx, glb, gltf or dae)");
-  std::vector<fs::path> named(a.inputs.begin(), a.inputs.end());
-  auto found = discover_inputs(named);
-  if (!found) return fail(found.error());
-  if (found->empty()) {
-    std::string where;
-    for (const std::string& p : a.inputs) where += (where.empty() ? "" : ", ") + p;
-    return fail(where + ": no clip files found (looked for every format assimp imports)");
-  }
-  std::vector<std::string> files = *found;
-  if (!a.shard.empty()) {
-    auto shard = parse_shard(a.shard);
-    if (!shard) return fail_usage(shard.error());
-    files = shard_of(files, shard->first, shard->second);
-  }
-  auto plan = mirror_outputs(files, named, a.output, a.format);
-  if (!plan) return fail(plan.error());
-  for (const MirroredOutput& m : *plan) protect_input(m.input);
-
-  WorkQueue queue(static_cast<unsigned>(a.jobs));
-  // Joints in parallel only where fewer files than workers are in flight (the last ones).
-  std::atomic<unsigned> in_flight{0};
-  std::atomic<std::size_t> done{0};
-  std::atomic<std::uintmax_t> bytes_done{0};
-  std::uintmax_t bytes_total = 0;
-  for (const MirroredOutput& m : *plan) bytes_total += fs::file_size(m.input, ec) * !ec;
-  const bool show = !a.quiet && ::isatty(STDERR_FILENO);
-  std::mutex progress_mutex;
-  const auto started = std::chrono::steady_clock::now();
-  auto report = [&] {
-    if (!show) return;
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    const double mb = static_cast<double>(bytes_done.load()) / 1e6;
-    const double rate = elapsed > 0 ? mb / elapsed : 0.0;
-    const double left = static_cast<double>(bytes_total - std::min(bytes_total, bytes_done.load())) / 1e6;
-    std::lock_guard<std::mutex> lock(progress_mutex);
-    std::fprintf(stderr, "\r\033[Kresample  %zu/%zu files  %.1f MB/s  ETA %s", done.load(), plan->size(), rate,
-                 rate > 0 ? duration_text(left / rate).c_str() : "?");
-  };
-  auto no_stage = [](const std::string&) {};
-
-  std::vector<std::future<FileRun>> futures;
-  for (const MirroredOutput& m : *plan) {
-    futures.push_back(queue.submit([&, m] {
-      FileRun run;
-      run.input = m.input;
-      run.output = m.output;
-      std::error_code size_error;  // this worker's own
-      run.bytes = fs::file_size(m.input, size_error) * !size_error;
-      if (a.skip_existing && fs::is_regular_file(m.output, size_error)) {
-        run.status = "exists";
-      } else if (Status mine = check_not_an_input(m.output); !mine) {
-        run.status = "failed";
-        run.message = mine.error();
-      } else {
-        ResampleOptions file_opt = opt;
-        const unsigned now = ++in_flight;
-        file_opt.threads = std::max(1u, queue.threads() / std::max(1u, now));
-        std::error_code mkdir_error;
-        fs::create_directories(m.output.parent_path(), mkdir_error);
-        Status s = mkdir_error ? Status(make_error(m.output.parent_path().string() + ": " + mkdir_error.message()))
-                               : resample_file(run, a, file_opt, no_stage);
-        --in_flight;
-        if (!s && s.error_kind() == ErrorKind::no_animation && found_in_directory(m.input, named)) {
-          run.status = "no-animation";  // a mesh next to the clips, as eval skips it
-        } else if (!s) {
-          run.status = "failed";
-          run.message = s.error();
-        }
-      }
-      ++done;
-      bytes_done += run.bytes;
-      report();
-      return run;
-    }));
-  }
-  std::vector<FileRun> runs;
-  std::size_t failed = 0, written = 0, existing = 0;
-  for (auto& f : futures) {
-    runs.push_back(f.get());
-    const FileRun& r = runs.back();
-    if (r.status == "failed") {
-      ++failed;
-      if (show) std::fprintf(stderr, "\r\033[K");
-      fail(r.message);
-    }
-    written += r.status == "ok";
-    existing += r.status == "exists";
-  }
-  end_progress(a.quiet);
-  if (!a.manifest.empty())
-    if (Status s = write_manifest(a.manifest, runs, opt); !s) return fail(s.error());
-  if (!a.quiet) {
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    fmt::print("{} file{} → {}: {} written, {} already there, {} failed, {} skipped (no animation); {:.1f} MB in "
-               "{:.2f} s ({:.1f} MB/s), {} worker{}\n",
-               runs.size(), runs.size() == 1 ? "" : "s", a.output, written, existing, failed,
-               runs.size() - written - existing - failed, static_cast<double>(bytes_total) / 1e6, seconds,
-               seconds > 0 ? static_cast<double>(bytes_total) / 1e6 / seconds : 0.0, queue.threads(),
-               queue.threads() == 1 ? "" : "s");
-  }
-  return failed > 0 ? kExitPartial : kExitOk;
-}
-
 int run_resample(ResampleArgs a) {
   // Everything that can be checked without the input is checked first (exit 2).
   auto opt = resample_options(a);
@@ -391,7 +216,7 @@ int run_resample(ResampleArgs a) {
   const bool into_directory = std::filesystem::is_directory(a.output, ec) && !can_write_format(a.output);
   const bool one_file = a.inputs.size() == 1 && !std::filesystem::is_directory(a.inputs.front(), ec) &&
                         !into_directory && a.format.empty();
-  if (!one_file) return run_folder(a, *opt);
+  if (!one_file) return run_resample_folder(a, *opt);
   if (!a.shard.empty() || !a.manifest.empty() || a.skip_existing)
     return fail_usage("--shard, --manifest and --skip-existing are for folder runs (-o DIR)");
   if (!can_write_format(a.output))

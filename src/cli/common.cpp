@@ -1,3 +1,4 @@
+// The subcommands' shared plumbing: error lines, the shared options and their parsers, progress.
 #include "common.h"
 
 #include "rotinterp/clip/units.h"

@@ -1,3 +1,4 @@
+// Skeleton and Clip: their validate() rules, times and frame count, the rest pose and its size.
 #include "rotinterp/clip/clip.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// A clip's frame grid, its tracks sampled at every frame, kept key frames and bone axes.
 #include "rotinterp/clip/frames.h"
 
 #include "rotinterp/track/sample.h"

@@ -1,3 +1,4 @@
+// The error metrics between a reference motion and a rebuilt one (clip/metrics.h).
 #include "rotinterp/clip/metrics.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// resample_clip: every joint rebuilt by its method on the new grid, translations by their curve.
 #include "rotinterp/clip/resample.h"
 
 #include "rotinterp/clip/bvh_layout.h"

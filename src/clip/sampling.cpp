@@ -1,3 +1,4 @@
+// Exact rates: parsing, recognizing the rate behind a frame time, sample counts and time grids.
 #include "rotinterp/clip/sampling.h"
 
 #include <charconv>

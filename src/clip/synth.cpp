@@ -1,3 +1,4 @@
+// Synthetic motions known in closed form (random and walk), their spec strings and sampled clips.
 #include "rotinterp/clip/synth.h"
 
 #include "rotinterp/clip/bvh_layout.h"

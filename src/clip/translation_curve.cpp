@@ -1,3 +1,4 @@
+// Translation tracks between keys: linear, or Steffen's monotone cubic.
 #include "rotinterp/clip/translation_curve.h"
 
 #include <algorithm>

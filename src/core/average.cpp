@@ -1,3 +1,4 @@
+// The Buss–Fillmore spherical weighted average and Markley's chordal mean of orientations.
 #include "rotinterp/core/average.h"
 
 #include "rotinterp/core/so3_jacobian.h"

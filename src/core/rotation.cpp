@@ -1,3 +1,4 @@
+// The rotation core: exp/log, displacements, angular distance and velocity, swing–twist.
 #include "rotinterp/core/rotation.h"
 
 #include <cmath>

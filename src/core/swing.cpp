@@ -1,3 +1,4 @@
+// Grassia's exp derivatives and the swing parameterization with its elliptical limit.
 #include "rotinterp/core/swing.h"
 
 #include <cmath>

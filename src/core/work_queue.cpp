@@ -1,3 +1,4 @@
+// WorkQueue: the library's one thread pool.
 #include "rotinterp/core/work_queue.h"
 
 #include <algorithm>

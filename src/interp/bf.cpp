@@ -1,3 +1,4 @@
+// bf: the Buss–Fillmore spherical cubic B-spline through the keys.
 #include "rotinterp/interp/bf.h"
 
 #include "detail.h"

@@ -1,3 +1,4 @@
+// c2: the C² rotation spline (continuous angular velocity and acceleration).
 #include "rotinterp/interp/c2.h"
 
 #include "body_cubic.h"

@@ -1,3 +1,4 @@
+// clamped: the C¹ shape-preserving interpolator (Steffen's monotone cubic on SO(3)).
 #include "rotinterp/interp/clamped.h"
 
 #include "body_cubic.h"

@@ -1,3 +1,4 @@
+// expmap: a cubic spline of the keys' rotation vectors.
 #include "rotinterp/interp/expmap.h"
 
 #include "detail.h"

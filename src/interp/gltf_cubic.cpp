@@ -1,3 +1,4 @@
+// gltf-cubic: glTF's CUBICSPLINE rotation sampler, as a viewer replays it.
 #include "rotinterp/interp/gltf_cubic.h"
 
 #include "detail.h"

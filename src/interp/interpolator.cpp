@@ -1,3 +1,4 @@
+// The method registry, name lookup with suggestions, and make_interpolator.
 #include "rotinterp/interp/interpolator.h"
 
 #include "rotinterp/interp/bf.h"

@@ -1,3 +1,4 @@
+// nlerp: the normalized linear blend of neighbouring keys.
 #include "rotinterp/interp/nlerp.h"
 
 #include "detail.h"

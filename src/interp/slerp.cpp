@@ -1,3 +1,4 @@
+// slerp: the piecewise geodesic through the keys.
 #include "rotinterp/interp/slerp.h"
 
 #include "detail.h"

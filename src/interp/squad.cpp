@@ -1,3 +1,4 @@
+// squad: Shoemake's spherical quadrangle with control points for non-uniform times.
 #include "rotinterp/interp/squad.h"
 
 #include "detail.h"

@@ -1,3 +1,4 @@
+// The assimp IOSystem whose streams check every write, flush, fsync and close.
 #include "assimp_iosystem.h"
 
 #include "rotinterp/io/atomic_file.h"

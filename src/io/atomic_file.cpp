@@ -1,3 +1,4 @@
+// Atomic writes: temporary file, checked writes, fsync, rename; inputs guarded from being overwritten.
 #include "rotinterp/io/atomic_file.h"
 
 #include <dirent.h>

@@ -1,3 +1,4 @@
+// Datasets: clip discovery, shards, mirrored output paths and a folder's rate audit.
 #include "rotinterp/io/dataset.h"
 
 #include "rotinterp/clip/bvh_layout.h"

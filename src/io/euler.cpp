@@ -1,3 +1,4 @@
+// Euler angles over three axes: orders, to a quaternion, and back nearest the previous angles.
 #include "rotinterp/io/euler.h"
 
 #include "rotinterp/core/result.h"

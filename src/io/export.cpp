@@ -1,3 +1,4 @@
+// Collada through assimp's exporter: the clip as an aiScene.
 #include "export.h"
 
 #include "assimp_iosystem.h"

@@ -1,3 +1,4 @@
+// The FBX node tree as binary or ASCII FBX 7.4, written as it is produced.
 #include "fbx_encode.h"
 
 #include "little_endian.h"

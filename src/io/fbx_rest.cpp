@@ -1,3 +1,4 @@
+// The rest translations the FBX writer gives each joint.
 #include "fbx_rest.h"
 
 #include <algorithm>

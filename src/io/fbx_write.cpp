@@ -1,3 +1,4 @@
+// Our FBX writer: the clip as FBX 7.4 objects, properties, curves and connections.
 #include "fbx_write.h"
 
 #include "fbx_encode.h"

@@ -1,3 +1,4 @@
+// Our glTF 2.0 writer: nodes, skin and animation samplers as .glb or .gltf with its buffer.
 #include "gltf_write.h"
 
 #include "little_endian.h"

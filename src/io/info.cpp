@@ -1,3 +1,4 @@
+// What `rotinterp info` says of a clip beside its data: a static scene's contents, a clip's oddities.
 #include "rotinterp/io/info.h"
 
 #include <algorithm>

@@ -1,7 +1,6 @@
-// Writing clips: BVH by our own writer (keeping a BVH source's layout), FBX by our
-// own writer (binary FBX 7.4, ASCII on request), glTF/GLB and Collada through
-// assimp's exporter. The format follows the
-// extension of the path. Every write is atomic (see io/atomic_file.h).
+// Writing clips: BVH, FBX and glTF/GLB by writers of our own, Collada through
+// assimp's exporter. The format follows the extension of the path. Every write is
+// atomic (see io/atomic_file.h).
 #pragma once
 
 #include "rotinterp/clip/clip.h"

@@ -1,7 +1,7 @@
 // `rotinterp info --curves --sample 24 --json`: the curves read in the importer
 // process and sampled on the file's own time axis match every DCC value of
 // dcc_reference.tsv within 1e-4 of the curve's range; the JSON has the shape.
-#include "dcc_reference.h"
+#include "io/dcc_reference.h"  // the DCC values, shared with tests/io
 #include "support/run_cli.h"
 
 #include <gtest/gtest.h>

@@ -1,16 +1,35 @@
 // `rotinterp info`: what a user reads about a clip, in text and JSON.
-#include "io_test_util.h"
 #include "support/run_cli.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <unistd.h>
+
 namespace rotinterp {
 namespace {
 
-using test::kData;
+namespace fs = std::filesystem;
 
-TEST(InfoCli, JsonDescribesTheBvhLayoutFramesAndRate) {
+const fs::path kData = ROTINTERP_SHARED_DATA;
+
+// Each test's own empty directory, removed after it.
+class InfoCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("rotinterp_info_cli_" + std::to_string(::getpid()) + "_" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  fs::path dir_;
+};
+
+TEST_F(InfoCli, JsonDescribesTheBvhLayoutFramesAndRate) {
   const test::CliResult r = test::run_cli("info --json '" + (kData / "bvh" / "cmu_01_01.bvh").string() + "'");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);
@@ -28,7 +47,7 @@ TEST(InfoCli, JsonDescribesTheBvhLayoutFramesAndRate) {
   EXPECT_NEAR(j["duration_s"].get<double>(), 2751 * 0.0083333, 1e-9);
 }
 
-TEST(InfoCli, TextShowsTheExactFrameTimeTheJointTreeAndFbxOddities) {
+TEST_F(InfoCli, TextShowsTheExactFrameTimeTheJointTreeAndFbxOddities) {
   const test::CliResult bvh = test::run_cli("info '" + (kData / "bvh" / "cmu_01_01.bvh").string() + "'");
   ASSERT_EQ(bvh.exit_code, 0) << bvh.err;
   EXPECT_NE(bvh.out.find("(frame time .0083333 s)"), std::string::npos) << bvh.out;
@@ -44,21 +63,15 @@ TEST(InfoCli, TextShowsTheExactFrameTimeTheJointTreeAndFbxOddities) {
   EXPECT_NE(fbx.out.find("non-uniform key spacing"), std::string::npos) << fbx.out;
 }
 
-}  // namespace
-}  // namespace rotinterp
-
-namespace rotinterp {
-namespace {
-
 // One rate recognizer for every command: a BVH "Frame Time: .0333330" is 30 Hz in
-// `info` (text and JSON) and in `resample`'s summary; BVH has no unit.
-TEST(InfoCli, InfoAndResampleRecognizeTheSameRateAndBvhHasNoUnit) {
-  test::TempDir dir;
-  std::string text = test::read_text(kData / "bvh" / "bvhio_example.bvh");
+// `info` (text and JSON) and in `resample`'s summary; a BVH declares no unit.
+TEST_F(InfoCli, InfoAndResampleRecognizeTheSameRateAndBvhDeclaresNoUnit) {
+  const fs::path& dir = dir_;
+  std::string text = test::slurp(kData / "bvh" / "bvhio_example.bvh");
   const std::size_t at = text.find("Frame Time:");
   ASSERT_NE(at, std::string::npos);
   text.replace(at, text.find('\n', at) - at, "Frame Time: .0333330");
-  test::write_text(dir / "in.bvh", text);
+  std::ofstream(dir / "in.bvh", std::ios::binary) << text;
   const test::CliResult info = test::run_cli("info '" + (dir / "in.bvh").string() + "'");
   ASSERT_EQ(info.exit_code, 0) << info.err;
   EXPECT_NE(info.out.find("frame rate:  30 Hz (frame time .0333330 s)"), std::string::npos) << info.out;
@@ -76,8 +89,8 @@ TEST(InfoCli, InfoAndResampleRecognizeTheSameRateAndBvhHasNoUnit) {
 }
 
 // NTSC outputs of every format read back as the exact 30000/1001.
-TEST(InfoCli, NtscOutputsReadBackAsTheExactRational) {
-  test::TempDir dir;
+TEST_F(InfoCli, NtscOutputsReadBackAsTheExactRational) {
+  const fs::path& dir = dir_;
   for (const char* ext : {".fbx", ".glb", ".gltf", ".bvh", ".dae"}) {
     const auto out = dir / (std::string("out") + ext);
     const test::CliResult r = test::run_cli("resample '" + (kData / "bvh" / "NC_bandai2_raise-up-both-hands_active_031.bvh").string() +
@@ -89,22 +102,16 @@ TEST(InfoCli, NtscOutputsReadBackAsTheExactRational) {
   }
 }
 
-}  // namespace
-}  // namespace rotinterp
-
-namespace rotinterp {
-namespace {
-
 // Dude's keys lie on no grid, but the FBX states 30 fps (GlobalSettings): `info`
 // shows it and `resample` without --fps takes it as the output rate.
-TEST(InfoCli, FbxOwnFrameRateIsTheDefaultWhereKeysGiveNone) {
+TEST_F(InfoCli, FbxOwnFrameRateIsTheDefaultWhereKeysGiveNone) {
   const std::string in = (kData / "fbx" / "digitalrune_Dude.fbx").string();
   const test::CliResult info = test::run_cli("info '" + in + "'");
   ASSERT_EQ(info.exit_code, 0) << info.err;
   EXPECT_NE(info.out.find("frame rate:  none (keys not on a uniform grid); the file's own: 30 Hz"), std::string::npos) << info.out;
   const test::CliResult json = test::run_cli("info --json '" + in + "'");
   EXPECT_EQ(nlohmann::json::parse(json.out)["file_frame_rate_hz"], 30.0);
-  test::TempDir dir;
+  const fs::path& dir = dir_;
   const test::CliResult r = test::run_cli("resample '" + in + "' -o '" + (dir / "out.bvh").string() + "'");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("→ 39 frames (unknown rate → 30 Hz)"), std::string::npos) << r.out;

@@ -1,0 +1,65 @@
+// What resample's one-file run (cmd_resample.cpp) and folder run
+// (cmd_resample_folder.cpp) share: the command's arguments, a file's run, and the
+// step that reads, resamples and writes one file.
+#pragma once
+
+#include "common.h"  // LoopRequest
+#include "rotinterp/clip/resample.h"
+#include "rotinterp/clip/sampling.h"
+#include "rotinterp/clip/units.h"
+#include "rotinterp/core/result.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rotinterp::cli {
+
+struct ResampleArgs {
+  std::vector<std::string> inputs;
+  std::string output;
+  std::string fps, keep_every, method = kDefaultResampleMethod, translation = "cubic", range, anim, bvh_order = "ZXY";
+  std::vector<std::string> method_for;
+  bool quiet = false;
+  bool fbx_ascii = false;
+  // Folder runs.
+  int jobs = 0;
+  std::string shard, format, manifest;
+  bool skip_existing = false;
+  std::string unit, out_unit;  // as written; parsed into:
+  std::optional<double> unit_m, out_unit_m;  // metres per unit
+  std::string loop = "off";                  // --loop as written; parsed into:
+  std::optional<LoopRequest> loop_request;
+};
+
+// One file's run: a row of the manifest.
+struct FileRun {
+  std::string input;
+  std::filesystem::path output;
+  std::string status = "ok";  // ok, exists (--skip-existing), no-animation, failed
+  std::string message;        // the error line of a failed file
+  std::string frame_time;     // as written in the file (BVH), else empty
+  std::optional<Rate> rate;   // as recognized
+  std::optional<Rate> output_rate;
+  std::size_t frames = 0, joints = 0, output_frames = 0;
+  double duration = 0.0, seconds = 0.0;
+  std::uintmax_t bytes = 0;  // of the input
+  ClipUnit unit;             // the input's (clip/units.h)
+  double output_metres_per_unit = 0.0;
+  std::string cycle;  // --loop: the cycle's summary (clip/resample_loop.h)
+  std::size_t replayed = 0;  // --method source: joints evaluated from the file's curves
+};
+
+// Reads, resamples and writes one file, filling `run`; `stage` names each step.
+Status resample_file(FileRun& run, const ResampleArgs& a, const ResampleOptions& opt,
+                     const std::function<void(const std::string&)>& stage);
+
+// resample PATH... -o OUTDIR: every clip found, its layout mirrored under OUTDIR,
+// `a.jobs` files at once; the manifest when asked. Returns the exit code.
+int run_resample_folder(const ResampleArgs& a, const ResampleOptions& opt);
+
+}  // namespace rotinterp::cli

@@ -214,10 +214,11 @@ TEST(ErrorStrip, DrawsTheCursorAtThePanelsFrame) {
 // ---- the follow camera -----------------------------------------------------------
 
 // One method's panels at `width` × `height`, coloured by method (the figure's
-// pixels are the saturated ones), no strip.
+// pixels are the saturated ones: squad's vermillion stays saturated in shade, where a
+// light blue's shaded side would not count), no strip.
 ComparisonOptions one_method(FrameRange frames, int width, int height) {
   ComparisonOptions o;
-  o.methods = {"slerp"};
+  o.methods = {"squad"};
   o.frames = frames;
   o.width = width;
   o.height = height;

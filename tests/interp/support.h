@@ -4,6 +4,9 @@
 
 #include "rotinterp/interp/interpolator.h"
 
+#include <gtest/gtest.h>
+
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <random>
@@ -78,6 +81,20 @@ inline Vec3 one_sided_acceleration(const Interpolator& f, double t, double h) {
 // Central angular velocity at t (inside a segment).
 inline Vec3 central_velocity(const Interpolator& f, double t, double h) {
   return displacement_fixed(f.evaluate(t - h), f.evaluate(t + h)).vec() / (2.0 * h);
+}
+
+// Every registered method's name, for the suites instantiated over all of them.
+inline std::vector<std::string> all_method_names() {
+  std::vector<std::string> n;
+  for (const MethodInfo& m : methods()) n.push_back(m.name);
+  return n;
+}
+
+// A method's name as a test name ('-' is not allowed in one).
+inline std::string method_test_name(const ::testing::TestParamInfo<std::string>& i) {
+  std::string s = i.param;
+  std::replace(s.begin(), s.end(), '-', '_');
+  return s;
 }
 
 }  // namespace rotinterp::test

@@ -177,18 +177,8 @@ TEST_P(PeriodicContract, OneAndTwoKeyCyclesAndBadPeriods) {
   EXPECT_FALSE(make_periodic_interpolator(GetParam(), two.track, std::nan(""))) << "NaN period";
 }
 
-std::vector<std::string> all_names() {
-  std::vector<std::string> n;
-  for (const MethodInfo& m : methods()) n.push_back(m.name);
-  return n;
-}
-
-INSTANTIATE_TEST_SUITE_P(EveryMethod, PeriodicContract, ::testing::ValuesIn(all_names()),
-                         [](const ::testing::TestParamInfo<std::string>& i) {
-                           std::string s = i.param;
-                           std::replace(s.begin(), s.end(), '-', '_');
-                           return s;
-                         });
+INSTANTIATE_TEST_SUITE_P(EveryMethod, PeriodicContract, ::testing::ValuesIn(test::all_method_names()),
+                         test::method_test_name);
 
 }  // namespace
 }  // namespace rotinterp

@@ -52,12 +52,8 @@ Result<CyclePlayedTwice> play_cycle_twice(const Clip& clip, const LoopPlay& loop
   out.period_frames = n;
   out.keep_every = std::max<std::size_t>(keep_every, 1);
   Clip& c = out.clip;
-  c.name = clip.name;
-  c.skeleton = clip.skeleton;
-  c.unit = clip.unit;
-  c.source_format = clip.source_format;
+  c = clip.without_tracks();
   c.frame_time = clip.frame_time;
-  c.file_rate_hz = clip.file_rate_hz;
   std::vector<double> played(total);
   for (std::size_t i = 0; i < total; ++i) played[i] = times[i % n] + static_cast<double>(i / n) * period;
   c.rotations.resize(nj);

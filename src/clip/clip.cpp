@@ -35,6 +35,17 @@ Status Skeleton::validate() const {
   return Ok{};
 }
 
+Clip Clip::without_tracks() const {
+  Clip c;
+  c.name = name;
+  c.skeleton = skeleton;
+  c.unit = unit;
+  c.source_format = source_format;
+  c.source_meshes = source_meshes;
+  c.file_rate_hz = file_rate_hz;
+  return c;
+}
+
 Status Clip::validate() const {
   if (Status s = skeleton.validate(); !s) return s;
   const std::size_t n = skeleton.joints.size();

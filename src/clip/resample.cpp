@@ -254,14 +254,8 @@ Result<Clip> resample_clip(const Clip& in, const ResampleOptions& options) {
                       " joints, more than " + std::to_string(kMaxOutputKeys) + " keys; give a lower --fps or a --range");
   };
   Plan plan;
-  Clip out;
-  out.name = in.name;
-  out.skeleton = in.skeleton;
+  Clip out = in.without_tracks();
   out.bvh_layout = in.bvh_layout;
-  out.unit = in.unit;
-  out.source_format = in.source_format;
-  out.source_meshes = in.source_meshes;
-  out.file_rate_hz = in.file_rate_hz;
   if (opt.keep_every) {
     const Rate& r = *grid->rate;
     const double fa = a * static_cast<double>(r.num) / static_cast<double>(r.den);

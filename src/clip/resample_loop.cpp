@@ -126,13 +126,7 @@ Result<CycleResample> resample_cycle(const Clip& in, const ResampleOptions& opti
 
   // Where output frame k is sampled on the source timeline, and its own time.
   std::vector<double> eval_times, out_times, key_times;
-  Clip out;
-  out.name = in.name;
-  out.skeleton = in.skeleton;
-  out.unit = in.unit;
-  out.source_format = in.source_format;
-  out.source_meshes = in.source_meshes;
-  out.file_rate_hz = in.file_rate_hz;
+  Clip out = in.without_tracks();
   if (options.keep_every) {
     result.period_frames = check.period_frames;
     result.period = source_period;

@@ -74,6 +74,10 @@ struct Clip {
 
   // Invariants: skeleton valid; one rotation and one translation entry per joint;
   // every track valid.
+  // The clip's description without its tracks (name, skeleton, unit, source format,
+  // meshes, file rate): what a rebuilt clip starts from. Its frame time and BVH
+  // layout are the caller's to set, as they hold only at the source's rate.
+  Clip without_tracks() const;
   Status validate() const;
   // Earliest and latest key time over all tracks.
   double start_time() const;

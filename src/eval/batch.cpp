@@ -53,14 +53,14 @@ class CsvWriter {
  public:
   // `seam`: the seam columns of eval --loop.
   CsvWriter(const fs::path& target, bool seam) : out_(target, TempKind::unnamed), seam_(seam) {
-    const std::string header = error_csv_header(seam) + '\n';
+    const std::string header = error_csv_schema(seam).header();
     (void)out_.write(header.data(), header.size());
   }
   bool good() const { return out_.status().ok(); }
   // Writes the rows of one clip and adds them to the summary.
   void add_clip(const std::vector<ErrorRow>& rows, SummaryBuilder& summary) {
     std::string text;
-    for (const ErrorRow& r : rows) text += format_error_row(r, seam_) + '\n';
+    for (const ErrorRow& r : rows) text += format_error_row(r, seam_);
     (void)out_.write(text.data(), text.size());
     summary.add_clip(rows);
   }
@@ -198,16 +198,18 @@ Result<std::vector<std::pair<std::string, Clip>>> read_takes(const std::string& 
 // The per-frame error series of `R` as CSV: sample, time, whether the sample is a
 // key, then one column of degrees per joint.
 std::string per_frame_csv(const ClipReference& R, const PerFrameRequest& q, const PerFrameErrors& e) {
-  std::string out = "sample,time_s,key";
-  for (const Joint& j : R.skeleton.joints) out += "," + csv_field(j.name);
-  out += '\n';
+  std::vector<std::string> columns = {"sample", "time_s", "key"};
+  for (const Joint& j : R.skeleton.joints) columns.push_back(j.name);
+  const CsvSchema schema(std::move(columns));
+  std::string out = schema.header();
   const std::vector<std::size_t> kf = key_frames(R, q.keep_every);  // eval/seam.h: with --loop, the period's
   std::vector<char> key(R.samples, 0);
   for (std::size_t k : kf) key[k * R.per_frame] = 1;
   for (std::size_t m = 0; m < R.samples; ++m) {
-    out += fmt::format("{},{},{}", m, e.times[m], int(key[m]));
-    for (const auto& joint : e.angle) out += fmt::format(",{}", joint[m]);
-    out += '\n';
+    CsvRow row(schema);
+    row << std::to_string(m) << fmt::format("{}", e.times[m]) << (key[m] ? "1" : "0");
+    for (const auto& joint : e.angle) row << fmt::format("{}", joint[m]);
+    out += row.line();
   }
   return out;
 }

@@ -286,24 +286,28 @@ std::string format_summary_table(const Summary& s, TableFormat format) {
 }
 
 std::string clips_csv(const Summary& s) {
-  std::string out =
-      "clip,method,keep_every,frames,joints,keys,motion_deg,samples,mean_deg,rms_deg,p95_deg,max_deg,max_joint,"
-      "pos_rms_pct,pos_max_pct,shell_rms_pct,shell_max_pct,feet,contact_frames,skate_ratio,skate_speed_mps,"
-      "contact_frames_ref,skate_ratio_ref,skate_speed_ref_mps,extra_skate_ratio,extra_skate_speed_mps";
-  out += s.seam ? "," + seam_csv_header() + "\n" : "\n";
-  const auto q = csv_field;
+  static const CsvSchema plain = {
+      "clip", "method", "keep_every", "frames", "joints", "keys", "motion_deg", "samples", "mean_deg", "rms_deg",
+      "p95_deg", "max_deg", "max_joint", "pos_rms_pct", "pos_max_pct", "shell_rms_pct", "shell_max_pct", "feet",
+      "contact_frames", "skate_ratio", "skate_speed_mps", "contact_frames_ref", "skate_ratio_ref",
+      "skate_speed_ref_mps", "extra_skate_ratio", "extra_skate_speed_mps"};
+  static const CsvSchema with_seam = plain + seam_csv_schema();
+  const CsvSchema& schema = s.seam ? with_seam : plain;
+  const auto n = [](auto v) { return fmt::format("{}", v); };
+  std::string out = schema.header();
   for (const ClipResult& c : s.clip_results) {
-    out += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}", q(c.clip), q(c.method), c.keep_every,
-                       c.frames, c.joints, c.keys, c.motion_deg, c.samples, c.mean_deg, c.rms_deg, c.p95_deg,
-                       c.max_deg, q(c.max_joint), c.pos_rms_pct, c.pos_max_pct, c.shell_rms_pct, c.shell_max_pct,
-                       c.skating.feet);
+    CsvRow row(schema);
+    row << c.clip << c.method << n(c.keep_every) << n(c.frames) << n(c.joints) << n(c.keys) << n(c.motion_deg)
+        << n(c.samples) << n(c.mean_deg) << n(c.rms_deg) << n(c.p95_deg) << n(c.max_deg) << c.max_joint
+        << n(c.pos_rms_pct) << n(c.pos_max_pct) << n(c.shell_rms_pct) << n(c.shell_max_pct) << n(c.skating.feet);
     const FootSkating& f = c.skating;
     if (f.feet)
-      out += fmt::format(",{},{},{},{},{},{},{},{}", f.contact, f.ratio(), f.speed(), f.contact_ref, f.ratio_ref(),
-                         f.speed_ref(), f.ratio() - f.ratio_ref(), f.speed() - f.speed_ref());
+      row << n(f.contact) << n(f.ratio()) << n(f.speed()) << n(f.contact_ref) << n(f.ratio_ref())
+          << n(f.speed_ref()) << n(f.ratio() - f.ratio_ref()) << n(f.speed() - f.speed_ref());
     else
-      out += ",,,,,,,,";
-    out += s.seam ? "," + seam_csv_fields(c.seam) + "\n" : "\n";
+      row.skip(8);
+    if (s.seam) add_seam_fields(row, c.seam);
+    out += row.line();
   }
   return out;
 }

@@ -41,7 +41,7 @@ std::string utc_now() {
 RunOptions run_options(const EvalOptions& e) {
   const ClipEvalOptions& o = e.clip;
   return {o.methods,          o.keep_every,           o.subframe,
-          o.shell_distance_m, static_cast<bool>(e.truth_for), e.animation,
+          o.shell_distance_m, e.truth.name, e.animation,
           o.min_frames,       o.feet.feet,            o.feet.contact_height_m,
           o.feet.contact_speed_mps, o.feet.floor_m, e.unit,
           o.loop ? (o.loop_form ? loop_form_name(*o.loop_form) : "auto") : "off"};
@@ -228,8 +228,8 @@ void prepare_clip(const std::string& file, const EvalOptions& opt, ClipSlot& slo
   }
   for (auto& [id, clip] : *takes) {
     ClipEvalOptions copt = opt.clip;
-    if (opt.truth_for) {
-      auto truth = opt.truth_for(file, clip);
+    if (opt.truth.for_clip) {
+      auto truth = opt.truth.for_clip(file, clip);
       if (!truth) {
         slot.load_failure = EvalFailure{file, truth.error()};
         return;

@@ -184,6 +184,7 @@ TEST(Summary, TooShortClipsAndTheNewOptionsReadBackFromTheJson) {
   r.options.contact_height_m = 0.05;
   r.options.contact_speed_mps = 0.5;
   r.options.floor_m = 0.1;
+  r.options.truth = "source";
   r.too_short.push_back({"clip.bvh", 20, {16}});
   const std::filesystem::path f = std::filesystem::path(testing::TempDir()) / "rotinterp_summary_roundtrip.json";
   std::ofstream(f) << summary_json(r, Summary{});

@@ -1,4 +1,5 @@
 // rotinterp eval PATH... | eval --merge DIR... -o DIR: batch angular-error evaluation.
+#include "allocator.h"
 #include "common.h"
 #include "rotinterp/clip/units.h"
 #include "rotinterp/eval/batch.h"

@@ -88,6 +88,7 @@ Status resample_file(FileRun& run, const ResampleArgs& a, const ResampleOptions&
   read_options.animation = a.anim;
   read_options.unit = a.unit_m;
   read_options.on_warning = warn;
+  read_options.threads = opt.threads;
   stage("reading " + run.input);
   // --method source: the frames come from the grid and the default method, then the
   // joints with curves are evaluated from them (io/fbx_source.h).
@@ -138,6 +139,7 @@ Status resample_file(FileRun& run, const ResampleArgs& a, const ResampleOptions&
   write_options.bvh_order = a.bvh_order;
   write_options.fbx_ascii = a.fbx_ascii;
   write_options.on_warning = warn;
+  write_options.threads = opt.threads;
   stage("writing " + run.output.string());
   const Status written = write_clip(*out, run.output, write_options);
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

@@ -296,7 +296,7 @@ Result<Clip> resample_clip(const Clip& in, const ResampleOptions& options) {
 
   out.rotations.resize(n);
   out.translations.resize(n);
-  unsigned threads = opt.threads ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
+  unsigned threads = thread_count(opt.threads);
   threads = static_cast<unsigned>(std::min<std::size_t>(threads, n));
   // Tiny jobs are faster on one thread.
   if (plan.eval_times.size() * n < 20000) threads = 1;

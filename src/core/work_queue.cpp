@@ -6,8 +6,12 @@
 
 namespace rotinterp {
 
+unsigned thread_count(unsigned requested) {
+  return requested ? requested : std::max(1u, std::thread::hardware_concurrency());
+}
+
 WorkQueue::WorkQueue(unsigned threads) {
-  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+  threads = thread_count(threads);
   for (unsigned i = 0; i < threads; ++i) {
     try {
       workers_.emplace_back([this] { run(); });

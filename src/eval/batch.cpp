@@ -229,7 +229,7 @@ void evaluate_in_order(const std::vector<std::string>& files, const EvalOptions&
 }
 
 std::size_t worker_count(int jobs) {
-  return jobs > 0 ? static_cast<std::size_t>(jobs) : std::max(1u, std::thread::hardware_concurrency());
+  return thread_count(jobs > 0 ? static_cast<unsigned>(jobs) : 0);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // A parsed BVH file as a clip: its skeleton, layout and every frame's rotations
 // and translations (BvhFile's accessors; long files on two threads).
 #include "rotinterp/io/bvh.h"
+#include "rotinterp/core/work_queue.h"
 
 #include <cmath>
 #include <exception>
@@ -94,7 +95,7 @@ void convert_frames(const BvhFile& file, const std::vector<RotationLayout>& layo
 
 }  // namespace
 
-Clip bvh_to_clip(const BvhFile& file, const std::string& name) {
+Clip bvh_to_clip(const BvhFile& file, const std::string& name, unsigned threads) {
   Clip clip;
   clip.name = name;
   clip.skeleton = bvh_skeleton(file);
@@ -125,7 +126,7 @@ Clip bvh_to_clip(const BvhFile& file, const std::string& name) {
   std::size_t split = frames;
   std::exception_ptr helper_error;  // e.g. bad_alloc, rethrown here for read_clip to report
   std::optional<std::thread> helper;
-  if (file.values.size() >= kMinValuesForThreads && std::thread::hardware_concurrency() > 1) {
+  if (file.values.size() >= kMinValuesForThreads && thread_count(threads) > 1) {
     split = frames / 2;
     try {
       helper.emplace([&] {

@@ -1,6 +1,7 @@
 // The BVH writer: the clip's hierarchy and channel layout, Euler angles nearest the
 // previous frame, 6 decimals.
 #include "rotinterp/io/bvh.h"
+#include "rotinterp/core/work_queue.h"
 #include "rotinterp/io/euler.h"
 #include "fixed6.h"
 
@@ -281,7 +282,7 @@ Status write_bvh(const Clip& clip, std::ostream& out, const WriteOptions& option
   for (std::size_t j : order) first_column[j] = columns, columns += layout[j].size();
   constexpr std::size_t kBlockFrames = 4096;
   constexpr std::size_t kMinValuesForThreads = 200000;
-  const bool two_threads = frames * columns >= kMinValuesForThreads && n > 1 && std::thread::hardware_concurrency() > 1;
+  const bool two_threads = frames * columns >= kMinValuesForThreads && n > 1 && thread_count(options.threads) > 1;
   std::vector<double> block(std::min(frames, kBlockFrames) * columns);
   std::vector<Status> status(n, Status(Ok{}));
   std::vector<std::size_t> failed_frame(n, frames);

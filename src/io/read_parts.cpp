@@ -134,7 +134,7 @@ Status bvh_file_to_clip(const BvhFile& bvh, const std::string& animation_name, c
   if (!options.animation.empty() && options.animation != "0" && options.animation != s.name)
     return make_error(path.string() + ": a BVH file has one animation (0); there is no animation '" +
                       options.animation + "'");
-  info.clip = bvh_to_clip(bvh, path.stem().string());
+  info.clip = bvh_to_clip(bvh, path.stem().string(), options.threads);
   return Ok{};
 }
 

@@ -20,6 +20,12 @@
 
 namespace rotinterp {
 
+// The threads a caller's request stands for: `requested`, or with 0 one per hardware
+// thread. Every library call that runs work in parallel takes its count from its
+// caller this way, so a caller that runs files side by side (a folder run) gives
+// each call its share instead of pools starting inside pools.
+unsigned thread_count(unsigned requested);
+
 class WorkQueue {
  public:
   // `threads` workers (0: one per hardware thread); fewer when the system gives no

@@ -86,7 +86,7 @@ BvhLayout bvh_layout(const BvhFile& file);
 // A clip read entirely from the parsed file (double precision, no assimp). Key k
 // is at k·frame_time; joints with position channels get translation tracks. The
 // clip carries the file's layout (Clip::bvh_layout).
-Clip bvh_to_clip(const BvhFile& file, const std::string& name);
+Clip bvh_to_clip(const BvhFile& file, const std::string& name, unsigned threads = 0);
 
 // Writes `clip` as BVH text. Joints keep the clip's order (parents must come
 // first), OFFSETs, End Sites and channel layout (Clip::bvh_layout, and its Frame

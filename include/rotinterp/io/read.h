@@ -67,6 +67,9 @@ struct ReadOptions {
   // read (ClipFileInfo::curves; `info --curves`). A malformed curve then refuses the
   // file (ErrorKind::unreadable). Off by default.
   bool read_curves = false;
+  // Threads for a long BVH's conversion (core/work_queue.h thread_count: 0 = as many as
+  // the machine has; it uses two at most). A caller reading files side by side gives 1.
+  unsigned threads = 0;
   // Every assimp import (any file but a BVH read without the cross-check) runs in a
   // separate importer process (rotinterp-import, see find_importer()), which sends
   // its reading back; this process never calls assimp's importers. assimp 5.2.5

@@ -31,6 +31,9 @@ struct WriteOptions {
   // Receives one-line warnings ("<file>: <what>"), e.g. that the source's meshes and
   // skins are not written; empty = dropped. The CLI prints them on stderr.
   std::function<void(const std::string&)> on_warning;
+  // Threads for a long BVH's text (core/work_queue.h thread_count: 0 = as many as the
+  // machine has; it uses two at most). A caller writing files side by side gives 1.
+  unsigned threads = 0;
 };
 
 // Writes `clip` to `path`; the format follows the extension (bvh, fbx, glb, gltf,

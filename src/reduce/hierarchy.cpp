@@ -35,10 +35,11 @@ Status Reducer::run_independent() {
 }
 
 // Whether a track is exact at f: keyed there, and a rotation key with the source's
-// value (not a fitted one).
+// value (not a fitted one). In a closed cycle a looped track's last frame is keyed by the seam.
 bool Reducer::exact_at(const Track& t, std::size_t f) const {
-  if (t.translation) return !clip_.translations[t.joint] || has(tkeys_[t.joint], f);
-  return has(rkeys_[t.joint], f) && value_[t.joint][f].coeffs() == dense_.rotation[t.joint][f].coeffs();
+  const std::size_t k = key_frame(t.joint, f);
+  if (t.translation) return !clip_.translations[t.joint] || has(tkeys_[t.joint], k);
+  return has(rkeys_[t.joint], k) && value_[t.joint][k].coeffs() == dense_.rotation[t.joint][k].coeffs();
 }
 
 // j's shell error at f with its own rotation exact and the tracks in `exact` exact
@@ -166,8 +167,9 @@ Status Reducer::run_hierarchical() {
     std::vector<char> changed(joints_, 0);
     for (const auto& list : escalate)
       for (const auto& [t, f] : list) {
-        add_key(t.translation ? tkeys_[t.joint] : rkeys_[t.joint], f);
-        if (!t.translation) value_[t.joint][f] = dense_.rotation[t.joint][f];
+        const std::size_t k = key_frame(t.joint, f);
+        add_key(t.translation ? tkeys_[t.joint] : rkeys_[t.joint], k);
+        if (!t.translation) value_[t.joint][k] = dense_.rotation[t.joint][k];
         changed[t.joint] = 1;
       }
     for (auto& list : escalate) list.clear();

@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <utility>
 
 namespace rotinterp {
 
@@ -45,7 +47,16 @@ Result<ReduceResult> reduce_clip(const Clip& clip, const ReduceOptions& o) {
       return make_error("a shell budget needs a shell distance > 0");
   }
   for (ReduceBudget& b : budgets) b.translation = translation_tolerance(b);
-  return detail::Reducer(clip, o, std::move(budgets)).run();
+  std::optional<LoopCheck> cycle;
+  if (o.loop) {
+    auto checked = check_loop(clip, o.loop_form);
+    if (!checked) return checked.failure();
+    if (!o.loop_form && !checked->looks_like_cycle)
+      return make_error("--loop: the clip does not look like a cycle: " + loop_check_text(*checked) +
+                        " (give --loop closed or --loop open to treat it as one)");
+    cycle = std::move(*checked);
+  }
+  return detail::Reducer(clip, o, std::move(budgets), std::move(cycle)).run();
 }
 
 }  // namespace rotinterp

@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <utility>
 
 namespace rotinterp::detail {
 
@@ -63,7 +65,8 @@ DenseClip exact_dense_clip(const Clip& clip) {
   return d;
 }
 
-Reducer::Reducer(const Clip& clip, const ReduceOptions& o, std::vector<ReduceBudget> budgets)
+Reducer::Reducer(const Clip& clip, const ReduceOptions& o, std::vector<ReduceBudget> budgets,
+                 std::optional<LoopCheck> cycle)
     : clip_(clip), o_(o), budget_(std::move(budgets)), dense_(exact_dense_clip(clip)), value_(dense_.rotation),
       start_(smoothed(dense_)) {
   children_.resize(clip.skeleton.joints.size());
@@ -78,6 +81,7 @@ Reducer::Reducer(const Clip& clip, const ReduceOptions& o, std::vector<ReduceBud
     if (clip.translations[j]) tkeys_[j] = ends(n_);
   out_.assign(joints_, ReducedJoint{});
   test_translation_.resize(joints_);
+  if (cycle) setup_ = set_cycle(std::move(*cycle));
   if (shell_) {
     ref_rot_.assign(joints_, std::vector<Quat>(n_));
     ref_pos_.assign(joints_, std::vector<Vec3>(n_));
@@ -101,7 +105,44 @@ Reducer::Reducer(const Clip& clip, const ReduceOptions& o, std::vector<ReduceBud
   }
 }
 
+// The cycle's period on the grid, which joints loop (those the check finds closing, as
+// resample --loop and any reader of the output decide), their offsets and start keys:
+// the seam and its image.
+Status Reducer::set_cycle(LoopCheck check) {
+  Cycle c;
+  c.period = check.period;
+  const double frame = check.period / static_cast<double>(check.period_frames);
+  const double end = times()[0] + check.period - 0.5 * frame;
+  c.frames = static_cast<std::size_t>(std::lower_bound(times().begin(), times().end(), end) - times().begin());
+  const bool closed = check.form == LoopForm::closed;
+  if (c.frames != (closed ? n_ - 1 : n_))
+    return make_error(std::string("the clip's frames do not end ") + (closed ? "one period" : "one frame short of a period") +
+                      " after the first (" + loop_form_name(check.form) + " cycle)");
+  c.looped.assign(joints_, 1);
+  for (const ClosureMiss& m : check.misses) c.looped[m.joint] = 0;
+  c.offset.assign(joints_, Vec3::Zero());
+  std::vector<std::size_t> all(n_);
+  for (std::size_t f = 0; f < n_; ++f) all[f] = f;
+  for (std::size_t j = 0; j < joints_; ++j) {
+    if (!c.looped[j]) continue;
+    // A closed cycle's last frame is its first again, as the curve replays it (the
+    // source's own closure miss, within the check's tolerance, is not the curve's to meet).
+    if (closed) {
+      const std::size_t last = n_ - 1;
+      dense_.rotation[j][last] = value_[j][last] = start_[j][last] = dense_.rotation[j][0];
+    }
+    rkeys_[j] = {0, c.frames};
+    if (!clip_.translations[j]) continue;
+    tkeys_[j] = {0, c.frames};
+    c.offset[j] = per_cycle_offset(translation_keys(times(), dense_.translation[j], all), check.form, frame);
+  }
+  c.check = std::move(check);
+  cycle_ = std::move(c);
+  return Ok{};
+}
+
 Result<ReduceResult> Reducer::run() {
+  if (!setup_) return setup_.failure();
   if (n_ >= 2) {
     if (Status s = shell_ ? run_hierarchical() : run_independent(); !s) return s.failure();
   } else {
@@ -113,15 +154,31 @@ Result<ReduceResult> Reducer::run() {
   for (std::size_t j = 0; j < joints_; ++j) {
     out_[j].rotation_frames = rkeys_[j];
     out_[j].translation_frames = tkeys_[j];
-    r.reduced.rotations[j] = decimated_track(dense_.grid.times, value_[j], rkeys_[j]);
+    // A looped joint's last key closes the cycle: the seam again, one period on, not a key of its own.
+    const std::size_t closing = looped(j) ? 1 : 0;
+    out_[j].looped = looped(j);
+    if (closing) {
+      RotationTrack& rot = r.reduced.rotations[j] = decimated_track(times(), value_[j], in_period(rkeys_[j]));
+      rot.times.push_back(closing_time());
+      rot.keys.push_back(value_[j][0]);
+      rot.make_sign_continuous();
+    } else {
+      r.reduced.rotations[j] = decimated_track(times(), value_[j], rkeys_[j]);
+    }
     r.source_keys += n_;
-    r.kept_keys += rkeys_[j].size();
+    r.kept_keys += rkeys_[j].size() - closing;
     if (clip_.translations[j]) {
-      r.reduced.translations[j] = translation_keys(dense_.grid.times, dense_.translation[j], tkeys_[j]);
+      TranslationTrack& tr = r.reduced.translations[j].emplace(
+          translation_keys(times(), dense_.translation[j], closing ? in_period(tkeys_[j]) : tkeys_[j]));
+      if (closing) {
+        tr.times.push_back(closing_time());
+        tr.keys.push_back(dense_.translation[j][0] + cycle_->offset[j]);
+      }
       r.source_keys += n_;
-      r.kept_keys += tkeys_[j].size();
+      r.kept_keys += tkeys_[j].size() - closing;
     }
   }
+  if (cycle_) r.cycle = cycle_->check;
   r.joints = std::move(out_);
   r.grid = std::move(dense_.grid);
   return r;

@@ -2,10 +2,12 @@
 // that runs it over a clip's joints (reduce/reduce.h says what it does).
 #pragma once
 
+#include "rotinterp/clip/loop.h"
 #include "rotinterp/reduce/reduce.h"
 
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <vector>
 
 namespace rotinterp::detail {
@@ -52,8 +54,14 @@ inline constexpr double kStartSmoothing = 0.0070771;  // s: (1/120) / √(2 ln 2
 // power: frames within budget still pull (so that the worst one is not traded for them).
 inline constexpr double kRefitWeightFloor = 0.5;
 
-// Normalized error (≤ 1: within budget) of the frames [lo, hi] of a curve rebuilt
-// from the sorted key frames `keys` (which span [lo, hi]); out[f − lo].
+// The frames lo, lo + 1, …, hi of a clip's n frames; in a cycle hi < lo wraps round the
+// seam: lo … n − 1, then 0 … hi.
+inline std::size_t span_frames(std::size_t lo, std::size_t hi, std::size_t n) { return hi >= lo ? hi - lo + 1 : n - lo + hi + 1; }
+inline std::size_t span_frame(std::size_t lo, std::size_t k, std::size_t n) { return lo + k < n ? lo + k : lo + k - n; }
+
+// Normalized error (≤ 1: within budget) of the frames [lo, hi] (a span, above) of a
+// curve rebuilt from the sorted key frames `keys` (which span [lo, hi] outside a
+// cycle); out[k] for the span's k-th frame.
 using ErrorFn = std::function<Status(const std::vector<std::size_t>& keys, std::size_t lo, std::size_t hi, double* out)>;
 // Key values that are fitted rather than copied from the source (rotation tracks):
 //  * start(f) sets the value of a new key at f;
@@ -68,7 +76,6 @@ struct KeyValues {
                              std::size_t hi)>
       refit;
 };
-
 // The residuals of a frame with value q (see Reducer::refit_values).
 using ResidualFn = std::function<double(std::size_t f, const Quat& q, double* out)>;
 
@@ -77,6 +84,11 @@ using ResidualFn = std::function<double(std::size_t f, const Quat& q, double* ou
 // ones on return; `e` is scratch.
 Status select_keys(std::vector<std::size_t>& keys, std::size_t frames, const ErrorFn& err, const KeyValues* values,
                    bool removal, std::vector<double>& e);
+// The same on a cycle of `frames` frames (select_cycle.cpp): keys[0] = 0 is the seam, the
+// one key the cycle keeps; the last key is its image one period on (closed: frames − 1,
+// open: frames), no key of its own. Intervals, removals and refits wrap round the seam.
+Status select_cycle_keys(std::vector<std::size_t>& keys, std::size_t frames, const ErrorFn& err, const KeyValues* values,
+                         bool removal, std::vector<double>& e);
 // The first and last of `frames` frames (one for one frame, none for none).
 std::vector<std::size_t> ends(std::size_t frames);
 bool has(const std::vector<std::size_t>& keys, std::size_t f);
@@ -88,10 +100,37 @@ double shell_error_above(const Quat& r_ref, const Vec3& p_ref, const Quat& r_tes
 
 class Reducer {
  public:
-  Reducer(const Clip& clip, const ReduceOptions& o, std::vector<ReduceBudget> budgets);
+  // `cycle`: the clip's cycle check (reduce --loop), whose closing joints are looped.
+  Reducer(const Clip& clip, const ReduceOptions& o, std::vector<ReduceBudget> budgets, std::optional<LoopCheck> cycle);
   Result<ReduceResult> run();
 
  private:
+  // A cycle's frames: keys lie in [0, frames) — the period, the seam's image (closed: the
+  // last frame; open: one past it) left out; looped joints are rebuilt periodically.
+  struct Cycle {
+    LoopCheck check;
+    std::size_t frames = 0;
+    double period = 0.0;     // seconds
+    std::vector<char> looped;  // [joint]: closes (not a miss of the check)
+    std::vector<Vec3> offset;  // [joint]: its translation's per-cycle offset
+  };
+  Status set_cycle(LoopCheck check);
+  bool looped(std::size_t j) const { return cycle_ && cycle_->looped[j]; }
+  // The key frame a frame falls on: the seam for a looped joint's last frame of a closed cycle.
+  std::size_t key_frame(std::size_t j, std::size_t f) const { return looped(j) && f >= cycle_->frames ? f - cycle_->frames : f; }
+  // A looped joint's keys without the seam's image.
+  std::vector<std::size_t> in_period(const std::vector<std::size_t>& keys) const {
+    return std::vector<std::size_t>(keys.begin(), keys.end() - 1);
+  }
+  // The time of the seam's image: the closing key a looped track is written with.
+  double closing_time() const {
+    return cycle_->check.form == LoopForm::closed ? dense_.grid.times[n_ - 1] : dense_.grid.times[0] + cycle_->period;
+  }
+  Status select_track_keys(std::size_t j, std::vector<std::size_t>& keys, const ErrorFn& err, const KeyValues* values,
+                           bool removal, std::vector<double>& e) {
+    return looped(j) ? select_cycle_keys(keys, n_, err, values, removal, e) : select_keys(keys, n_, err, values, removal, e);
+  }
+
   const std::vector<double>& times() const { return dense_.grid.times; }
   int parent(std::size_t j) const { return clip_.skeleton.joints[j].parent; }
 
@@ -150,6 +189,8 @@ class Reducer {
   std::vector<std::vector<Vec3>> test_translation_;
   std::vector<std::vector<Quat>> ref_rot_, test_rot_;
   std::vector<std::vector<Vec3>> ref_pos_, test_pos_;
+  std::optional<Cycle> cycle_;
+  Status setup_ = Ok{};  // an error found building the cycle, returned by run()
 };
 
 }  // namespace rotinterp::detail

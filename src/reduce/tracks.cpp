@@ -4,9 +4,12 @@
 #include "rotinterp/clip/metrics.h"
 #include "rotinterp/core/rotation.h"
 #include "rotinterp/interp/interpolator.h"
+#include "rotinterp/interp/periodic.h"
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <memory>
 
 namespace rotinterp::detail {
 
@@ -15,18 +18,31 @@ Status Reducer::select_translation(std::size_t j, bool removal, std::vector<doub
   if (!clip_.translations[j]) return Ok{};
   const double tol = budget_[j].translation;
   const std::vector<Vec3>& src = dense_.translation[j];
+  // The curve through the keys `keys`: in a cycle, periodic with the track's per-cycle offset.
+  auto evaluator = [&](const std::vector<std::size_t>& keys) -> std::function<Vec3(double)> {
+    if (!looped(j)) {
+      auto curve = std::make_shared<TranslationCurve>(translation_keys(times(), src, keys), o_.translation);
+      return [curve](double t) { return curve->evaluate(t); };
+    }
+    auto curve = std::make_shared<PeriodicTranslationCurve>(translation_keys(times(), src, in_period(keys)),
+                                                            cycle_->offset[j], times()[0], cycle_->period, o_.translation);
+    return [curve](double t) { return curve->evaluate(t); };
+  };
   ErrorFn err = [&](const std::vector<std::size_t>& keys, std::size_t lo, std::size_t hi, double* out) -> Status {
-    const TranslationCurve curve(translation_keys(times(), src, keys), o_.translation);
-    for (std::size_t f = lo; f <= hi; ++f) out[f - lo] = (curve.evaluate(times()[f]) - src[f]).norm() / tol;
+    const auto curve = evaluator(keys);
+    for (std::size_t k = 0, count = span_frames(lo, hi, n_); k < count; ++k) {
+      const std::size_t f = span_frame(lo, k, n_);
+      out[k] = (curve(times()[f]) - src[f]).norm() / tol;
+    }
     return Ok{};
   };
-  if (Status s = select_keys(tkeys_[j], n_, err, nullptr, removal, e); !s) return s;
-  const TranslationCurve curve(translation_keys(times(), src, tkeys_[j]), o_.translation);
+  if (Status s = select_track_keys(j, tkeys_[j], err, nullptr, removal, e); !s) return s;
+  const auto curve = evaluator(tkeys_[j]);
   std::vector<Vec3>& t = test_translation_[j];
   t.resize(n_);
   double worst = 0.0;
   for (std::size_t f = 0; f < n_; ++f) {
-    t[f] = curve.evaluate(times()[f]);
+    t[f] = curve(times()[f]);
     worst = std::max(worst, (t[f] - src[f]).norm());
   }
   out_[j].max_translation_error = worst;
@@ -34,6 +50,15 @@ Status Reducer::select_translation(std::size_t j, bool removal, std::vector<doub
 }
 
 Result<std::vector<Quat>> Reducer::rebuild(std::size_t j, const std::vector<std::size_t>& keys, std::size_t lo, std::size_t hi) const {
+  if (looped(j)) {
+    auto curve = make_periodic_interpolator(o_.method, decimated_track(times(), value_[j], in_period(keys)), cycle_->period);
+    if (!curve) return curve.failure();
+    std::vector<double> t(span_frames(lo, hi, n_));
+    for (std::size_t k = 0; k < t.size(); ++k) t[k] = times()[span_frame(lo, k, n_)];
+    std::vector<Quat> q(t.size());
+    (*curve)->evaluate(t.data(), t.size(), q.data());
+    return q;
+  }
   auto curve = make_interpolator(o_.method, decimated_track(times(), value_[j], keys));
   if (!curve) return curve.failure();
   std::vector<Quat> q(hi - lo + 1);
@@ -69,7 +94,7 @@ Status Reducer::select_rotation(std::size_t j, bool removal, std::vector<double>
   ErrorFn err = [&](const std::vector<std::size_t>& keys, std::size_t lo, std::size_t hi, double* out) -> Status {
     auto q = rebuild(j, keys, lo, hi);
     if (!q) return q.failure();
-    for (std::size_t f = lo; f <= hi; ++f) out[f - lo] = frame_error(f, (*q)[f - lo]);
+    for (std::size_t k = 0; k < q->size(); ++k) out[k] = frame_error(span_frame(lo, k, n_), (*q)[k]);
     return Ok{};
   };
   // The residuals behind frame_error, each block normalized by its budget (the
@@ -110,7 +135,7 @@ Status Reducer::select_rotation(std::size_t j, bool removal, std::vector<double>
                      std::size_t hi) -> Result<bool> {
     return refit_values(j, keys, free, lo, hi, blocks, residual);
   };
-  if (Status s = select_keys(rkeys_[j], n_, err, &values, removal, e); !s) return s;
+  if (Status s = select_track_keys(j, rkeys_[j], err, &values, removal, e); !s) return s;
   auto q = rebuild(j, rkeys_[j], 0, n_ - 1);
   if (!q) return q.failure();
   ReducedJoint& out = out_[j];

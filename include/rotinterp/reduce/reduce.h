@@ -51,12 +51,14 @@
 #pragma once
 
 #include "rotinterp/clip/clip.h"
+#include "rotinterp/clip/loop.h"
 #include "rotinterp/clip/frames.h"
 #include "rotinterp/clip/translation_curve.h"
 #include "rotinterp/core/progress.h"
 #include "rotinterp/core/result.h"
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -93,6 +95,10 @@ struct ReduceOptions {
   double shell_distance = 0.0;  // clip units; > 0 where a shell budget is set
   unsigned threads = 0;         // without a shell budget joints are independent: 0 = one per core
   ProgressFn progress;          // (joints done, joints)
+  // The clip is one period of a cycle (reduce --loop; clip/loop.h): off by default;
+  // `loop_form` forces the form, else it is detected.
+  bool loop = false;
+  std::optional<LoopForm> loop_form;
 };
 
 struct ReducedJoint {
@@ -103,6 +109,9 @@ struct ReducedJoint {
   double max_rotation_error = 0.0;     // rad
   double max_shell_error = 0.0;        // clip units (0 without a shell budget)
   double max_translation_error = 0.0;  // clip units
+  // In a cycle: on its periodic curve, its last key (rotation and translation) the
+  // closing one — the first again one period on — not counted as kept.
+  bool looped = false;
 };
 
 struct ReduceResult {
@@ -111,6 +120,7 @@ struct ReduceResult {
   std::vector<ReducedJoint> joints;
   std::size_t source_keys = 0;  // frames × (joints + translation tracks)
   std::size_t kept_keys = 0;    // rotation + translation keys kept
+  std::optional<LoopCheck> cycle;  // the cycle's check, with loop
 };
 
 // The translation error a joint's translation track is held to: its translation

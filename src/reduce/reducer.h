@@ -86,7 +86,8 @@ Status select_keys(std::vector<std::size_t>& keys, std::size_t frames, const Err
                    bool removal, std::vector<double>& e);
 // The same on a cycle of `frames` frames (select_cycle.cpp): keys[0] = 0 is the seam, the
 // one key the cycle keeps; the last key is its image one period on (closed: frames − 1,
-// open: frames), no key of its own. Intervals, removals and refits wrap round the seam.
+// open: frames), no key of its own. The last interval runs round the seam, and removals
+// and refits are checked on the whole periodic curve.
 Status select_cycle_keys(std::vector<std::size_t>& keys, std::size_t frames, const ErrorFn& err, const KeyValues* values,
                          bool removal, std::vector<double>& e);
 // The first and last of `frames` frames (one for one frame, none for none).

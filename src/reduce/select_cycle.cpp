@@ -1,4 +1,4 @@
-// Key selection on a cycle's track: the same steps as select.cpp, with every interval, window and refit wrapping round the seam.
+// Key selection on a cycle's track: the steps of select.cpp on the periodic curve, checked round the seam.
 #include "reducer.h"
 
 #include <algorithm>
@@ -44,49 +44,44 @@ Status insert_cycle(std::vector<std::size_t>& keys, std::size_t frames, const Er
   }
 }
 
-// Step 2 on a cycle: drop every key but the seam whose neighbourhood — from its second
-// neighbour before to its second after, round the seam — stays within budget on the
-// periodic curve without it; else refit its two neighbours' values (the seam's too),
-// checked between its third neighbours. Where the neighbourhood goes round the whole
-// cycle, every frame is checked.
+// Step 2 on a cycle: drop every key but the seam whose removal leaves every frame of the
+// cycle within budget (a frame already over it — one its ancestors put out of reach — no
+// further over): the whole periodic curve is checked, a cycle being short and a C²
+// curve's change reaching round it; else, at most kRefitReach over, refit its two
+// neighbours' values (the seam's too), checked over the whole cycle as well.
 Status remove_cycle(std::vector<std::size_t>& keys, std::size_t frames, const ErrorFn& err, const KeyValues* values,
                     std::vector<double>& e) {
-  const bool closed = keys.back() + 1 == frames;
   std::vector<std::size_t> window, free;
+  std::vector<double> now(frames);
+  bool measured = false;
   for (std::size_t i = 1; i + 1 < keys.size();) {
-    const std::size_t m = keys.size() - 1;  // keys in the period
-    auto around = [&](std::size_t back, std::size_t ahead) { return keys[(i + m - back + ahead) % m]; };
-    // The frames from the key `reach` before i to the key `reach` after it; a span that
-    // starts at the seam of a closed cycle starts at its image, the last frame.
-    auto span = [&](std::size_t reach, std::size_t& lo, std::size_t& hi) {
-      if (2 * reach >= m) {
-        lo = 0, hi = frames - 1;
-        return;
-      }
-      lo = around(reach, 0), hi = around(0, reach);
-      if (lo == 0 && closed) lo = frames - 1;
-    };
+    if (!measured) {
+      if (Status s = err(keys, 0, frames - 1, now.data()); !s) return s;
+      measured = true;
+    }
     window.assign(keys.begin(), keys.end());
     window.erase(window.begin() + static_cast<std::ptrdiff_t>(i));
-    std::size_t lo = 0, hi = 0;
-    span(2, lo, hi);
-    e.resize(span_frames(lo, hi, frames));
-    if (Status s = err(window, lo, hi, e.data()); !s) return s;
-    const double worst = *std::max_element(e.begin(), e.end());
+    e.resize(frames);
+    if (Status s = err(window, 0, frames - 1, e.data()); !s) return s;
+    double worst = 0.0;
+    for (std::size_t f = 0; f < frames; ++f) worst = std::max(worst, e[f] / std::max(1.0, now[f]));
     bool drop = worst <= 1.0;
     if (!drop && values && worst <= kRefitReach) {
+      const std::size_t m = keys.size() - 1;  // keys in the period
+      auto around = [&](std::size_t back, std::size_t ahead) { return keys[(i + m - back + ahead) % m]; };
       free = {around(1, 0), around(0, 1)};
       std::sort(free.begin(), free.end());
       free.erase(std::unique(free.begin(), free.end()), free.end());
-      span(3, lo, hi);
-      auto fitted = values->refit(window, free, lo, hi);
+      auto fitted = values->refit(window, free, 0, frames - 1);
       if (!fitted) return fitted.failure();
       drop = *fitted;
     }
-    if (drop)
+    if (drop) {
       keys.erase(keys.begin() + static_cast<std::ptrdiff_t>(i));
-    else
+      measured = false;
+    } else {
       ++i;
+    }
   }
   return Ok{};
 }

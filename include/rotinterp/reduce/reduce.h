@@ -3,7 +3,7 @@
 //
 // The source is the clip's motion at its frames (clip/frames.h: dense_clip). For
 // each joint the kept keys lie at a subset of those frames, always including the
-// first and the last; the rebuilt clip is each joint's rotation through its kept
+// first and the last (in a cycle: below); the rebuilt clip is each joint's rotation through its kept
 // keys with the method (interp/interpolator.h) and each translation track through
 // its kept keys with the translation curve (clip/translation_curve.h). Translation
 // keys hold the source's values; rotation keys may hold FITTED values (below), so
@@ -46,6 +46,16 @@
 // only return to the source's, so the loop ends; a frame keyed with the source's
 // values on a joint and all its ancestors is reproduced exactly (to the methods'
 // 1e-9 rad at keys).
+// A cycle (options.loop; clip/loop.h): each joint that closes is rebuilt on its
+// periodic curve (interp/periodic.h; translations with their per-cycle offset,
+// clip/translation_curve.h) and measured on it at every frame; its first frame is the
+// seam, its one forced key (its value fitted), and the last frame no key of its own; the
+// last key interval runs round the seam, and removals and refits are checked on the
+// whole periodic curve. In a closed cycle the last frame is the first again: the looped
+// joints are measured there against the first frame's rotations. Joints that miss
+// closure keep their ends. The reduced clip closes every looped track with a key one
+// period after the first (the first key again; translations moved by the offset), not
+// counted as kept, so that resample --loop and a reader unaware of cycles replay it.
 // The result is near-minimal, not minimal (finding the minimum is a search over
 // subsets and values for the non-local methods).
 #pragma once

@@ -223,6 +223,41 @@ TEST(ReduceLoop, RealCyclesReplayWithinTheDefaultBudgetAcrossTheSeam) {
   }
 }
 
+// The file itself: the sparse GLB reduce --loop writes, resampled with resample --loop at
+// the source's rate, stays within the angle budget at every frame, the seam's included
+// (slerp: the LINEAR samplers; L_Arm, the source's pop, keeps its ends).
+TEST(ReduceLoopCli, TheWrittenGlbResampledAsACycleReplaysWithinBudgetAtEveryFrame) {
+  const fs::path dir = fs::temp_directory_path() / ("rotinterp_reduce_loop_glb_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string run = std::string(ROTINTERP_SHARED_DATA) + "/fbx/digitalrune_Marine_Run.fbx";
+  const std::string keys = (dir / "run.glb").string(), replay = (dir / "replay.glb").string();
+  auto reduced = test::run_cli("reduce " + run + " -o " + keys + " --loop --tolerance 0.5deg --quiet");
+  ASSERT_EQ(reduced.exit_code, 0) << reduced.err;
+  auto resampled = test::run_cli("resample " + keys + " -o " + replay + " --loop closed --fps 30 -m slerp --quiet");
+  ASSERT_EQ(resampled.exit_code, 0) << resampled.err;
+  auto source = read_clip(run);
+  auto out = read_clip(replay);
+  ASSERT_TRUE(source) << source.error();
+  ASSERT_TRUE(out) << out.error();
+  const DenseClip ref = dense_clip(*source);
+  const std::size_t n = out->rotations[0].times.size();
+  ASSERT_EQ(n, 39u);
+  double seam = 0.0, inside = 0.0;
+  for (std::size_t j = 0; j < source->skeleton.joints.size(); ++j) {
+    ASSERT_EQ(out->rotations[j].keys.size(), n);
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::optional<std::size_t> f = ref.grid.frame_at(out->rotations[j].times[k]);
+      ASSERT_TRUE(f);
+      const double a = angular_distance(ref.rotation[j][*f], out->rotations[j].keys[k]) / kDeg;
+      (k <= 1 || k + 2 >= n ? seam : inside) = std::max(k <= 1 || k + 2 >= n ? seam : inside, a);
+    }
+  }
+  EXPECT_LE(seam, 0.5 + 1e-4);  // the GLB's floats: ≤ 2e-6° (docs/reduce.md)
+  EXPECT_LE(inside, 0.5 + 1e-4);
+  EXPECT_GT(inside, 0.4) << "the budget is used, so the check can fail";
+  fs::remove_all(dir);
+}
+
 TEST(ReduceLoopCli, ABadLoopWordOrAClipThatIsNoCycleIsOneLine) {
   const std::string walk = std::string(ROTINTERP_SOURCE_DIR) + "/samples/walk.bvh";
   const fs::path out = fs::temp_directory_path() / ("rotinterp_reduce_loop_" + std::to_string(::getpid()) + ".json");

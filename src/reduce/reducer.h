@@ -54,14 +54,8 @@ inline constexpr double kStartSmoothing = 0.0070771;  // s: (1/120) / √(2 ln 2
 // power: frames within budget still pull (so that the worst one is not traded for them).
 inline constexpr double kRefitWeightFloor = 0.5;
 
-// The frames lo, lo + 1, …, hi of a clip's n frames; in a cycle hi < lo wraps round the
-// seam: lo … n − 1, then 0 … hi.
-inline std::size_t span_frames(std::size_t lo, std::size_t hi, std::size_t n) { return hi >= lo ? hi - lo + 1 : n - lo + hi + 1; }
-inline std::size_t span_frame(std::size_t lo, std::size_t k, std::size_t n) { return lo + k < n ? lo + k : lo + k - n; }
-
-// Normalized error (≤ 1: within budget) of the frames [lo, hi] (a span, above) of a
-// curve rebuilt from the sorted key frames `keys` (which span [lo, hi] outside a
-// cycle); out[k] for the span's k-th frame.
+// Normalized error (≤ 1: within budget) of the frames [lo, hi] of a curve rebuilt
+// from the sorted key frames `keys` (which span [lo, hi] outside a cycle); out[f − lo].
 using ErrorFn = std::function<Status(const std::vector<std::size_t>& keys, std::size_t lo, std::size_t hi, double* out)>;
 // Key values that are fitted rather than copied from the source (rotation tracks):
 //  * start(f) sets the value of a new key at f;

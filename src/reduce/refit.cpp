@@ -17,7 +17,7 @@ namespace rotinterp::detail {
 // own axes. True with the values stored if it gets there; else they are restored.
 Result<bool> Reducer::refit_values(std::size_t j, const std::vector<std::size_t>& keys, const std::vector<std::size_t>& free,
                                 std::size_t lo, std::size_t hi, int blocks, const ResidualFn& residual) {
-  const std::size_t frames = span_frames(lo, hi, n_), rows = 3 * static_cast<std::size_t>(blocks), params = 3 * free.size();
+  const std::size_t frames = hi - lo + 1, rows = 3 * static_cast<std::size_t>(blocks), params = 3 * free.size();
   std::vector<Quat> start(free.size());
   for (std::size_t k = 0; k < free.size(); ++k) start[k] = value_[j][free[k]];
   // Residuals and frame errors of the values as they are now; the worst error.
@@ -27,7 +27,7 @@ Result<bool> Reducer::refit_values(std::size_t j, const std::vector<std::size_t>
     auto q = rebuild(j, keys, lo, hi);
     if (!q) return q.failure();
     for (std::size_t f = 0; f < frames; ++f)
-      e[static_cast<Eigen::Index>(f)] = residual(span_frame(lo, f, n_), (*q)[f], out.data() + f * rows);
+      e[static_cast<Eigen::Index>(f)] = residual(lo + f, (*q)[f], out.data() + f * rows);
     return e.maxCoeff();
   };
   auto first = measure(r, err);

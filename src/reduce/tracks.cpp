@@ -30,10 +30,7 @@ Status Reducer::select_translation(std::size_t j, bool removal, std::vector<doub
   };
   ErrorFn err = [&](const std::vector<std::size_t>& keys, std::size_t lo, std::size_t hi, double* out) -> Status {
     const auto curve = evaluator(keys);
-    for (std::size_t k = 0, count = span_frames(lo, hi, n_); k < count; ++k) {
-      const std::size_t f = span_frame(lo, k, n_);
-      out[k] = (curve(times()[f]) - src[f]).norm() / tol;
-    }
+    for (std::size_t f = lo; f <= hi; ++f) out[f - lo] = (curve(times()[f]) - src[f]).norm() / tol;
     return Ok{};
   };
   if (Status s = select_track_keys(j, tkeys_[j], err, nullptr, removal, e); !s) return s;
@@ -53,10 +50,8 @@ Result<std::vector<Quat>> Reducer::rebuild(std::size_t j, const std::vector<std:
   if (looped(j)) {
     auto curve = make_periodic_interpolator(o_.method, decimated_track(times(), value_[j], in_period(keys)), cycle_->period);
     if (!curve) return curve.failure();
-    std::vector<double> t(span_frames(lo, hi, n_));
-    for (std::size_t k = 0; k < t.size(); ++k) t[k] = times()[span_frame(lo, k, n_)];
-    std::vector<Quat> q(t.size());
-    (*curve)->evaluate(t.data(), t.size(), q.data());
+    std::vector<Quat> q(hi - lo + 1);
+    (*curve)->evaluate(times().data() + lo, q.size(), q.data());
     return q;
   }
   auto curve = make_interpolator(o_.method, decimated_track(times(), value_[j], keys));
@@ -94,7 +89,7 @@ Status Reducer::select_rotation(std::size_t j, bool removal, std::vector<double>
   ErrorFn err = [&](const std::vector<std::size_t>& keys, std::size_t lo, std::size_t hi, double* out) -> Status {
     auto q = rebuild(j, keys, lo, hi);
     if (!q) return q.failure();
-    for (std::size_t k = 0; k < q->size(); ++k) out[k] = frame_error(span_frame(lo, k, n_), (*q)[k]);
+    for (std::size_t f = lo; f <= hi; ++f) out[f - lo] = frame_error(f, (*q)[f - lo]);
     return Ok{};
   };
   // The residuals behind frame_error, each block normalized by its budget (the

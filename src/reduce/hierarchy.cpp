@@ -12,7 +12,7 @@
 namespace rotinterp::detail {
 
 Status Reducer::run_independent() {
-  unsigned threads = o_.threads ? o_.threads : std::max(1u, std::thread::hardware_concurrency());
+  unsigned threads = thread_count(o_.threads);
   threads = static_cast<unsigned>(std::min<std::size_t>(threads, joints_));
   std::vector<Status> status(joints_, Status(Ok{}));
   std::atomic<std::size_t> done{0};
@@ -141,7 +141,7 @@ Status Reducer::run_hierarchical() {
     const std::size_t done = ++finished;
     if (o_.progress) o_.progress(std::min(done, joints_), joints_);
   };
-  unsigned threads = o_.threads ? o_.threads : std::max(1u, std::thread::hardware_concurrency());
+  unsigned threads = thread_count(o_.threads);
   WorkQueue queue(static_cast<unsigned>(std::min<std::size_t>(threads, joints_)));
   for (;;) {
     std::fill(blocked.begin(), blocked.end(), 0);

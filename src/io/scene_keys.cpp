@@ -13,6 +13,7 @@ namespace rotinterp::scene_parts {
 
 namespace {
 
+
 // Key times (in ticks) closer than this are one key: assimp's FBX importer merges
 // curve times in float, and ticks are at least 1e-3 s apart in every format we know.
 constexpr double kSameTickTolerance = 1e-6;
@@ -146,13 +147,20 @@ JointKeys sample_joint(const NodeRec& rec, bool animated, const Channels& channe
   out.ticks = distinct_ticks(std::move(ticks));
   if (out.ticks.empty()) out.ticks.push_back(first_tick);
   out.keys.reserve(out.ticks.size());
+  // A channel on the node itself is assimp's simple FBX animation (only translation,
+  // rotation, scaling and pre/post rotations): its keys are the node's whole local
+  // transform, PreRotation multiplied in, while the helpers that keeping pivots
+  // leaves above the node hold the same parts at rest. So the keys go alone
+  // (composing both counted a PreRotation twice: 90° off on the Maya sausage).
+  const std::vector<const aiNode*> keyed =
+      channels.of(rec.node) ? std::vector<const aiNode*>{rec.node} : path;
   for (double t : out.ticks) {
     if (!animated) {
       out.keys.push_back(out.rest);
       continue;
     }
     Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
-    for (const aiNode* x : path) m = m * node_local(x, channels.of(x), t);
+    for (const aiNode* x : keyed) m = m * node_local(x, channels.of(x), t);
     out.keys.push_back(decompose(m));
   }
   return out;

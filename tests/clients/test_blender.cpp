@@ -34,6 +34,10 @@ const Conversion kConversions[] = {
     // Three roots, `$AssimpFbx$` helpers, Nulls with geometric offsets, and root
     // motion on Spine_0, which lies on Root's +Y axis (Blender connected it once).
     {"marine_run", "fbx/digitalrune_Marine_Run.fbx", "", ""},
+    // joint1 has a PreRotation and no pivots: assimp multiplies it into the joint's
+    // keys and also keeps it in a helper node (the read once counted it twice, 90° off).
+    // Its keys start at frame 1, and ours at 0.
+    {"sausage", "fbx/ufbx_maya_game_sausage_7500_binary_wiggle.fbx", "", "", 1.0 / 24.0},
     // 59 joints, translation keys on most of them, many on their parent's +Y axis.
     {"kenney", "fbx/ufbx_maya_kenney_character_7700_binary.fbx", "", ""},
     // A BVH in centimetres: its unit inferred, and given.
@@ -125,6 +129,9 @@ std::map<std::string, std::string> BlenderClient::errors_;
 std::string BlenderClient::blender_error_;
 
 TEST_F(BlenderClient, MarineRunMovesEveryJointAsInBlendersImportOfTheSource) { expect_shows_the_source("marine_run"); }
+TEST_F(BlenderClient, SausageWithAPreRotatedKeyedJointMovesEveryJointAsInBlendersImportOfTheSource) {
+  expect_shows_the_source("sausage");
+}
 TEST_F(BlenderClient, KenneyCharacterMovesEveryJointAsInBlendersImportOfTheSource) {
   expect_shows_the_source("kenney");
 }

@@ -13,6 +13,10 @@ namespace rotinterp {
 namespace {
 
 constexpr double kRadiansPerDegree = kPi / 180.0;
+// The Euler order rotations blend in "by layer", whatever the node's order: Maya
+// (whose rotation-blend nodes default to XYZ) evaluates the frame-18 cubes of
+// ufbx_maya_anim_layers_over_acc_orders this way, within 1e-5 cm.
+constexpr int kLayerRotationOrder = 0;
 // A layer weight above this is a full weight (the DCCs store 100 % as 99.99…).
 constexpr double kFullWeight = 0.99999;
 
@@ -132,7 +136,7 @@ FbxLclValues fbx_lcl_values(const FbxTake& take, const FbxModel& model, const Fb
       if (l.layer >= take.layers.size() || take.layers[l.layer].mute) continue;
       const FbxVec3 value = layer_value(l, ticks);
       if (l.layer == 0) *results[p] = value;  // the take's first layer sets the property
-      else blend(take.layers[l.layer], p, model.rotation_order, value, *results[p]);
+      else blend(take.layers[l.layer], p, kLayerRotationOrder, value, *results[p]);
     }
   return out;
 }

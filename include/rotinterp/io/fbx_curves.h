@@ -77,8 +77,8 @@ struct FbxLayer {
   double weight = 100.0;  // percent
   FbxBlendMode blend = FbxBlendMode::additive;
   bool mute = false, solo = false;
-  // 0 by layer: the layer's rotation composes with the result as a rotation (in
-  // the node's rotation order); 1 by channel: Euler angles add (blend) one by one.
+  // 0 by layer: the layer's rotation composes with the result as a rotation
+  // (io/fbx_transform.h); 1 by channel: Euler angles add (blend) one by one.
   int rotation_accumulation = 0;
   int scale_accumulation = 0;  // 0 multiply (blend as powers), 1 additive
 };

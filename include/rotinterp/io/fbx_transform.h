@@ -14,7 +14,8 @@
 //    value by its weight; an override layer replaces the result;
 //  * Lcl Rotation in a layer accumulating "by layer" (RotationAccumulationMode 0)
 //    blends as a rotation: additive composes result · slerp(1, q, w), passthrough
-//    slerps, in the node's rotation order; "by channel" (1) blends each Euler angle;
+//    slerps, the Euler angles read (and written back) in XYZ order whatever the
+//    node's order, as Maya does; "by channel" (1) blends each Euler angle;
 //  * Lcl Scaling in a "multiply" layer (ScaleAccumulationMode 0) blends as powers
 //    (additive: result · value^w; passthrough: result^(1−w) · value^w).
 // Values in degrees (rotation) and file units; times in FBX ticks.

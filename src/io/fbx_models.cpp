@@ -2,6 +2,8 @@
 // rotation, pivots and offsets, inherit type, local TRS) over its template.
 #include "fbx_objects.h"
 
+#include <cmath>
+
 namespace rotinterp::fbx {
 
 namespace {
@@ -27,7 +29,13 @@ const FbxNode* either(const FbxNode& model, const FbxNode* templ, std::string_vi
 }  // namespace
 
 void read_model_properties(const FbxNode& node, const FbxNode* templ, FbxModel& m) {
-  auto vec = [&](std::string_view name, const FbxVec3& fallback) { return property_vec3(either(node, templ, name), fallback); };
+  // A non-finite component (a hostile file) takes the default: no NaN leaves the library.
+  auto vec = [&](std::string_view name, const FbxVec3& fallback) {
+    FbxVec3 v = property_vec3(either(node, templ, name), fallback);
+    for (std::size_t c = 0; c < 3; ++c)
+      if (!std::isfinite(v[c])) v[c] = fallback[c];
+    return v;
+  };
   auto num = [&](std::string_view name, double fallback) { return property_number(either(node, templ, name), 0, fallback); };
   m.name = object_name(node);
   m.type = object_subclass(node);

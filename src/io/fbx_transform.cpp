@@ -129,15 +129,19 @@ std::map<std::string, FbxNodeLayers> fbx_node_layers(const FbxTake& take) {
 
 FbxLclValues fbx_lcl_values(const FbxTake& take, const FbxModel& model, const FbxNodeLayers* node, double ticks) {
   FbxLclValues out{model.translation, model.rotation, model.scaling};
-  if (!node) return out;
   FbxVec3* results[3] = {&out.translation, &out.rotation, &out.scaling};
+  if (node)
+    for (std::size_t p = 0; p < 3; ++p)
+      for (const FbxLayerChannels& l : node->properties[p]) {
+        if (l.layer >= take.layers.size() || take.layers[l.layer].mute) continue;
+        const FbxVec3 value = layer_value(l, ticks);
+        if (l.layer == 0) *results[p] = value;  // the take's first layer sets the property
+        else blend(take.layers[l.layer], p, kLayerRotationOrder, value, *results[p]);
+      }
+  // A hostile file's non-finite static or default value: no NaN leaves the library.
   for (std::size_t p = 0; p < 3; ++p)
-    for (const FbxLayerChannels& l : node->properties[p]) {
-      if (l.layer >= take.layers.size() || take.layers[l.layer].mute) continue;
-      const FbxVec3 value = layer_value(l, ticks);
-      if (l.layer == 0) *results[p] = value;  // the take's first layer sets the property
-      else blend(take.layers[l.layer], p, kLayerRotationOrder, value, *results[p]);
-    }
+    for (double& v : *results[p])
+      if (!std::isfinite(v)) v = p == kFbxScaling ? 1.0 : 0.0;
   return out;
 }
 

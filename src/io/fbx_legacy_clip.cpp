@@ -27,8 +27,25 @@ constexpr double kStillTranslation = 1e-7;
 
 // Frames per second of GlobalSettings TimeMode (the FBX SDK's FbxTime::EMode); 0: none.
 double time_mode_rate(int mode, double custom) {
-  static const double rates[] = {0, 120, 100, 60, 50, 48, 30, 30, 30000.0 / 1001, 30000.0 / 1001, 25, 24, 1000,
-                                 24000.0 / 1001, 0, 96, 72, 60000.0 / 1001, 120000.0 / 1001};
+  static const double rates[] = {0,
+                                 120,
+                                 100,
+                                 60,
+                                 50,
+                                 48,
+                                 30,
+                                 30,
+                                 30000.0 / 1001,
+                                 30000.0 / 1001,
+                                 25,
+                                 24,
+                                 1000,
+                                 24000.0 / 1001,
+                                 0,
+                                 96,
+                                 72,
+                                 60000.0 / 1001,
+                                 120000.0 / 1001};
   if (mode == 14) return custom > 0.0 && std::isfinite(custom) ? custom : 0.0;
   return mode >= 0 && mode < static_cast<int>(std::size(rates)) ? rates[mode] : 0.0;
 }
@@ -40,13 +57,15 @@ double global_setting(const FbxDocument& doc, const char* name, double fallback)
   if (!settings) return fallback;
   if (const FbxNode* props = settings->child("Properties60"))
     for (const FbxNode& p : props->children)
-      if (p.properties.size() > 3 && p.properties[0].is_string() && p.properties[0].text == name && p.properties[3].is_number())
+      if (p.properties.size() > 3 && p.properties[0].is_string() && p.properties[0].text == name &&
+          p.properties[3].is_number())
         return p.properties[3].as_double();
   return fallback;
 }
 
 bool carries_content(const FbxModel& m) {
-  static const std::set<std::string> kContent = {"Mesh", "Camera", "Light", "CameraSwitcher", "Nurb", "NurbsCurve", "Patch", "Line"};
+  static const std::set<std::string> kContent = {"Mesh", "Camera",     "Light", "CameraSwitcher",
+                                                 "Nurb", "NurbsCurve", "Patch", "Line"};
   return kContent.count(m.type) > 0;
 }
 
@@ -58,7 +77,8 @@ Result<std::size_t> select_take(const FbxAnimation& anim, const std::string& wan
   if (std::all_of(want.begin(), want.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); })) {
     const std::size_t index = want.size() > 9 ? n : static_cast<std::size_t>(std::stoul(want));
     if (index < n) return index;
-    return make_error(label + ": there is no animation " + want + " (the file has " + std::to_string(n) + ", numbered from 0)");
+    return make_error(label + ": there is no animation " + want + " (the file has " + std::to_string(n) +
+                      ", numbered from 0)");
   }
   std::string names;
   for (std::size_t t = 0; t < n; ++t) names += (t ? ", '" : "'") + anim.takes[t].name + "'";
@@ -66,20 +86,27 @@ Result<std::size_t> select_take(const FbxAnimation& anim, const std::string& wan
 }
 
 // The joints' models, parents first (depth-first in file order), and each one's parent joint.
-std::vector<std::pair<const FbxModel*, int>> select_joints(const FbxAnimation& anim, const std::map<std::string, FbxNodeLayers>& animated) {
+std::vector<std::pair<const FbxModel*, int>> select_joints(const FbxAnimation& anim,
+                                                           const std::map<std::string, FbxNodeLayers>& animated) {
   const std::size_t n = anim.models.size();
   std::vector<bool> keep(n, false);
-  auto index_of = [&](std::int64_t id) { return id >= 1 && static_cast<std::size_t>(id) <= n ? static_cast<std::size_t>(id - 1) : n; };
+  auto index_of = [&](std::int64_t id) {
+    return id >= 1 && static_cast<std::size_t>(id) <= n ? static_cast<std::size_t>(id - 1) : n;
+  };
   for (std::size_t m = 0; m < n; ++m) {
     const FbxModel& model = anim.models[m];
     const auto a = animated.find(model.name);
     if (!(a != animated.end() && a->second.keyed()) && carries_content(model)) continue;
     // The model and its ancestors (a parent chain is at most n long).
-    for (std::size_t at = m, steps = 0; at < n && !keep[at] && steps <= n; at = index_of(anim.models[at].parent), ++steps) keep[at] = true;
+    for (std::size_t at = m, steps = 0; at < n && !keep[at] && steps <= n;
+         at = index_of(anim.models[at].parent), ++steps)
+      keep[at] = true;
   }
   std::vector<std::vector<std::size_t>> children(n + 1);  // [n]: the roots
-  for (std::size_t m = 0; m < n; ++m)
-    if (keep[m]) children[index_of(anim.models[m].parent) < n && keep[index_of(anim.models[m].parent)] ? index_of(anim.models[m].parent) : n].push_back(m);
+  for (std::size_t m = 0; m < n; ++m) {
+    const std::size_t parent = index_of(anim.models[m].parent);
+    if (keep[m]) children[parent < n && keep[parent] ? parent : n].push_back(m);
+  }
   std::vector<std::pair<const FbxModel*, int>> out;
   std::vector<int> joint_of(n, -1);
   std::vector<std::size_t> todo(children[n].rbegin(), children[n].rend());
@@ -110,7 +137,8 @@ Result<std::vector<double>> sample_times(const FbxTake& take, double rate, const
   const double span = static_cast<double>(take.stop - take.start) / static_cast<double>(kFbxTicksPerSecond);
   if (rate > 0.0) {
     if (!(span >= 0.0) || span * rate > kMaxFrames)
-      return make_error(label + ": take '" + take.name + "' spans " + short_number(span) + " s, which is not a frame range rotinterp reads");
+      return make_error(label + ": take '" + take.name + "' spans " + short_number(span) +
+                        " s, which is not a frame range rotinterp reads");
     const auto frames = static_cast<std::size_t>(std::floor(span * rate + 1e-6));
     for (std::size_t k = 0; k <= frames; ++k) out.push_back(static_cast<double>(k) / rate);
     return out;
@@ -118,7 +146,8 @@ Result<std::vector<double>> sample_times(const FbxTake& take, double rate, const
   std::set<std::int64_t> ticks;
   for (const FbxCurve& c : take.curves)
     for (const FbxKey& k : c.keys) ticks.insert(k.ticks);
-  for (std::int64_t t : ticks) out.push_back(static_cast<double>(t - take.start) / static_cast<double>(kFbxTicksPerSecond));
+  for (std::int64_t t : ticks)
+    out.push_back(static_cast<double>(t - take.start) / static_cast<double>(kFbxTicksPerSecond));
   if (out.empty()) out.push_back(0.0);
   return out;
 }
@@ -160,7 +189,8 @@ Status read_legacy_fbx(const fs::path& path, const ReadOptions& options, ClipFil
   if (!doc) return make_error(doc.error(), ErrorKind::unreadable);
   Result<FbxAnimation> anim = read_fbx_animation(*doc, label);
   if (!anim) return make_error(anim.error(), ErrorKind::unreadable);
-  const double rate = time_mode_rate(static_cast<int>(global_setting(*doc, "TimeMode", 0)), global_setting(*doc, "CustomFrameRate", -1));
+  const double rate = time_mode_rate(static_cast<int>(global_setting(*doc, "TimeMode", 0)),
+                                     global_setting(*doc, "CustomFrameRate", -1));
   std::size_t meshes = 0;
   for (const FbxModel& m : anim->models) meshes += m.type == "Mesh";
   bool any_curve = false;
@@ -223,7 +253,8 @@ Status read_legacy_fbx(const fs::path& path, const ReadOptions& options, ClipFil
       rotation.keys.push_back(fbx_node_rotation(model, values.rotation));
       translation.times.push_back(t);
       translation.keys.push_back(matrix_translation(fbx_node_matrix(model, values)));
-      moves = moves || (translation.keys.back() - clip.skeleton.joints[j].offset).norm() > kStillTranslation * std::max(size, 1e-9);
+      moves = moves || (translation.keys.back() - clip.skeleton.joints[j].offset).norm() >
+                           kStillTranslation * std::max(size, 1e-9);
       for (double s : values.scaling) scaled = scaled || std::abs(s - 1.0) > 1e-5;
     }
     rotation.make_sign_continuous();

@@ -39,9 +39,12 @@ class KeyList {
   bool letter(char& out) {
     if (i_ >= v_.size()) return false;
     const FbxProperty& p = v_[i_];
-    if (p.type == 'C') out = static_cast<char>(p.integer);
-    else if (p.is_string() && p.text.size() == 1) out = p.text[0];
-    else return false;
+    if (p.type == 'C')
+      out = static_cast<char>(p.integer);
+    else if (p.is_string() && p.text.size() == 1)
+      out = p.text[0];
+    else
+      return false;
     ++i_;
     return true;
   }
@@ -83,7 +86,8 @@ std::string decode_key(KeyList& list, FbxKey& k) {
       k.flags |= kTangentAuto;
       break;
     case 't':  // TCB: tension, continuity, bias; no weights
-      if (!list.number(k.tension) || !list.number(k.continuity) || !list.number(k.bias)) return "a TCB key without its three parameters";
+      if (!list.number(k.tension) || !list.number(k.continuity) || !list.number(k.bias))
+        return "a TCB key without its three parameters";
       k.tangent = FbxTangent::tcb;
       k.flags |= kTangentTcb;
       weight_modes = 0;
@@ -94,7 +98,8 @@ std::string decode_key(KeyList& list, FbxKey& k) {
       k.flags |= kTangentAuto;
       weight_modes = 2;
       break;
-    default: return std::string("unknown tangent mode '") + fbx_printable(std::string(1, tangent)) + "'";
+    default:
+      return std::string("unknown tangent mode '") + fbx_printable(std::string(1, tangent)) + "'";
   }
   for (int w = 0; w < weight_modes; ++w) {
     char weights = 0;
@@ -117,7 +122,8 @@ std::string decode_key(KeyList& list, FbxKey& k) {
 
 // Channel X, Y or Z of a T/R/S group: its Default, KeyCount and Key list.
 Status read_channel(const FbxNode& channel, FbxCurve& c, const std::string& where) {
-  if (const FbxNode* d = channel.child("Default"); d && !d->properties.empty()) c.default_value = d->properties[0].as_double();
+  if (const FbxNode* d = channel.child("Default"); d && !d->properties.empty())
+    c.default_value = d->properties[0].as_double();
   if (!std::isfinite(c.default_value)) c.default_value = 0.0;
   const FbxNode* key = channel.child("Key");
   if (!key) return Ok{};
@@ -135,22 +141,32 @@ Status read_channel(const FbxNode& channel, FbxCurve& c, const std::string& wher
   for (std::size_t i = 0; i < c.keys.size(); ++i) {
     FbxKey& k = c.keys[i];
     const std::string at = where + ": key " + std::to_string(i) + " of " + std::to_string(count);
-    if (!list.ticks(k.ticks) || !list.number(k.value)) return make_error(at + ": no time and finite value (the list ends or holds something else)", ErrorKind::unreadable);
-    if (i > 0 && k.ticks <= c.keys[i - 1].ticks) return make_error(at + ": key times do not increase", ErrorKind::unreadable);
-    if (const std::string wrong = decode_key(list, k); !wrong.empty()) return make_error(at + ": " + wrong, ErrorKind::unreadable);
+    if (!list.ticks(k.ticks) || !list.number(k.value))
+      return make_error(at + ": no time and finite value (the list ends or holds something else)",
+                        ErrorKind::unreadable);
+    if (i > 0 && k.ticks <= c.keys[i - 1].ticks)
+      return make_error(at + ": key times do not increase", ErrorKind::unreadable);
+    if (const std::string wrong = decode_key(list, k); !wrong.empty())
+      return make_error(at + ": " + wrong, ErrorKind::unreadable);
   }
-  if (!list.at_end()) return make_error(where + ": values after the last of its " + std::to_string(count) + " keys", ErrorKind::unreadable);
+  if (!list.at_end())
+    return make_error(where + ": values after the last of its " + std::to_string(count) + " keys",
+                      ErrorKind::unreadable);
   return Ok{};
 }
 
 // A take's Model: its Channel "Transform" → T, R, S → X, Y, Z.
-Status read_take_model(const FbxNode& model, const std::vector<FbxModel>& models, FbxTake& take, const std::string& where) {
+Status read_take_model(const FbxNode& model, const std::vector<FbxModel>& models, FbxTake& take,
+                       const std::string& where) {
   const std::string name = object_name(model);
   const FbxNode* transform = nullptr;
   for (const FbxNode& c : model.children)
-    if (c.name == "Channel" && !c.properties.empty() && c.properties[0].is_string() && c.properties[0].text == "Transform") transform = &c;
+    if (c.name == "Channel" && !c.properties.empty() && c.properties[0].is_string() &&
+        c.properties[0].text == "Transform")
+      transform = &c;
   if (!transform) return Ok{};
-  static const std::map<std::string, std::string> kGroups = {{"T", "Lcl Translation"}, {"R", "Lcl Rotation"}, {"S", "Lcl Scaling"}};
+  static const std::map<std::string, std::string> kGroups = {
+      {"T", "Lcl Translation"}, {"R", "Lcl Rotation"}, {"S", "Lcl Scaling"}};
   for (const FbxNode& group : transform->children) {
     if (group.name != "Channel" || group.properties.empty() || !group.properties[0].is_string()) continue;
     const auto property = kGroups.find(group.properties[0].text);
@@ -159,7 +175,7 @@ Status read_take_model(const FbxNode& model, const std::vector<FbxModel>& models
     const auto m = std::find_if(models.begin(), models.end(), [&](const FbxModel& x) { return x.name == name; });
     if (m != models.end())
       animated.defaults = property->second == "Lcl Translation" ? m->translation
-                        : property->second == "Lcl Rotation"    ? m->rotation
+                          : property->second == "Lcl Rotation"  ? m->rotation
                                                                 : m->scaling;
     bool any = false;
     for (const FbxNode& axis : group.children) {
@@ -173,8 +189,8 @@ Status read_take_model(const FbxNode& model, const std::vector<FbxModel>& models
       c.property = property->second;
       c.channel = letter[0];
       c.default_value = animated.defaults[static_cast<std::size_t>(letter[0] - 'X')];
-      const std::string path = where + "/Model '" + fbx_printable(name) + "'/Channel Transform/" + group.properties[0].text +
-                               "/" + letter + "/Key";
+      const std::string path = where + "/Model '" + fbx_printable(name) + "'/Channel Transform/" +
+                               group.properties[0].text + "/" + letter + "/Key";
       if (Status st = read_channel(axis, c, path); !st) return st;
       animated.defaults[static_cast<std::size_t>(letter[0] - 'X')] = c.default_value;
       if (!c.keys.empty()) take.curves.push_back(std::move(c));
@@ -199,7 +215,9 @@ std::vector<FbxModel> read_legacy_models(const FbxDocument& doc) {
   if (const FbxNode* conns = doc.node("Connections"))
     for (const FbxNode& c : conns->children) {
       const auto& p = c.properties;
-      if (c.name != "Connect" || p.size() < 3 || !p[0].is_string() || p[0].text != "OO" || !p[1].is_string() || !p[2].is_string()) continue;
+      if (c.name != "Connect" || p.size() < 3 || !p[0].is_string() || p[0].text != "OO" || !p[1].is_string() ||
+          !p[2].is_string())
+        continue;
       const auto child = id_of.find(p[1].text), parent = id_of.find(p[2].text);
       if (child != id_of.end() && parent != id_of.end() && child->second != parent->second)
         models[static_cast<std::size_t>(child->second - 1)].parent = parent->second;
@@ -221,7 +239,8 @@ Result<FbxAnimation> read_fbx_takes(const FbxDocument& doc, const std::string& l
     take.name = object_name(node);
     take.layers.push_back(FbxLayer{"BaseLayer"});
     for (const char* span : {"ReferenceTime", "LocalTime"})
-      if (const FbxNode* t = node.child(span); t && t->properties.size() >= 2 && t->properties[0].is_integer() && t->properties[1].is_integer())
+      if (const FbxNode* t = node.child(span);
+          t && t->properties.size() >= 2 && t->properties[0].is_integer() && t->properties[1].is_integer())
         take.start = t->properties[0].integer, take.stop = t->properties[1].integer;
     const std::string where = label + ": FBX node Takes/Take '" + fbx_printable(take.name) + "'";
     for (const FbxNode& model : node.children)

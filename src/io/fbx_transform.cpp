@@ -32,10 +32,12 @@ EulerAxes fbx_order_axes(int order) {
 FbxVec3 fbx_euler_angles(int order, const Quat& q, const FbxVec3& near) {
   const EulerAxes axes = fbx_order_axes(order);
   Vec3 previous;
-  for (int i = 0; i < 3; ++i) previous[i] = near[static_cast<std::size_t>(axes[static_cast<std::size_t>(i)])] * kRadiansPerDegree;
+  for (int i = 0; i < 3; ++i)
+    previous[i] = near[static_cast<std::size_t>(axes[static_cast<std::size_t>(i)])] * kRadiansPerDegree;
   const Vec3 angles = euler_nearest(q, axes, previous);
   FbxVec3 out{};
-  for (int i = 0; i < 3; ++i) out[static_cast<std::size_t>(axes[static_cast<std::size_t>(i)])] = angles[i] / kRadiansPerDegree;
+  for (int i = 0; i < 3; ++i)
+    out[static_cast<std::size_t>(axes[static_cast<std::size_t>(i)])] = angles[i] / kRadiansPerDegree;
   return out;
 }
 
@@ -63,13 +65,15 @@ void blend(const FbxLayer& layer, std::size_t property, int order, const FbxVec3
   const bool additive = layer.blend == FbxBlendMode::additive;
   if (property == kFbxScaling && layer.scale_accumulation == 0) {
     for (std::size_t c = 0; c < 3; ++c)
-      result[c] = additive ? result[c] * signed_power(value[c], w) : signed_power(result[c], 1.0 - w) * signed_power(value[c], w);
+      result[c] = additive ? result[c] * signed_power(value[c], w)
+                           : signed_power(result[c], 1.0 - w) * signed_power(value[c], w);
   } else if (property == kFbxRotation && layer.rotation_accumulation == 0) {
     const Quat a = fbx_euler_rotation(order, result), b = fbx_euler_rotation(order, value);
     const Quat q = additive ? a * Quat::Identity().slerp(w, b) : a.slerp(w, b);
     result = fbx_euler_angles(order, q.normalized(), result);
   } else {
-    for (std::size_t c = 0; c < 3; ++c) result[c] = additive ? result[c] + value[c] * w : result[c] * (1.0 - w) + value[c] * w;
+    for (std::size_t c = 0; c < 3; ++c)
+      result[c] = additive ? result[c] + value[c] * w : result[c] * (1.0 - w) + value[c] * w;
   }
 }
 
@@ -96,15 +100,6 @@ bool FbxNodeLayers::keyed(std::size_t property) const {
         if (c && !c->keys.empty()) return true;
   }
   return false;
-}
-
-std::size_t FbxNodeLayers::keyed_layers(const FbxTake& take, std::size_t property) const {
-  std::size_t n = 0;
-  for (const FbxLayerChannels& l : properties.at(property)) {
-    if (l.layer < take.layers.size() && take.layers[l.layer].mute) continue;
-    n += std::any_of(l.channels.begin(), l.channels.end(), [](const FbxCurve* c) { return c && !c->keys.empty(); });
-  }
-  return n;
 }
 
 std::map<std::string, FbxNodeLayers> fbx_node_layers(const FbxTake& take) {
@@ -135,8 +130,10 @@ FbxLclValues fbx_lcl_values(const FbxTake& take, const FbxModel& model, const Fb
       for (const FbxLayerChannels& l : node->properties[p]) {
         if (l.layer >= take.layers.size() || take.layers[l.layer].mute) continue;
         const FbxVec3 value = layer_value(l, ticks);
-        if (l.layer == 0) *results[p] = value;  // the take's first layer sets the property
-        else blend(take.layers[l.layer], p, kLayerRotationOrder, value, *results[p]);
+        if (l.layer == 0)
+          *results[p] = value;  // the take's first layer sets the property
+        else
+          blend(take.layers[l.layer], p, kLayerRotationOrder, value, *results[p]);
       }
   // A hostile file's non-finite static or default value: no NaN leaves the library.
   for (std::size_t p = 0; p < 3; ++p)
@@ -153,7 +150,8 @@ Quat fbx_euler_rotation(int order, const FbxVec3& degrees) {
 }
 
 Quat fbx_node_rotation(const FbxModel& model, const FbxVec3& rotation_degrees) {
-  const Quat q = fbx_euler_rotation(0, model.pre_rotation) * fbx_euler_rotation(model.rotation_order, rotation_degrees) *
+  const Quat q = fbx_euler_rotation(0, model.pre_rotation) *
+                 fbx_euler_rotation(model.rotation_order, rotation_degrees) *
                  fbx_euler_rotation(0, model.post_rotation).conjugate();
   return q.normalized();
 }

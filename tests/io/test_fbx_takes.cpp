@@ -86,10 +86,12 @@ TEST(Fbx61, TheSausageClipEqualsThe75TwinReplayedFromItsCurves) {
     ASSERT_EQ(old->rotations[j].times.size(), replayed.rotations[j].times.size()) << a.name;
     for (std::size_t k = 0; k < replayed.rotations[j].times.size(); ++k) {
       EXPECT_NEAR(old->rotations[j].times[k], replayed.rotations[j].times[k], 1e-9);
-      worst_degrees = std::max(worst_degrees, old->rotations[j].keys[k].angularDistance(replayed.rotations[j].keys[k]) * kDegreesPerRadian);
+      worst_degrees = std::max(
+          worst_degrees, old->rotations[j].keys[k].angularDistance(replayed.rotations[j].keys[k]) * kDegreesPerRadian);
     }
   }
-  std::printf("sausage 6.1 against 7.5 replayed: worst rotation %.3g°, worst offset %.3g cm\n", worst_degrees, worst_offset);
+  std::printf("sausage 6.1 against 7.5 replayed: worst rotation %.3g°, worst offset %.3g cm\n", worst_degrees,
+              worst_offset);
   EXPECT_LT(worst_degrees, 1e-5);  // float keys in both files
   EXPECT_LT(worst_offset, 1e-5);
 }

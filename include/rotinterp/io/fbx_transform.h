@@ -42,7 +42,7 @@ std::size_t fbx_lcl_index(const std::string& property);
 // What one layer of a take holds for one node property.
 struct FbxLayerChannels {
   std::size_t layer = 0;
-  FbxVec3 defaults{0, 0, 0};                                  // channels without a curve
+  FbxVec3 defaults{0, 0, 0};                                           // channels without a curve
   std::array<const FbxCurve*, 3> channels{nullptr, nullptr, nullptr};  // X, Y, Z (nullptr: none)
 };
 
@@ -51,8 +51,6 @@ struct FbxNodeLayers {
   std::array<std::vector<FbxLayerChannels>, 3> properties;  // by kFbxTranslation, …
   // Whether some layer holds a curve with keys on the property (any property: 3).
   bool keyed(std::size_t property = 3) const;
-  // The unmuted layers that hold a curve with keys on the property.
-  std::size_t keyed_layers(const FbxTake& take, std::size_t property) const;
 };
 
 // Every node the take animates, by name, pointing into `take` (keep it alive).

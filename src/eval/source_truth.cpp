@@ -32,7 +32,7 @@ Result<TruthFn> source_truth(const std::string& clip_file, const Clip& clip) {
     translation.resize(count);
     for (std::size_t j = 0; j < count; ++j) {
       const FbxJointCurves& c = (*joints)[j];
-      rotation[j] = c.model ? fbx_local_rotation(*c.model, c.channels, fbx_source_ticks(*source, t))
+      rotation[j] = c.model ? fbx_local_rotation(source->curves.takes.at(source->take), c, fbx_source_ticks(*source, t))
                             : sample_rotation(baked->rotations[j], t);
       const auto& track = baked->translations[j];
       translation[j] = track ? sample_translation(*track, t) : baked->skeleton.joints[j].offset;

@@ -214,10 +214,17 @@ void put(Writer& w, const FbxAnimation& a) {
     }
     w.u64(t.curves.size());
     for (const FbxCurve& c : t.curves) put(w, c);
+    w.u64(t.properties.size());
+    for (const FbxAnimatedProperty& p : t.properties) {
+      w.str(p.node), w.str(p.property);
+      w.u64(p.layer);
+      put(w, p.defaults);
+    }
   }
+  w.u64(a.version);
   w.u64(a.models.size());
   for (const FbxModel& m : a.models) {
-    w.str(m.name);
+    w.str(m.name), w.str(m.type);
     w.i64(m.id), w.i64(m.parent);
     w.i64(m.rotation_order), w.i64(m.inherit_type);
     w.u8(m.rotation_active);
@@ -244,10 +251,18 @@ void get(Reader& r, FbxAnimation& a) {
       get(r, c);
       if (c.layer >= t.layers.size()) r.fail();
     }
+    t.properties.resize(r.count(2 * kString + 8 + kFbxVec3));
+    for (FbxAnimatedProperty& p : t.properties) {
+      p.node = r.str(), p.property = r.str();
+      p.layer = r.size();
+      if (p.layer >= t.layers.size()) r.fail();
+      get(r, p.defaults);
+    }
   }
-  a.models.resize(r.count(kString + 4 * 8 + 1 + 9 * kFbxVec3));
+  a.version = static_cast<std::uint32_t>(r.size());
+  a.models.resize(r.count(2 * kString + 4 * 8 + 1 + 9 * kFbxVec3));
   for (FbxModel& m : a.models) {
-    m.name = r.str();
+    m.name = r.str(), m.type = r.str();
     m.id = r.i64(), m.parent = r.i64();
     m.rotation_order = r.index(), m.inherit_type = r.index();
     if (m.rotation_order < 0 || m.rotation_order > 5) r.fail();

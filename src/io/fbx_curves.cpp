@@ -1,5 +1,6 @@
 // read_fbx_animation: FBX 7.x takes (AnimationStack), their layers, and each
-// layer's curves on Lcl Translation/Rotation/Scaling with every key attribute.
+// layer's curves on Lcl Translation/Rotation/Scaling with every key attribute
+// (FBX 6.1 takes: fbx_takes.cpp).
 #include "fbx_objects.h"
 #include "rotinterp/io/fbx_curves.h"
 
@@ -179,6 +180,10 @@ Status read_layer_curves(const Objects& o, const FbxNode& layer, std::size_t ind
       if (std::find(std::begin(kProperties), std::end(kProperties), target.property) == std::end(kProperties)) continue;
       const auto model = std::find_if(models.begin(), models.end(), [&](const FbxModel& m) { return m.id == target.parent; });
       if (model == models.end()) continue;
+      FbxAnimatedProperty animated{model->name, target.property, index, {}};
+      for (std::size_t c = 0; c < 3; ++c)
+        animated.defaults[c] = fbx::property_number(fbx::find_property(*cn, std::string("d|") + "XYZ"[c]), 0, 0.0);
+      take.properties.push_back(std::move(animated));
       for (auto [ci, cend] = o.by_parent.equal_range(cn_id); ci != cend; ++ci) {
         const Connection& link = o.connections[ci->second];
         const auto curve = o.by_id.find(link.child);
@@ -204,8 +209,10 @@ Status read_layer_curves(const Objects& o, const FbxNode& layer, std::size_t ind
 }  // namespace
 
 Result<FbxAnimation> read_fbx_animation(const FbxDocument& doc, const std::string& label) {
+  if (doc.version > 0 && doc.version < 7000) return fbx::read_fbx_takes(doc, label);
   const Objects objects = fbx::index_objects(doc);
   FbxAnimation anim;
+  anim.version = doc.version;
   anim.models = fbx::read_models(doc, objects);
   std::vector<std::string> order;
   for (const FbxModel& m : anim.models) order.push_back(m.name);

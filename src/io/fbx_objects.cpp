@@ -19,6 +19,16 @@ std::string object_name(const FbxNode& node) {
   return "";
 }
 
+std::string object_subclass(const FbxNode& node) {
+  bool named = false;
+  for (const FbxProperty& p : node.properties) {
+    if (!p.is_string()) continue;
+    if (named) return p.text;
+    named = true;
+  }
+  return "";
+}
+
 Objects index_objects(const FbxDocument& doc) {
   Objects out;
   if (const FbxNode* objects = doc.node("Objects"))

@@ -2,8 +2,6 @@
 // stored curves at the keys' times (the `source` method of resample).
 #include "rotinterp/io/fbx_source.h"
 
-#include "rotinterp/io/euler.h"
-#include "rotinterp/io/fbx_curve_eval.h"
 #include "rotinterp/io/info.h"
 
 #include <algorithm>
@@ -12,32 +10,6 @@
 
 namespace rotinterp {
 
-namespace {
-
-constexpr double kRadiansPerDegree = kPi / 180.0;
-
-// FBX RotationOrder (0 XYZ, 1 XZY, 2 YZX, 3 YXZ, 4 ZXY, 5 ZYX: innermost axis
-// first) as io/euler.h's outermost-first axes.
-EulerAxes fbx_order_axes(int order) {
-  static const char* names[] = {"XYZ", "XZY", "YZX", "YXZ", "ZXY", "ZYX"};
-  const char* name = names[order >= 0 && order < 6 ? order : 0];
-  return {name[2] - 'X', name[1] - 'X', name[0] - 'X'};
-}
-
-Quat euler_degrees(const EulerAxes& axes, const FbxVec3& xyz) {
-  const Vec3 angles(xyz[static_cast<std::size_t>(axes[0])], xyz[static_cast<std::size_t>(axes[1])],
-                    xyz[static_cast<std::size_t>(axes[2])]);
-  return euler_to_quat(axes, angles * kRadiansPerDegree);
-}
-
-// Lcl Rotation curves of one node, per channel, and the layers they lie in.
-struct NodeCurves {
-  std::array<const FbxCurve*, 3> channels{nullptr, nullptr, nullptr};
-  std::vector<std::size_t> layers;
-};
-
-}  // namespace
-
 bool is_source_method(const std::string& name) {
   const std::string want = kSourceMethodName;
   return name.size() == want.size() &&
@@ -45,14 +17,8 @@ bool is_source_method(const std::string& name) {
                     [](char a, char b) { return std::tolower(static_cast<unsigned char>(a)) == b; });
 }
 
-Quat fbx_local_rotation(const FbxModel& model, const std::array<const FbxCurve*, 3>& channels, double ticks) {
-  FbxVec3 angles = model.rotation;
-  for (std::size_t c = 0; c < 3; ++c)
-    if (channels[c]) angles[c] = evaluate_fbx_curve(*channels[c], ticks);
-  const EulerAxes xyz = fbx_order_axes(0);
-  const Quat q = euler_degrees(xyz, model.pre_rotation) * euler_degrees(fbx_order_axes(model.rotation_order), angles) *
-                 euler_degrees(xyz, model.post_rotation).conjugate();
-  return q.normalized();
+Quat fbx_local_rotation(const FbxTake& take, const FbxJointCurves& joint, double ticks) {
+  return fbx_node_rotation(*joint.model, fbx_lcl_values(take, *joint.model, &joint.layers, ticks).rotation);
 }
 
 Result<SourceClip> read_source_clip(const std::filesystem::path& path, const ReadOptions& options) {
@@ -76,14 +42,7 @@ Result<SourceClip> read_source_clip(const std::filesystem::path& path, const Rea
 Result<std::vector<FbxJointCurves>> fbx_joint_curves(const Clip& clip, const SourceClip& source,
                                                      const std::vector<std::string>& keep, const std::string& label) {
   const FbxTake& take = source.curves.takes.at(source.take);
-  std::map<std::string, NodeCurves> by_node;
-  for (const FbxCurve& c : take.curves) {
-    if (c.property != "Lcl Rotation" || c.channel < 'X' || c.channel > 'Z') continue;
-    if (c.layer < take.layers.size() && take.layers[c.layer].mute) continue;
-    NodeCurves& node = by_node[c.node];
-    if (std::find(node.layers.begin(), node.layers.end(), c.layer) == node.layers.end()) node.layers.push_back(c.layer);
-    node.channels[static_cast<std::size_t>(c.channel - 'X')] = &c;
-  }
+  std::map<std::string, FbxNodeLayers> by_node = fbx_node_layers(take);
   std::map<std::string, const FbxModel*> models;
   for (const FbxModel& m : source.curves.models) models.emplace(m.name, &m);
 
@@ -94,12 +53,8 @@ Result<std::vector<FbxJointCurves>> fbx_joint_curves(const Clip& clip, const Sou
     if (std::find(keep.begin(), keep.end(), name) != keep.end()) continue;
     const auto curves = by_node.find(name);
     const auto model = models.find(name);
-    if (curves == by_node.end() || model == models.end()) continue;
-    if (curves->second.layers.size() > 1)
-      return make_error(label + ": --method source: joint '" + name + "' is animated in " +
-                        std::to_string(curves->second.layers.size()) + " layers of take '" + take.name +
-                        "'; blending layers is not evaluated yet");
-    out[j] = {model->second, curves->second.channels};
+    if (curves == by_node.end() || model == models.end() || !curves->second.keyed(kFbxRotation)) continue;
+    out[j] = {model->second, std::move(curves->second)};
     ++found;
   }
   if (found == 0) return make_error(label + ": --method source: no joint has rotation curves in take '" + take.name + "'");
@@ -114,13 +69,14 @@ Result<std::size_t> replay_fbx_rotations(Clip& clip, const SourceClip& source, c
                                          const std::string& label) {
   auto joints = fbx_joint_curves(clip, source, keep, label);
   if (!joints) return joints.failure();
+  const FbxTake& take = source.curves.takes.at(source.take);
   std::size_t replayed = 0;
   for (std::size_t j = 0; j < joints->size(); ++j) {
     const FbxJointCurves& curves = (*joints)[j];
     if (!curves.model) continue;
     RotationTrack& track = clip.rotations[j];
     for (std::size_t k = 0; k < track.times.size(); ++k)
-      track.keys[k] = fbx_local_rotation(*curves.model, curves.channels, fbx_source_ticks(source, track.times[k]));
+      track.keys[k] = fbx_local_rotation(take, curves, fbx_source_ticks(source, track.times[k]));
     track.make_sign_continuous();
     ++replayed;
   }

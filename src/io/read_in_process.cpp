@@ -1,8 +1,10 @@
 // The whole read in this process, assimp included: what the importer process runs
-// (import.h). Every format but BVH goes through assimp and scene_to_clip(); BVH
-// through our own pass, with ReadOptions::cross_check_with_assimp compared with
-// assimp's reading.
+// (import.h). Every format but BVH and FBX 6.1 goes through assimp and
+// scene_to_clip(); BVH through our own pass, with ReadOptions::cross_check_with_assimp
+// compared with assimp's reading; FBX 6.1 (which assimp refuses) through our own
+// FBX reader (fbx_legacy.h).
 #include "assimp_text.h"
+#include "fbx_legacy.h"
 #include "import.h"
 #include "read_parts.h"
 #include "rotinterp/io/fbx_curves.h"
@@ -191,10 +193,11 @@ Status read_here(const fs::path& path, const ReadOptions& options, ClipFileInfo&
   if (Status s = check_file(path, label); !s) return s.failure();
   const std::string ext = extension_of(path);
   info.format = ext;
-  Status st = is_bvh(path, ext) ? read_bvh_checked(path, options, info, warn)
-                                : read_with_assimp(path, options, ext, info, warn);
+  Status st = is_bvh(path, ext)                       ? read_bvh_checked(path, options, info, warn)
+              : ext == "fbx" && is_legacy_fbx(path) ? read_legacy_fbx(path, options, info, warn)
+                                                    : read_with_assimp(path, options, ext, info, warn);
   if (!st) return st;
-  if (options.read_curves && ext == "fbx") {
+  if (options.read_curves && ext == "fbx" && !info.curves) {
     Result<FbxAnimation> curves = read_fbx_curves_file(path, label);
     if (!curves) return curves.failure();
     info.curves = std::move(*curves);

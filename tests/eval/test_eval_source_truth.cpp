@@ -53,6 +53,21 @@ TEST(EvalSourceTruth, BetweenKeysEveryMethodMissesTheCurvesThatItsOwnFramesHide)
   }
 }
 
+// FBX 6.1 (clip and curves from our own reader) and a take whose joints are
+// animated in several layers (blended) are measured like any keyed FBX.
+TEST(EvalSourceTruth, AnFbx61FileAndALayeredFileAreMeasuredAgainstTheirCurves) {
+  for (const char* file : {"fbx/ufbx_maya_game_sausage_6100_binary_wiggle.fbx",
+                           "fbx/ufbx_maya_anim_layers_over_acc_orders_7500_ascii.fbx"}) {
+    const fs::path out = fresh_dir("legacy_layers");
+    const auto r = run_cli("eval " + kData + "/" + file + " --truth source -m slerp,c2 --keep-every 2 --no-plots -o " +
+                           out.string());
+    EXPECT_EQ(r.exit_code, 0) << file << ": " << r.err;
+    EXPECT_NE(r.out.find("truth: each FBX file's own rotation curves"), std::string::npos) << r.out;
+    const nlohmann::json summary = nlohmann::json::parse(slurp(out / "summary.json"));
+    EXPECT_EQ(summary.at("results").size(), 2u) << file;
+  }
+}
+
 TEST(EvalSourceTruth, AClipWithoutCurvesIsNamedAndTheRunIsPartial) {
   const fs::path out = fresh_dir("bvh");
   const auto r = run_cli("eval " + kData + "/bvh/bvhio_example.bvh --truth source -m slerp -q --no-plots -o " +

@@ -33,7 +33,6 @@ const FbxCurve* find_curve(const FbxAnimation& anim, const test::DccCase& c) {
 TEST(FbxCurves, EveryDccReferenceValueIsMatchedWithin1e4OfTheCurvesRange) {
   std::size_t matched = 0, total = 0;
   for (const test::DccCase& c : test::dcc_cases()) {
-    if (c.file.find("_6100_") != std::string::npos) continue;  // FBX 6.1 takes: not read yet
     SCOPED_TRACE(c.name + " " + c.file);
     const FbxAnimation anim = read_animation(c.file);
     const FbxCurve* curve = find_curve(anim, c);

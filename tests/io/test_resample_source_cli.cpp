@@ -1,5 +1,6 @@
-// `rotinterp resample --method source`: the importer-process read with curves,
-// the summary saying which joints came from the curves, one-line refusals.
+// `rotinterp resample --method source`: the importer-process read with curves
+// (layered takes and FBX 6.1 included), the summary saying which joints came from
+// the curves, one-line refusals.
 #include "io_test_util.h"
 #include "support/run_cli.h"
 
@@ -16,6 +17,32 @@ TEST(ResampleSourceCli, AKeyedFbxIsWrittenWithItsJointsFromTheCurves) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("method source (36 of "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("joints from the file's curves"), std::string::npos) << r.out;
+  EXPECT_TRUE(std::filesystem::is_regular_file(out));
+}
+
+// Layers blended (io/fbx_transform.h): a joint animated in several layers replays.
+TEST(ResampleSourceCli, ALayeredFbxIsWrittenWithItsLayersBlended) {
+  test::TempDir dir;
+  const auto out = dir / "cubes.bvh";
+  const test::CliResult r =
+      test::run_cli("resample '" + (test::kData / "fbx/ufbx_maya_anim_layers_over_acc_orders_7500_ascii.fbx").string() +
+                    "' -o '" + out.string() + "' -m source");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("method source (6 of 6 joints from the file's curves"), std::string::npos) << r.out;
+  EXPECT_TRUE(std::filesystem::is_regular_file(out));
+}
+
+// FBX 6.1: the clip and its curves both come from our own reader.
+TEST(ResampleSourceCli, AnFbx61FileIsWrittenWithItsJointsFromTheTakesCurves) {
+  test::TempDir dir;
+  const auto out = dir / "sausage.bvh";
+  const test::CliResult r =
+      test::run_cli("resample '" + (test::kData / "fbx/ufbx_maya_game_sausage_6100_binary_wiggle.fbx").string() +
+                    "' -o '" + out.string() + "' --fps 60 -m source");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("20 → 48 frames (24 Hz → 60 Hz), method source (3 of 4 joints from the file's curves"),
+            std::string::npos)
+      << r.out;
   EXPECT_TRUE(std::filesystem::is_regular_file(out));
 }
 

@@ -1,5 +1,5 @@
 // FBX animation as the file stores it (FBX 7.x AnimationStack/Layer/CurveNode/
-// Curve objects): per node property and channel, every key with its interpolation,
+// Curve objects, or FBX 6.1 Takes): per node property and channel, every key with its interpolation,
 // tangent mode, slopes, weights, velocities and TCB parameters, the curve's pre-
 // and post-extrapolation, every take and layer, and the node properties that shape
 // a transform. Read from an FbxDocument (io/fbx_nodes.h); evaluated by
@@ -21,6 +21,8 @@
 namespace rotinterp {
 
 inline constexpr std::int64_t kFbxTicksPerSecond = 46186158000;
+
+using FbxVec3 = std::array<double, 3>;
 
 // Of the segment that starts at a key.
 enum class FbxInterpolation { constant_previous, constant_next, linear, cubic };
@@ -75,24 +77,27 @@ struct FbxLayer {
   double weight = 100.0;  // percent
   FbxBlendMode blend = FbxBlendMode::additive;
   bool mute = false, solo = false;
-  int rotation_accumulation = 0;  // 0 by layer (Euler angles add), 1 by channel
-  int scale_accumulation = 0;     // 0 multiply, 1 additive
+  // 0 by layer: the layer's rotation composes with the result as a rotation
+  // (io/fbx_transform.h); 1 by channel: Euler angles add (blend) one by one.
+  int rotation_accumulation = 0;
+  int scale_accumulation = 0;  // 0 multiply (blend as powers), 1 additive
 };
 
-struct FbxTake {
-  std::string name;
-  std::int64_t start = 0, stop = 0;  // ticks (LocalStart, LocalStop)
-  std::vector<FbxLayer> layers;
-  std::vector<FbxCurve> curves;
+// One animated node property in one layer (an AnimationCurveNode, or a 6.1 take's
+// T/R/S channel group): the values its channels take where they have no curve.
+struct FbxAnimatedProperty {
+  std::string node;
+  std::string property;  // "Lcl Translation", "Lcl Rotation", "Lcl Scaling"
+  std::size_t layer = 0;
+  FbxVec3 defaults{0, 0, 0};
 };
 
-using FbxVec3 = std::array<double, 3>;
-
-// A model's transform properties (Properties70, over its template's defaults).
+// A model's transform properties (Properties70 over its template's defaults; 6.1: Properties60).
 struct FbxModel {
   std::string name;
+  std::string type;         // "Mesh", "LimbNode", "Null", … (the object's subclass)
   std::int64_t id = 0;
-  std::int64_t parent = 0;  // the parent model's id, 0 for the scene root
+  std::int64_t parent = 0;  // the parent model's id, 0 for the scene root (6.1: ids are 1, 2, … in file order)
   int rotation_order = 0;   // 0 XYZ, 1 XZY, 2 YZX, 3 YXZ, 4 ZXY, 5 ZYX
   int inherit_type = 0;     // 0 RrSs, 1 RSrs, 2 Rrs
   bool rotation_active = false;
@@ -102,14 +107,26 @@ struct FbxModel {
   FbxVec3 scaling_offset{0, 0, 0}, scaling_pivot{0, 0, 0};
 };
 
+struct FbxTake {
+  std::string name;
+  std::int64_t start = 0, stop = 0;  // ticks (LocalStart, LocalStop; 6.1: LocalTime)
+  std::vector<FbxLayer> layers;      // 6.1: one, "BaseLayer"
+  std::vector<FbxCurve> curves;
+  std::vector<FbxAnimatedProperty> properties;  // every animated property, curves or not
+};
+
 struct FbxAnimation {
+  std::uint32_t version = 0;  // the file's FBX version (6100, 7500, …)
   std::vector<FbxTake> takes;
   std::vector<FbxModel> models;
 };
 
-// The animation of a parsed FBX file. Malformed animation objects (key arrays of
-// differing lengths, times not increasing, attribute counts that do not cover the
-// keys) are refused with one line naming the file and the curve.
+// The animation of a parsed FBX file: 7.x objects, or 6.1 Objects/Model
+// (Properties60) and Takes, whose keys are a flat list per channel (time, value,
+// interpolation letter, then the tangent mode's slopes and weights). Malformed
+// animation (key arrays of differing lengths, times not increasing, attribute
+// counts that do not cover the keys, 6.1 key lists shorter or longer than their
+// KeyCount) is refused with one line naming the file and the curve's node path.
 Result<FbxAnimation> read_fbx_animation(const FbxDocument& doc, const std::string& label);
 
 // The file at `path` read whole and through parse_fbx_nodes and read_fbx_animation;

@@ -2,18 +2,17 @@
 // from the curves the file stores (io/fbx_curves.h, fbx_curve_eval.h) instead of
 // interpolated between the keys assimp baked from them.
 //
-// A joint's local rotation is PreRotation · R(Lcl Rotation) · PostRotation⁻¹, the
-// Euler angles taken through the node's RotationOrder (FBX names the axes in the
-// order they apply: eEulerXYZ is Rz·Ry·Rx) and the pre- and post-rotations in
-// XYZ order, as assimp composes the same node (so a replayed key equals the baked
-// one where assimp sampled the curves). A channel without a curve keeps the
-// node's static Lcl Rotation value. RotationActive is not consulted (assimp does
-// not either).
+// A joint's local rotation is PreRotation · R(Lcl Rotation) · PostRotation⁻¹
+// (io/fbx_transform.h), Lcl Rotation blended over the take's layers, as assimp
+// composes the same node (so a replayed key equals the baked one where assimp
+// sampled the curves of a one-layer take). RotationActive is not consulted
+// (assimp does not either).
 #pragma once
 
 #include "rotinterp/clip/clip.h"
 #include "rotinterp/core/result.h"
 #include "rotinterp/io/fbx_curves.h"
+#include "rotinterp/io/fbx_transform.h"
 #include "rotinterp/io/read.h"
 
 #include <array>
@@ -30,10 +29,6 @@ inline constexpr const char* kSourceMethodName = "source";
 // Whether `name` is kSourceMethodName, ignoring ASCII case.
 bool is_source_method(const std::string& name);
 
-// The local rotation of `model` at FBX time `ticks`, its X, Y, Z Lcl Rotation
-// channels evaluated from `channels` (nullptr: the model's static value).
-Quat fbx_local_rotation(const FbxModel& model, const std::array<const FbxCurve*, 3>& channels, double ticks);
-
 // A clip read with its curves (ReadOptions::read_curves): the baked clip assimp
 // gives, and the take of the selected animation.
 struct SourceClip {
@@ -47,12 +42,14 @@ struct SourceClip {
 // stack, and every error read_clip() gives.
 Result<SourceClip> read_source_clip(const std::filesystem::path& path, const ReadOptions& options);
 
-// The node and Lcl Rotation channels of one joint (model nullptr: the joint has
+// The node and animated properties of one joint (model nullptr: the joint has
 // no rotation curves, or is kept).
 struct FbxJointCurves {
   const FbxModel* model = nullptr;
-  std::array<const FbxCurve*, 3> channels{nullptr, nullptr, nullptr};
+  FbxNodeLayers layers;  // pointing into the source's take
 };
+// The joint's local rotation at FBX time `ticks`, its layers blended.
+Quat fbx_local_rotation(const FbxTake& take, const FbxJointCurves& joint, double ticks);
 // Per joint of `clip` (by name), pointing into `source` (keep it alive and in
 // place). Joints named in `keep` get none. Errors as replay_fbx_rotations's.
 Result<std::vector<FbxJointCurves>> fbx_joint_curves(const Clip& clip, const SourceClip& source,
@@ -64,9 +61,8 @@ double fbx_source_ticks(const SourceClip& source, double t);
 // curves in `source`'s take with the curves' value at the key's time (clip time t
 // is FBX time take start + t, assimp's re-basing) and makes the tracks
 // sign-continuous; joints named in `keep` and joints without rotation curves are
-// left as they are. Returns how many joints were replayed. Errors: a joint whose
-// rotation curves lie in more than one unmuted layer (layer blending is not
-// evaluated), no joint with rotation curves.
+// left as they are. Returns how many joints were replayed. Errors: no joint with
+// rotation curves.
 Result<std::size_t> replay_fbx_rotations(Clip& clip, const SourceClip& source, const std::vector<std::string>& keep,
                                          const std::string& label);
 

@@ -19,6 +19,7 @@
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/io/read.h"
 
+#include "allocator.h"  // src/cli: the allocator setting the CLI runs eval with
 #include "cpu_seconds.h"
 
 #include <unistd.h>
@@ -127,7 +128,7 @@ int main(int argc, char** argv) {
       inputs.emplace_back(a);
   }
   if (inputs.empty()) inputs.emplace_back(ROTINTERP_SHARED_DATA);
-  rotinterp::keep_freed_memory_for_reuse();  // as the CLI runs eval
+  rotinterp::cli::keep_freed_memory_for_reuse();  // as the CLI runs eval
   auto files = rotinterp::discover_inputs(inputs);
   if (!files || files->empty()) {
     std::fprintf(stderr, "bench_eval: %s\n", files ? "no input files" : files.error().c_str());

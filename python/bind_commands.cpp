@@ -182,7 +182,7 @@ py::dict evaluate(const py::object& inputs, const std::optional<std::vector<std:
       {"kind", np.attr("array")(kind, "str")},     {"unit", np.attr("array")(unit, "str")}};
   for (std::size_t c = 0; c < measured.size(); ++c) by_name.emplace(measured[c].name, values[c]);
   py::dict out;
-  for (const std::string& name : checked(split_csv_line(error_csv_header()))) out[py::str(name)] = by_name.at(name);
+  for (const std::string& name : error_csv_schema().columns()) out[py::str(name)] = by_name.at(name);
   return out;
 }
 

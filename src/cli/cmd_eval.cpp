@@ -1,4 +1,5 @@
 // rotinterp eval PATH... | eval --merge DIR... -o DIR: batch angular-error evaluation.
+#include "allocator.h"
 #include "common.h"
 #include "rotinterp/clip/units.h"
 #include "rotinterp/eval/batch.h"
@@ -157,8 +158,8 @@ int run(const EvalArgs& a) {
       o.clip.loop = true;
       o.clip.loop_form = (*loop)->form;
     }
-    if (a.truth == "synth") o.truth_for = synth_truth;
-    if (a.truth == "source") o.truth_for = source_truth;
+    if (a.truth == "synth") o.truth = {"synth", synth_truth};
+    if (a.truth == "source") o.truth = {"source", source_truth};
     keep_freed_memory_for_reuse();
     o.progress = make_progress("eval", quiet);
     o.on_failure = print_failure;

@@ -3,8 +3,8 @@
 #include "cmd_resample.h"
 #include "common.h"
 #include "rotinterp/core/work_queue.h"
-#include "rotinterp/eval/error_row.h"  // csv_field: the one CSV quoting
 #include "rotinterp/io/atomic_file.h"
+#include "rotinterp/io/csv.h"
 #include "rotinterp/io/dataset.h"
 #include "rotinterp/io/write.h"
 
@@ -27,19 +27,22 @@ namespace rotinterp::cli {
 namespace {
 
 Status write_manifest(const std::string& path, const std::vector<FileRun>& runs, const ResampleOptions& opt) {
+  static const CsvSchema schema = {"input",  "output",   "status",        "frame_time_written", "rate_hz",
+                                   "rate",   "frames",   "duration_s",    "joints",             "output_frames",
+                                   "method", "seconds",  "message",       "metres_per_unit",    "unit"};
   return write_file_atomically(path, [&](std::ostream& out) -> Status {
-    out << "input,output,status,frame_time_written,rate_hz,rate,frames,duration_s,joints,output_frames,method,"
-           "seconds,message,metres_per_unit,unit\n";
+    out << schema.header();
     for (const FileRun& r : runs) {
       const bool read = r.status == "ok" || (r.status == "failed" && r.frames > 0);
-      out << csv_field(r.input) << ',' << csv_field(r.output.string()) << ',' << r.status << ','
-          << csv_field(r.frame_time) << ',' << (r.rate ? fmt::format("{:.9g}", r.rate->hz()) : "") << ','
-          << (r.rate ? r.rate->to_string() : "") << ',' << (read ? std::to_string(r.frames) : "") << ','
-          << (read ? fmt::format("{:.9g}", r.duration) : "") << ',' << (read ? std::to_string(r.joints) : "") << ','
-          << (r.status == "ok" ? std::to_string(r.output_frames) : "") << ',' << csv_field(opt.method) << ','
-          << (r.status == "ok" ? fmt::format("{:.3f}", r.seconds) : "") << ',' << csv_field(r.message) << ','
-          << (read ? fmt::format("{}", r.unit.metres_per_unit) : "") << ','
-          << (read ? csv_field(describe_unit(r.unit)) : "") << '\n';
+      const bool ok = r.status == "ok";
+      CsvRow row(schema);
+      row << r.input << r.output.string() << r.status << r.frame_time
+          << (r.rate ? fmt::format("{:.9g}", r.rate->hz()) : "") << (r.rate ? r.rate->to_string() : "")
+          << (read ? std::to_string(r.frames) : "") << (read ? fmt::format("{:.9g}", r.duration) : "")
+          << (read ? std::to_string(r.joints) : "") << (ok ? std::to_string(r.output_frames) : "") << opt.method
+          << (ok ? fmt::format("{:.3f}", r.seconds) : "") << r.message
+          << (read ? fmt::format("{}", r.unit.metres_per_unit) : "") << (read ? describe_unit(r.unit) : "");
+      out << row.line();
     }
     return Ok{};
   });

@@ -1,8 +1,10 @@
+// eval's run: the clip files of this shard evaluated method by method on the work
+// queue, a bounded number of clips in flight, their rows handed on in input order.
 #include "rotinterp/eval/batch.h"
 
+#include "batch_outputs.h"
 #include "rotinterp/core/work_queue.h"
 #include "rotinterp/io/dataset.h"
-#include "rotinterp/eval/plots.h"
 #include "rotinterp/io/atomic_file.h"
 #include "rotinterp/io/info.h"
 #include "rotinterp/io/read.h"
@@ -11,13 +13,10 @@
 
 #include <algorithm>
 #include <atomic>
-#include <malloc.h>
 #include <chrono>
-#include <ctime>
 #include <deque>
 #include <functional>
 #include <future>
-#include <fstream>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -29,92 +28,16 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string utc_now() {
-  const std::time_t t = std::time(nullptr);
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return buf;
-}
 
 RunOptions run_options(const EvalOptions& e) {
   const ClipEvalOptions& o = e.clip;
   return {o.methods,          o.keep_every,           o.subframe,
-          o.shell_distance_m, static_cast<bool>(e.truth_for), e.animation,
+          o.shell_distance_m, e.truth.name, e.animation,
           o.min_frames,       o.feet.feet,            o.feet.contact_height_m,
           o.feet.contact_speed_mps, o.feet.floor_m, e.unit,
           o.loop ? (o.loop_form ? loop_form_name(*o.loop_form) : "auto") : "off"};
 }
 
-// errors.csv into an unnamed temporary, one clip's rows at a time; committed with
-// the other outputs by write_outputs.
-class CsvWriter {
- public:
-  // `seam`: the seam columns of eval --loop.
-  CsvWriter(const fs::path& target, bool seam) : out_(target, TempKind::unnamed), seam_(seam) {
-    const std::string header = error_csv_header(seam) + '\n';
-    (void)out_.write(header.data(), header.size());
-  }
-  bool good() const { return out_.status().ok(); }
-  // Writes the rows of one clip and adds them to the summary.
-  void add_clip(const std::vector<ErrorRow>& rows, SummaryBuilder& summary) {
-    std::string text;
-    for (const ErrorRow& r : rows) text += format_error_row(r, seam_) + '\n';
-    (void)out_.write(text.data(), text.size());
-    summary.add_clip(rows);
-  }
-  std::string failure() const { return out_.status() ? out_.target().string() + ": write failed" : out_.status().error(); }
-  AtomicOutput& output() { return out_; }
-
- private:
-  AtomicOutput out_;
-  bool seam_;
-};
-
-// Writes summary.json (the run record and the results) and the plots, then commits them with
-// errors.csv as a unit: an interrupt before the end leaves the previous run's files
-// (all of them), after it this run's. Plots of an earlier run that this one does
-// not draw are removed, so no file in DIR is older than the others.
-Status write_outputs(const fs::path& dir, const RunRecord& record, const Summary& summary, bool plots, CsvWriter& csv,
-                     const std::string& per_frame = {}) {
-  if (!csv.good()) return make_error(csv.failure());
-  std::vector<std::unique_ptr<AtomicOutput>> texts;
-  auto text_file = [&](const char* name, const std::string& text) -> Status {
-    texts.push_back(std::make_unique<AtomicOutput>(dir / name, TempKind::unnamed));
-    return write_to(*texts.back(), [&](std::ostream& os) -> Status {
-      os << text;
-      return Ok{};
-    });
-  };
-  if (Status s = text_file(kSummaryJsonName, summary_json(record, summary)); !s) return s;
-  if (Status s = text_file(kClipsCsvName, clips_csv(summary)); !s) return s;
-  if (!per_frame.empty())
-    if (Status s = text_file(kPerFrameCsvName, per_frame); !s) return s;
-  std::vector<std::unique_ptr<AtomicOutput>> plot_outputs;
-  const bool draw = plots && summary.clips > 0;
-  if (draw)
-    if (Status s = draw_plots(summary, dir, plot_outputs); !s) return s;
-  std::vector<AtomicOutput*> all = {&csv.output()};
-  for (auto& t : texts) all.push_back(t.get());
-  for (auto& p : plot_outputs) all.push_back(p.get());
-  if (Status s = commit_together(all); !s) return s;
-  std::vector<std::string> stale;
-  if (!draw) stale = plot_file_names();
-  if (per_frame.empty()) stale.push_back(kPerFrameCsvName);
-  for (const std::string& name : stale) {
-    std::error_code ec;
-    fs::remove(dir / name, ec);
-  }
-  return Ok{};
-}
-
-Status make_dir(const fs::path& dir) {
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec || !fs::is_directory(dir)) return make_error(dir.string() + ": cannot create the output directory");
-  return Ok{};
-}
 
 // One file's outcome: the rows of each of its takes (methods in order), its
 // failures, and its takes evaluated at fewer spacings than asked.
@@ -195,22 +118,6 @@ Result<std::vector<std::pair<std::string, Clip>>> read_takes(const std::string& 
   return takes;
 }
 
-// The per-frame error series of `R` as CSV: sample, time, whether the sample is a
-// key, then one column of degrees per joint.
-std::string per_frame_csv(const ClipReference& R, const PerFrameRequest& q, const PerFrameErrors& e) {
-  std::string out = "sample,time_s,key";
-  for (const Joint& j : R.skeleton.joints) out += "," + csv_field(j.name);
-  out += '\n';
-  const std::vector<std::size_t> kf = key_frames(R, q.keep_every);  // eval/seam.h: with --loop, the period's
-  std::vector<char> key(R.samples, 0);
-  for (std::size_t k : kf) key[k * R.per_frame] = 1;
-  for (std::size_t m = 0; m < R.samples; ++m) {
-    out += fmt::format("{},{},{}", m, e.times[m], int(key[m]));
-    for (const auto& joint : e.angle) out += fmt::format(",{}", joint[m]);
-    out += '\n';
-  }
-  return out;
-}
 
 // Reads a file's takes and prepares their references, into its slot.
 void prepare_clip(const std::string& file, const EvalOptions& opt, ClipSlot& slot) {
@@ -226,8 +133,8 @@ void prepare_clip(const std::string& file, const EvalOptions& opt, ClipSlot& slo
   }
   for (auto& [id, clip] : *takes) {
     ClipEvalOptions copt = opt.clip;
-    if (opt.truth_for) {
-      auto truth = opt.truth_for(file, clip);
+    if (opt.truth.for_clip) {
+      auto truth = opt.truth.for_clip(file, clip);
       if (!truth) {
         slot.load_failure = EvalFailure{file, truth.error()};
         return;
@@ -327,12 +234,6 @@ std::size_t worker_count(int jobs) {
 
 }  // namespace
 
-void keep_freed_memory_for_reuse() {
-  mallopt(M_MMAP_THRESHOLD, 32 << 20);  // glibc's largest allowed value on 64-bit
-  mallopt(M_TRIM_THRESHOLD, 512 << 20);
-  mallopt(M_TOP_PAD, 16 << 20);
-}
-
 Result<EvalReport> run_eval(const EvalOptions& opt) {
   const auto t0 = std::chrono::steady_clock::now();
   const std::string started = utc_now();
@@ -346,7 +247,7 @@ Result<EvalReport> run_eval(const EvalOptions& opt) {
 
   EvalReport report;
   report.files = files.size();
-  CsvWriter csv(opt.output_dir / kErrorsCsvName, opt.clip.loop);
+  ErrorsCsv csv(opt.output_dir / kErrorsCsvName, opt.clip.loop);
   if (!csv.good()) return make_error(csv.failure());
   SummaryBuilder builder;
   const std::size_t jobs = worker_count(opt.jobs);
@@ -393,136 +294,5 @@ Result<EvalReport> run_eval(const EvalOptions& opt) {
   return report;
 }
 
-namespace {
-
-// Reads one shard's errors.csv a clip at a time.
-class ShardReader {
- public:
-  static Result<std::unique_ptr<ShardReader>> open(const fs::path& file) {
-    auto r = std::unique_ptr<ShardReader>(new ShardReader);
-    r->file_ = file;
-    r->in_.open(file, std::ios::binary);
-    if (!r->in_) return make_error(file.string() + ": cannot read");
-    std::string header;
-    if (!std::getline(r->in_, header)) return make_error(file.string() + ": empty file");
-    auto parser = ErrorRowParser::from_header(header);
-    if (!parser) return parser.failure(file.string() + ": ");
-    r->parser_.emplace(std::move(*parser));
-    if (Status s = r->read_row(); !s) return s.failure();
-    return r;
-  }
-  bool at_end() const { return !lookahead_; }
-  bool has_seam_columns() const { return parser_->has_seam_columns(); }
-  const std::string& clip() const { return lookahead_->clip; }
-  // The rows of the next clip.
-  Result<std::vector<ErrorRow>> next_clip() {
-    std::vector<ErrorRow> rows;
-    const std::string c = lookahead_->clip;
-    while (lookahead_ && lookahead_->clip == c) {
-      rows.push_back(std::move(*lookahead_));
-      if (Status s = read_row(); !s) return s.failure();
-    }
-    if (lookahead_ && lookahead_->clip < c)
-      return make_error(file_.string() + ":" + std::to_string(line_) + ": clips are not in sorted order");
-    return rows;
-  }
-
- private:
-  Status read_row() {
-    lookahead_.reset();
-    std::string line;
-    while (std::getline(in_, line)) {
-      ++line_;
-      if (line.empty() || line == "\r") continue;
-      auto row = parser_->parse(line);
-      if (!row) return row.failure(file_.string() + ":" + std::to_string(line_ + 1) + ": ");
-      lookahead_ = std::move(*row);
-      return Ok{};
-    }
-    if (in_.bad()) return make_error(file_.string() + ": read failed");
-    return Ok{};
-  }
-  fs::path file_;
-  std::ifstream in_;
-  std::optional<ErrorRowParser> parser_;
-  std::optional<ErrorRow> lookahead_;
-  std::size_t line_ = 0;
-};
-
-}  // namespace
-
-Result<EvalReport> merge_eval(const std::vector<fs::path>& dirs, const fs::path& out_dir, bool plots) {
-  const auto t0 = std::chrono::steady_clock::now();
-  if (dirs.empty()) return make_error("--merge needs at least one directory");
-  EvalReport report;
-  RunRecord merged;
-  for (const fs::path& d : dirs) {
-    const fs::path f = d / kSummaryJsonName;
-    auto shard = read_summary_json(f);
-    if (!shard) return shard.failure();
-    if (&d == &dirs.front())
-      merged.options = shard->options;
-    else if (!(merged.options == shard->options))
-      return make_error(f.string() + ": evaluated with other options than " + (dirs.front() / kSummaryJsonName).string());
-    for (const std::string& p : shard->inputs)
-      if (std::find(merged.inputs.begin(), merged.inputs.end(), p) == merged.inputs.end()) merged.inputs.push_back(p);
-    report.skipped.insert(report.skipped.end(), shard->skipped.begin(), shard->skipped.end());
-    report.failures.insert(report.failures.end(), shard->failed.begin(), shard->failed.end());
-    report.too_short.insert(report.too_short.end(), shard->too_short.begin(), shard->too_short.end());
-    report.files += shard->files;
-    merged.seconds += shard->seconds;
-    merged.version = shard->version;
-  }
-  std::stable_sort(report.failures.begin(), report.failures.end(),
-                   [](const EvalFailure& a, const EvalFailure& b) { return a.file < b.file; });
-  std::sort(report.skipped.begin(), report.skipped.end());
-  std::stable_sort(report.too_short.begin(), report.too_short.end(),
-                   [](const ShortClip& a, const ShortClip& b) { return a.clip < b.clip; });
-
-  std::vector<std::unique_ptr<ShardReader>> readers;
-  for (const fs::path& d : dirs) {
-    auto r = ShardReader::open(d / kErrorsCsvName);
-    if (!r) return r.failure();
-    readers.push_back(std::move(*r));
-  }
-  if (Status s = make_dir(out_dir); !s) return s.failure();
-  auto lock = DirectoryLock::acquire(out_dir);
-  if (!lock) return lock.failure();
-  const bool seam = merged.options.loop != "off";
-  for (const auto& r : readers)
-    if (r->has_seam_columns() != seam)
-      return make_error(std::string("a shard's errors.csv ") + (seam ? "lacks" : "has") +
-                        " the seam columns (seam_angle_deg … looped) its summary.json's loop option says");
-  CsvWriter csv(out_dir / kErrorsCsvName, seam);
-  if (!csv.good()) return make_error(csv.failure());
-  SummaryBuilder builder;
-  std::string last_clip;
-  for (;;) {
-    ShardReader* next = nullptr;
-    for (auto& r : readers)
-      if (!r->at_end() && (!next || r->clip() < next->clip())) next = r.get();
-    if (!next) break;
-    if (!last_clip.empty() && next->clip() == last_clip)
-      return make_error("clip '" + last_clip + "' appears in more than one shard");
-    last_clip = next->clip();
-    auto rows = next->next_clip();
-    if (!rows) return rows.failure();
-    csv.add_clip(*rows, builder);
-    ++report.clips_evaluated;
-  }
-  report.summary = builder.finish();
-  report.summary.seam = seam;
-  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (merged.version.empty()) merged.version = ROTINTERP_VERSION;
-  merged.files = report.files;
-  for (const fs::path& d : dirs) merged.merged_from.push_back(d.string());
-  merged.started = utc_now();
-  merged.merge_seconds = report.seconds;
-  merged.failed = report.failures;
-  merged.skipped = report.skipped;
-  merged.too_short = report.too_short;
-  if (Status s = write_outputs(out_dir, merged, report.summary, plots, csv); !s) return s.failure();
-  return report;
-}
 
 }  // namespace rotinterp

@@ -1,3 +1,4 @@
+// errors.csv rows: written against their schema, and parsed back to the same doubles.
 #include "rotinterp/eval/error_row.h"
 
 #include <fmt/format.h>
@@ -92,70 +93,31 @@ const std::vector<ErrorValueColumn>& error_value_columns() {
   return columns;
 }
 
-std::string error_csv_header(bool seam_columns) {
-  std::string h;
-  for (int c = 0; c < kColumnCount; ++c) h += (c ? "," : "") + std::string(kColumnNames[c]);
-  if (seam_columns)
-    for (const SeamColumn& c : kSeamColumns) h += "," + std::string(c.name);
-  return h;
+const CsvSchema& error_csv_schema(bool seam_columns) {
+  static const CsvSchema plain = [] {
+    std::vector<std::string> names(std::begin(kColumnNames), std::end(kColumnNames));
+    return CsvSchema(std::move(names));
+  }();
+  static const CsvSchema with_seam = [] {
+    std::vector<std::string> names;
+    for (const SeamColumn& c : kSeamColumns) names.emplace_back(c.name);
+    return plain + CsvSchema(std::move(names));
+  }();
+  return seam_columns ? with_seam : plain;
 }
 
 std::string format_error_row(const ErrorRow& r, bool seam_columns) {
   double values[kColumnCount] = {};
   for (const Measured& m : kMeasured) values[m.col] = r.*m.field;
-  std::string line = csv_field(r.clip) + "," + csv_field(r.method) + "," + std::to_string(r.keep_every) + "," +
-                     csv_field(r.joint) + "," + std::to_string(r.frames);
-  for (int c = kMeanDeg; c < kSamples; ++c) {
-    line += ',';
-    if (!is_empty_for(r, c)) line += number(values[c]);
-  }
-  line += "," + std::to_string(r.samples) + "," + number(r.height) + "," + (r.end_site ? "end_site" : "joint");
-  for (int c = kKind + 1; c < kUnit; ++c) {
-    line += ',';
-    if (!is_empty_for(r, c)) line += number(values[c]);
-  }
-  line += "," + csv_field(r.unit);
+  CsvRow row(error_csv_schema(seam_columns));
+  row << r.clip << r.method << std::to_string(r.keep_every) << r.joint << std::to_string(r.frames);
+  for (int c = kMeanDeg; c < kSamples; ++c) row << (is_empty_for(r, c) ? "" : number(values[c]));
+  row << std::to_string(r.samples) << number(r.height) << (r.end_site ? "end_site" : "joint");
+  for (int c = kKind + 1; c < kUnit; ++c) row << (is_empty_for(r, c) ? "" : number(values[c]));
+  row << r.unit;
   if (seam_columns)
-    for (const SeamColumn& c : kSeamColumns) line += "," + (r.seam && !r.end_site ? number(r.*c.field) : "");
-  return line;
-}
-
-std::string csv_field(std::string_view s) {
-  if (s.find_first_of(",\"\r\n") == std::string_view::npos) return std::string(s);
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"') out += '"';
-    out += c;
-  }
-  return out + "\"";
-}
-
-Result<std::vector<std::string>> split_csv_line(std::string_view line) {
-  std::vector<std::string> fields(1);
-  bool quoted = false;
-  for (std::size_t i = 0; i < line.size(); ++i) {
-    const char c = line[i];
-    if (quoted) {
-      if (c == '"') {
-        if (i + 1 < line.size() && line[i + 1] == '"') {
-          fields.back() += '"';
-          ++i;
-        } else {
-          quoted = false;
-        }
-      } else {
-        fields.back() += c;
-      }
-    } else if (c == '"') {
-      quoted = true;
-    } else if (c == ',') {
-      fields.emplace_back();
-    } else if (c != '\r') {
-      fields.back() += c;
-    }
-  }
-  if (quoted) return make_error("unterminated quote");
-  return fields;
+    for (const SeamColumn& c : kSeamColumns) row << (r.seam && !r.end_site ? number(r.*c.field) : "");
+  return row.line();
 }
 
 Result<ErrorRowParser> ErrorRowParser::from_header(std::string_view header) {

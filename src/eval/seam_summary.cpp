@@ -33,14 +33,17 @@ void SeamSummary::add(const SeamSummary& o) {
   not_looped += o.not_looped;
 }
 
-std::string seam_csv_header() {
-  return "looped_joints,not_looped_joints,seam_angle_deg,inner_angle_deg,seam_vel_jump_dps,inner_vel_jump_dps,"
-         "seam_acc_jump_dps2,inner_acc_jump_dps2";
+const CsvSchema& seam_csv_schema() {
+  static const CsvSchema schema = {"looped_joints",     "not_looped_joints",  "seam_angle_deg",
+                                   "inner_angle_deg",   "seam_vel_jump_dps",  "inner_vel_jump_dps",
+                                   "seam_acc_jump_dps2", "inner_acc_jump_dps2"};
+  return schema;
 }
 
-std::string seam_csv_fields(const SeamSummary& s) {
-  return fmt::format("{},{},{},{},{},{},{},{}", s.looped, s.not_looped, s.angle_deg, s.inner_angle_deg, s.vel_jump,
-                     s.inner_vel_jump, s.acc_jump, s.inner_acc_jump);
+void add_seam_fields(CsvRow& row, const SeamSummary& s) {
+  for (double v : {double(s.looped), double(s.not_looped), s.angle_deg, s.inner_angle_deg, s.vel_jump,
+                   s.inner_vel_jump, s.acc_jump, s.inner_acc_jump})
+    row << fmt::format("{}", v);
 }
 
 nlohmann::json seam_json(const SeamSummary& s) {

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "rotinterp/eval/summary.h"
+#include "rotinterp/io/csv.h"
 
 #include <nlohmann/json.hpp>
 
@@ -9,9 +10,9 @@
 
 namespace rotinterp {
 
-// clips.csv's seam columns (no leading comma): their names, and one clip's values.
-std::string seam_csv_header();
-std::string seam_csv_fields(const SeamSummary& seam);
+// clips.csv's seam columns, and one clip's values appended to its row.
+const CsvSchema& seam_csv_schema();
+void add_seam_fields(CsvRow& row, const SeamSummary& seam);
 // summary.json's "seam" object of a result.
 nlohmann::json seam_json(const SeamSummary& seam);
 

@@ -56,7 +56,7 @@ void expect_same(const ErrorRow& a, const ErrorRow& b) {
 }
 
 TEST(ErrorRow, RowsReadBackBitExactThroughCsv) {
-  auto parser = ErrorRowParser::from_header(error_csv_header());
+  auto parser = ErrorRowParser::from_header(error_csv_schema().header());
   ASSERT_TRUE(parser.ok()) << parser.error();
   const ErrorRow r = sample_row();
   const std::string line = format_error_row(r);
@@ -75,20 +75,20 @@ TEST(ErrorRow, EndSiteRowsLeaveAngleColumnsEmptyAndReadBack) {
   const std::string line = format_error_row(r);
   EXPECT_NE(line.find(",,,,,,"), std::string::npos) << line;
   EXPECT_EQ(line.find("nan"), std::string::npos);
-  auto back = ErrorRowParser::from_header(error_csv_header())->parse(line);
+  auto back = ErrorRowParser::from_header(error_csv_schema().header())->parse(line);
   ASSERT_TRUE(back.ok()) << back.error();
   expect_same(r, *back);
 }
 
 TEST(ErrorRow, HeaderStartsWithTheDocumentedColumns) {
-  EXPECT_EQ(error_csv_header().rfind("clip,method,keep_every,joint,frames,mean_deg,rms_deg,p95_deg,max_deg,"
+  EXPECT_EQ(error_csv_schema().header().rfind("clip,method,keep_every,joint,frames,mean_deg,rms_deg,p95_deg,max_deg,"
                                      "swing_rms_deg,twist_rms_deg,pos_rms_m,pos_max_m,",
                                      0),
             0u);
 }
 
 TEST(ErrorRow, MalformedLinesAreRejectedWithTheReason) {
-  auto parser = *ErrorRowParser::from_header(error_csv_header());
+  auto parser = *ErrorRowParser::from_header(error_csv_schema().header());
   std::string line = format_error_row(sample_row());
   EXPECT_FALSE(parser.parse("\"unterminated,squad").ok());
   std::string bad = line;

@@ -210,7 +210,7 @@ TEST(EvalCli, SynthConstantVelocityClipsMatchTheirAnalyticTruthForSlerpSquadAndB
                          out.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(slurp(out / "summary.json"));
-  EXPECT_EQ(j["options"]["truth"], true);
+  EXPECT_EQ(j["options"]["truth"], "synth");
   ASSERT_EQ(j["results"].size(), 9u);
   for (const auto& e : j["results"]) EXPECT_LT(e["max_deg"].get<double>(), 1e-3) << e.dump();
 

@@ -35,6 +35,7 @@ std::map<std::string, double> max_errors(const std::string& truth_option, const 
   }
   std::map<std::string, double> out_max;
   const nlohmann::json summary = nlohmann::json::parse(slurp(out / "summary.json"));
+  EXPECT_EQ(summary["options"]["truth"], truth_option.empty() ? "frames" : "source");  // the record says which
   for (const auto& e : summary.at("results"))
     out_max[e["method"].get<std::string>()] = e["max_deg"].get<double>();
   return out_max;

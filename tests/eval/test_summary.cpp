@@ -1,5 +1,6 @@
 // Summary aggregates: hand-computed values over a few rows.
 #include "rotinterp/eval/summary.h"
+#include "rotinterp/io/csv.h"
 
 #include <gtest/gtest.h>
 
@@ -122,6 +123,34 @@ TEST(Summary, FootSkatingSumsIntervalsOverFeetAndClipsAndReportsTheExtra) {
   EXPECT_NE(csv.find(",0,,,,,,,,\n"), std::string::npos) << csv;  // no feet: skating columns empty
 }
 
+TEST(Summary, EveryClipsCsvLineHasOneFieldPerColumnWithFeetAndSeam) {
+  for (bool seam : {false, true}) {
+    ErrorRow foot = row("a,b", "slerp", 2, "LeftToeBase", 101, 1.0, 1.0);
+    foot.foot = true;
+    foot.contact_frames = foot.contact_frames_ref = 40;
+    foot.seam = seam;
+    ErrorRow plain = row("box", "slerp", 2, "pCube1", 101, 1.0, 1.0);
+    plain.seam = seam;
+    SummaryBuilder b;
+    b.add_clip({foot});
+    b.add_clip({plain});
+    Summary s = b.finish();
+    s.seam = seam;  // set by the run (eval --loop)
+    const std::string csv = clips_csv(s);
+    std::size_t columns = 0, lines = 0;
+    for (std::size_t at = 0; at < csv.size();) {
+      const std::size_t end = csv.find('\n', at);
+      auto fields = split_csv_line(csv.substr(at, end - at));
+      ASSERT_TRUE(fields) << fields.error();
+      if (lines++ == 0) columns = fields->size();
+      EXPECT_EQ(fields->size(), columns) << csv;
+      at = end + 1;
+    }
+    EXPECT_EQ(lines, 3u);
+    EXPECT_EQ(csv.find("looped_joints") != std::string::npos, seam) << csv;
+  }
+}
+
 TEST(Summary, TablesShowMeanRmsP95MaxToFourSignificantFiguresInEveryFormat) {
   SummaryBuilder b;
   ErrorRow r = row("a", "slerp", 2, "j0", 100, 6.488e-15, 1234.5678);
@@ -155,6 +184,7 @@ TEST(Summary, TooShortClipsAndTheNewOptionsReadBackFromTheJson) {
   r.options.contact_height_m = 0.05;
   r.options.contact_speed_mps = 0.5;
   r.options.floor_m = 0.1;
+  r.options.truth = "source";
   r.too_short.push_back({"clip.bvh", 20, {16}});
   const std::filesystem::path f = std::filesystem::path(testing::TempDir()) / "rotinterp_summary_roundtrip.json";
   std::ofstream(f) << summary_json(r, Summary{});

@@ -48,9 +48,14 @@ struct EvalOptions {
   // Metres per unit of files that state no unit (--unit; io/read.h ReadOptions::unit).
   std::optional<double> unit;
   std::optional<PerFrameRequest> per_frame;   // also write DIR/per_frame.csv
-  // Analytic truth for a clip file (synth clips); an error fails that clip. Unset:
-  // every clip is compared with its own frames. Called from worker threads.
-  std::function<Result<TruthFn>(const std::string& file, const Clip& clip)> truth_for;
+  // What each clip is compared with. `name` is recorded in summary.json (options.truth):
+  // "frames", the clip's own frames (`for_clip` unset); "synth", a synth clip's analytic
+  // motion; "source", an FBX file's own curves. `for_clip` gives a clip file's truth; an
+  // error fails that clip. Called from worker threads.
+  struct Truth {
+    std::string name = "frames";
+    std::function<Result<TruthFn>(const std::string& file, const Clip& clip)> for_clip;
+  } truth;
   ProgressFn progress;                                     // clips done / clips in all
   std::function<void(const EvalFailure&)> on_failure;      // called in input order, from the calling thread
 };
@@ -70,14 +75,6 @@ constexpr const char* kErrorsCsvName = "errors.csv";
 constexpr const char* kSummaryJsonName = "summary.json";
 constexpr const char* kClipsCsvName = "clips.csv";
 constexpr const char* kPerFrameCsvName = "per_frame.csv";
-
-// Tells glibc's allocator to keep freed memory for reuse (no trimming of the heap
-// below 512 MB, no mmap for blocks under 32 MB): the batch allocates and frees
-// per-clip buffers of megabytes over and over, and returning them to the kernel
-// each time cost 13 % of `eval`'s CPU time in page faults (perf, three CMU/assimp
-// BVH clips). Process-wide: for a program that runs batches (the CLI, bench_eval),
-// not for a library user's process.
-void keep_freed_memory_for_reuse();
 
 // Runs the batch. Errors (nothing written) for bad options, no input files, an
 // output that cannot be written, or a --per-frame clip that is not among those

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "rotinterp/core/result.h"
+#include "rotinterp/io/csv.h"
 
 #include <cstddef>
 #include <string>
@@ -65,10 +66,10 @@ struct ErrorValueColumn {
 // mean_deg … acc_jump_max_dps2, height_m, keys … skate_speed_ref_mps, metres_per_unit, in file order.
 const std::vector<ErrorValueColumn>& error_value_columns();
 
-// The CSV header line (no newline): clip,method,keep_every,joint,frames,mean_deg,…,
-// with `seam_columns` (eval --loop) then seam_angle_deg … looped.
-std::string error_csv_header(bool seam_columns = false);
-// One CSV line (no newline). Text fields are quoted when they hold a comma, quote or
+// errors.csv's columns: clip,method,keep_every,joint,frames,mean_deg,…, with
+// `seam_columns` (eval --loop) then seam_angle_deg … looped.
+const CsvSchema& error_csv_schema(bool seam_columns = false);
+// One CSV line, with its '\n'. Text fields are quoted when they hold a comma, quote or
 // line break; End Site rows leave the joint-only columns empty, and the seam columns
 // (written with `seam_columns` only) are empty where the row has none.
 std::string format_error_row(const ErrorRow& row, bool seam_columns = false);
@@ -86,12 +87,5 @@ class ErrorRowParser {
   std::vector<int> column_;       // field index per known column, −1 when absent
   std::vector<int> seam_column_;  // field index per seam column; empty when the file has none
 };
-
-// A text field as CSV writes it: quoted (quotes doubled) when it holds a comma, quote
-// or line break.
-std::string csv_field(std::string_view text);
-
-// Splits one CSV line into fields (RFC 4180 quoting). Error on an unterminated quote.
-Result<std::vector<std::string>> split_csv_line(std::string_view line);
 
 }  // namespace rotinterp

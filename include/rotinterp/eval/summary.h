@@ -156,7 +156,7 @@ struct RunOptions {
   std::vector<int> keep_every;
   int subframe = 0;
   double shell_distance_m = 0;
-  bool truth = false;
+  std::string truth = "frames";     // EvalOptions::Truth::name: frames, synth or source
   std::string animation;            // --anim: empty (the first), a name or index, or "all"
   std::size_t min_frames = 0;
   std::vector<std::string> feet;    // --feet; empty: by name

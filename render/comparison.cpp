@@ -1,13 +1,13 @@
 // render's comparison: the frames selected, each drawn as one panel per method, the sheet and the video.
 #include "rotinterp/render/comparison.h"
 
+#include "panel_parts.h"
 #include "png_writers.h"
 #include "views.h"
 
 #include "rotinterp/clip/frames.h"
 #include "rotinterp/clip/rebuild.h"
 #include "rotinterp/interp/interpolator.h"
-#include "rotinterp/interp/method_style.h"
 #include "rotinterp/render/colour_map.h"
 #include "rotinterp/render/layout.h"
 #include "rotinterp/render/video.h"
@@ -23,29 +23,6 @@ namespace rotinterp::render {
 namespace fs = std::filesystem;
 
 namespace {
-
-// A method's colour: its registry slot's (interp/method_style.h), as in eval's plots.
-Color method_colour(const std::string& method) {
-  const auto& rgb = method_style(method_slot(method)).rgb;
-  return {rgb[0] / 255.0f, rgb[1] / 255.0f, rgb[2] / 255.0f};
-}
-
-// Method m's trail of `joint`'s bone direction over frames first…last.
-std::shared_ptr<Trail> make_trail(const RebuiltClip& rebuild, std::size_t m, int joint, std::size_t first,
-                                  std::size_t last, std::string label) {
-  const auto j = static_cast<std::size_t>(joint);
-  const Vec3& axis = rebuild.bone_axis(j);
-  auto t = std::make_shared<Trail>();
-  t->label = std::move(label);
-  for (std::size_t f = first; f <= last; ++f) {
-    t->reference.push_back(rebuild.reference_rotation(j, f) * axis);
-    t->method.push_back(rebuild.method_rotation(m, j, f) * axis);
-  }
-  if (rebuild.animated(j))
-    for (std::size_t k : rebuild.keys())
-      if (k >= first && k <= last) t->keys.push_back(k - first);
-  return t;
-}
 
 // The methods rebuilt on `clip`'s frames; with `cycle` (--loop), `clip` is its two
 // periods and the curves are the cycle's.
@@ -231,28 +208,8 @@ Result<ComparisonResult> render_frames(const Clip& clip, const fs::path& out_dir
     scene.bone_radius = scene_bone_radius(clip.skeleton, limb_box);
   }
 
-  // Error strips: every method's error at every frame of the range, one scale.
   std::vector<std::shared_ptr<ErrorStrip>> strips(options.methods.size());
-  if (options.strip) {
-    std::vector<std::size_t> strip_keys;
-    for (std::size_t k : rebuild.keys())
-      if (k >= first && k <= last) strip_keys.push_back(k - first);
-    std::vector<Quat> local;
-    std::vector<double> maxima;
-    for (std::size_t m = 0; m < strips.size(); ++m) {
-      auto strip = std::make_shared<ErrorStrip>();
-      for (std::size_t f = first; f <= last; ++f) {
-        const FrameError e = rebuild.method_rotations(m, f, local);
-        strip->max_deg.push_back(static_cast<float>(e.max));
-        strip->mean_deg.push_back(static_cast<float>(e.mean));
-        maxima.push_back(e.max);
-      }
-      strip->keys = strip_keys;
-      strips[m] = std::move(strip);
-    }
-    // Spikes above the scale are clipped at the strip's top.
-    for (auto& strip : strips) strip->scale_deg = error_scale(quantile(maxima, kRobustFraction));
-  }
+  if (options.strip) strips = error_strips(rebuild, options.methods.size(), first, last);
 
   std::error_code ec;
   if (options.pngs) {

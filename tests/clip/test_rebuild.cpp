@@ -118,6 +118,11 @@ TEST(Rebuild, ACycleKeepsThePeriodsKeysAndWrapsToFrameZeroOnePeriodOn) {
   // The closed form's last frame (t₀ + P) is frame 0 again: a key, as the wrap.
   EXPECT_EQ(key_frames(times, 5, &*cycle), (std::vector<std::size_t>{0, 5, 10, 15, 20, 24}));
   EXPECT_EQ(key_frames(times, 5, nullptr), (std::vector<std::size_t>{0, 5, 10, 15, 20, 24}));
+  EXPECT_EQ(key_frames(times, 4, &*cycle), (std::vector<std::size_t>{0, 4, 8, 12, 16, 20, 24}));
+  // Spacing 4 reaches frame 24, t₀ + P: the periodic curve's keys stop before it.
+  auto by_four = rebuild_joint(times, dense.rotation[1], "c2", 4, &*cycle, 1);
+  ASSERT_TRUE(by_four) << by_four.error();
+  EXPECT_EQ(by_four->keys.times.size(), 6u);
   for (const char* method : {"slerp", "c2", "bf"}) {
     SCOPED_TRACE(method);
     auto spin = rebuild_joint(times, dense.rotation[1], method, 5, &*cycle, 1);

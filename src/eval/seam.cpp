@@ -1,4 +1,4 @@
-// eval --loop: joints rebuilt on their periodic curves, and the figures of the seam.
+// eval --loop: the figures of the seam; and the rebuild of clip/rebuild.h on an evaluated clip's reference.
 #include "rotinterp/eval/seam.h"
 
 #include "rotinterp/eval/error_row.h"

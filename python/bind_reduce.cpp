@@ -43,7 +43,7 @@ BudgetText parse_budget(const py::object& items, const std::string& what) {
 // metres_per_unit: the clip's unit (clip.unit) unless given.
 py::dict reduce(const Clip& clip, const std::string& method, const py::object& tolerance,
                 const py::object& shell_distance, const py::object& tolerance_for, const std::string& translation,
-                const std::optional<double>& unit_in) {
+                const std::optional<double>& unit_in, const py::object& loop) {
   if (!find_method(method)) value_error(unknown_method_message(method));
   BudgetText budget = tolerance.is_none() ? BudgetText{} : parse_budget(tolerance, "tolerance");
   const double shell_m = shell_distance.is_none() ? kDefaultReduceShellDistanceCm / 100.0
@@ -69,6 +69,13 @@ py::dict reduce(const Clip& clip, const std::string& method, const py::object& t
       opt.budget_for.emplace_back(joint, ReduceBudget{b.deg, units(b.mm), units(b.mm)});
     }
   }
+  // loop: None/False off; True or "auto" detects the form; "closed" or "open" forces it (reduce --loop).
+  if (py::isinstance<py::bool_>(loop)) {
+    opt.loop = loop.cast<bool>();
+  } else if (!loop.is_none()) {
+    opt.loop = true;
+    opt.loop_form = checked(parse_loop_form(loop.cast<std::string>()));
+  }
   Result<ReduceResult> r = make_error("");
   {
     py::gil_scoped_release release;
@@ -87,6 +94,7 @@ py::dict reduce(const Clip& clip, const std::string& method, const py::object& t
     d["rotation_frames"] = index_array(rj.rotation_frames);
     d["translation_frames"] = clip.translations[j] ? py::object(index_array(rj.translation_frames)) : py::none();
     d["max_rotation_error_deg"] = rj.max_rotation_error * 180.0 / kPi;
+    d["looped"] = rj.looped;
     d["max_shell_error_mm"] = opt.budget.shell > 0.0 ? py::object(py::float_(to_mm(rj.max_shell_error))) : py::none();
     d["max_translation_error_mm"] =
         clip.translations[j] ? py::object(py::float_(to_mm(rj.max_translation_error))) : py::none();
@@ -103,6 +111,7 @@ py::dict reduce(const Clip& clip, const std::string& method, const py::object& t
   out["max_rotation_error_deg"] = worst_deg;
   out["max_shell_error_mm"] = opt.budget.shell > 0.0 ? py::object(py::float_(worst_mm)) : py::none();
   out["joints"] = joints;
+  out["loop"] = result.cycle ? py::object(py::str(loop_form_name(result.cycle->form))) : py::none();
   out["clip"] = std::move(result.reduced);
   return out;
 }
@@ -112,7 +121,7 @@ py::dict reduce(const Clip& clip, const std::string& method, const py::object& t
 void bind_reduce(py::module_& m) {
   m.def("reduce", &reduce, py::arg("clip"), py::arg("method") = "slerp", py::arg("tolerance") = py::none(),
         py::arg("shell_distance") = py::none(), py::arg("tolerance_for") = py::none(), py::arg("translation") = "cubic",
-        py::arg("metres_per_unit") = py::none());
+        py::arg("metres_per_unit") = py::none(), py::arg("loop") = py::none());
 }
 
 }  // namespace rotinterp::python

@@ -90,7 +90,7 @@ def info(path, anim=None, unit=None):
 
 
 def reduce(clip, method="slerp", tolerance=None, shell_distance=None, tolerance_for=None, translation="cubic",
-           metres_per_unit=None):
+           metres_per_unit=None, loop=None):
     """Keep the fewest keys per joint that rebuild ``clip`` with ``method`` within a
     budget, as ``rotinterp reduce`` does (the same keys), with its options in its forms:
     ``tolerance`` items with their units, an angle ("0.5deg", "0.01rad") on each joint's
@@ -98,13 +98,16 @@ def reduce(clip, method="slerp", tolerance=None, shell_distance=None, tolerance_
     object space and the translation tracks, as "0.5deg,1mm" or a list (default 1mm);
     ``shell_distance`` a length ("10cm", the default) or a number of metres;
     ``tolerance_for`` ``{joint: items}``. ``metres_per_unit``: ``clip.unit``'s unless given.
+    ``loop``: the clip is a cycle (``--loop``): True or "auto" detects its form, "closed" or
+    "open" forces it; keys are chosen on the periodic curves and each looped track of the
+    reduced clip ends with its closing key.
 
     Returns a dict: ``clip`` (the reduced Clip: each track holding only its kept keys),
     ``joints`` (per joint: ``name``, ``rotation_frames`` and ``translation_frames``, the
-    kept frame indices, and the largest errors over every frame in degrees and mm),
-    ``frames``, ``source_keys``, ``kept_keys``, ``metres_per_unit`` and the largest
-    errors over all joints. Releases the GIL."""
-    return _rotinterp.reduce(clip, method, tolerance, shell_distance, tolerance_for, translation, metres_per_unit)
+    kept frame indices, ``looped``, and the largest errors over every frame in degrees and
+    mm), ``frames``, ``source_keys``, ``kept_keys``, ``metres_per_unit``, ``loop`` (the
+    cycle's form, or None) and the largest errors over all joints. Releases the GIL."""
+    return _rotinterp.reduce(clip, method, tolerance, shell_distance, tolerance_for, translation, metres_per_unit, loop)
 
 
 def render(input, out_dir=None, methods=None, keep_every=10, frames=None, size="960x540", trail="", trail_window=1.0,

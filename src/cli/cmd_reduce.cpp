@@ -1,5 +1,5 @@
 // rotinterp reduce IN -o OUT [-m NAME|LIST|all] [--tolerance 0.5deg,1mm] [--shell-distance 10cm]
-//                  [--tolerance-for JOINT=LIST ...] [--report FILE.json] [--unit U] [--quiet]
+//                  [--tolerance-for JOINT=LIST ...] [--report FILE.json] [--loop [auto|closed|open]] [--unit U] [--quiet]
 // -m with several methods runs the selection for each and prints a table; -o OUT is
 // written with the first.
 #include "common.h"
@@ -34,7 +34,7 @@ constexpr double kDefaultShellMetres = kDefaultReduceShellDistanceCm / 100.0;
 
 struct ReduceArgs {
   std::string input, output, methods = "slerp", report, anim, translation = "cubic";
-  std::string shell_distance, unit;
+  std::string shell_distance, unit, loop = "off";
   std::vector<std::string> tolerance, tolerance_for;
   bool quiet = false;
 };
@@ -81,6 +81,17 @@ nlohmann::json run_json(const MethodRun& r) {
           {"seconds", r.seconds}};
 }
 
+// A cycle as the keys file and the report state it: its form and period, the joints that
+// miss closure (reduced with their ends, as without --loop).
+nlohmann::json loop_json(const LoopCheck& c) {
+  nlohmann::json misses = nlohmann::json::array();
+  for (const ClosureMiss& m : c.misses) misses.push_back({{"joint", m.name}, {"angle_deg", m.angle * 180.0 / kPi}});
+  return {{"form", loop_form_name(c.form)},
+          {"period_frames", c.period_frames},
+          {"period", c.period},
+          {"misses", misses}};
+}
+
 // The keys file: per joint the kept frames, their times and values.
 Status write_keys_json(const std::filesystem::path& path, const Clip& source, const MethodRun& run,
                        const ReduceOptions& opt, double metres_per_unit, const nlohmann::json& budgets) {
@@ -95,6 +106,7 @@ Status write_keys_json(const std::filesystem::path& path, const Clip& source, co
                             {"parent", source.skeleton.joints[j].parent},
                             {"rotation", {{"frames", rj.rotation_frames}, {"times", rt.times}, {"keys", rot_keys}}},
                             {"max_rotation_error_deg", rj.max_rotation_error * 180.0 / kPi}};
+    if (r.cycle) joint["looped"] = rj.looped;
     if (opt.budget.shell > 0.0) joint["max_shell_error_mm"] = rj.max_shell_error * metres_per_unit * 1000.0;
     if (const auto& tr = r.reduced.translations[j]) {
       nlohmann::json tk = nlohmann::json::array();
@@ -104,7 +116,7 @@ Status write_keys_json(const std::filesystem::path& path, const Clip& source, co
     }
     joints.push_back(joint);
   }
-  const nlohmann::json doc = {
+  nlohmann::json doc = {
       {"generator", std::string("rotinterp ") + ROTINTERP_VERSION + " reduce"},
       {"source", source.name},
       {"method", run.method},
@@ -119,10 +131,22 @@ Status write_keys_json(const std::filesystem::path& path, const Clip& source, co
       {"kept_keys", r.kept_keys},
       {"source_keys", r.source_keys},
       {"joints", joints}};
+  if (r.cycle) doc["loop"] = loop_json(*r.cycle);
   return write_file_atomically(path, [&](std::ostream& out) -> Status {
     out << doc.dump(1) << '\n';
     return Ok{};
   });
+}
+
+// "cycle (closed form): 38 frames per period of 1.267 s, 37 of 38 joints looped (the seam one key); 1 joint misses closure (…): L_Arm 4.39°,
+// reduced with its ends".
+std::string cycle_text(const ReduceResult& r) {
+  const LoopCheck& c = *r.cycle;
+  const auto looped = std::count_if(r.joints.begin(), r.joints.end(), [](const ReducedJoint& j) { return j.looped; });
+  std::string s = fmt::format("cycle ({} form): {} frames per period of {:.4g} s, {} of {} joints looped (the seam one key)",
+                              loop_form_name(c.form), c.period_frames, c.period, looped, r.joints.size());
+  if (!c.misses.empty()) s += "; " + closure_misses_text(c.misses) + ", reduced with its ends";
+  return s;
 }
 
 int run_reduce(const ReduceArgs& a) {
@@ -156,6 +180,8 @@ int run_reduce(const ReduceArgs& a) {
   }
   auto unit = parse_unit_option(a.unit);
   if (!unit) return fail_usage(unit.error());
+  auto loop = parse_loop_option(a.loop);
+  if (!loop) return fail_usage(loop.error());
   if (deg == 0.0 && mm == 0.0) mm = kDefaultToleranceMm;  // neither: ozz's 1 mm at 10 cm
   std::vector<JointBudget> per_joint;
   for (const std::string& item : a.tolerance_for) {
@@ -188,6 +214,8 @@ int run_reduce(const ReduceArgs& a) {
   opt.budget.shell = units(mm);
   opt.budget.translation = units(mm > 0.0 ? mm : kDefaultToleranceMm);
   opt.shell_distance = in_clip_units(*clip, shell_m);
+  opt.loop = loop->has_value();
+  if (*loop) opt.loop_form = (*loop)->form;
   for (const JointBudget& b : per_joint) {
     ReduceBudget rb;
     rb.rotation_deg = b.deg;
@@ -251,13 +279,14 @@ int run_reduce(const ReduceArgs& a) {
   if (!a.report.empty()) {
     nlohmann::json list = nlohmann::json::array();
     for (const MethodRun& r : runs) list.push_back(run_json(r));
-    const nlohmann::json report = {{"generator", std::string("rotinterp ") + ROTINTERP_VERSION + " reduce"},
+    nlohmann::json report = {{"generator", std::string("rotinterp ") + ROTINTERP_VERSION + " reduce"},
                                    {"input", a.input},
                                    {"frames", runs.front().result.grid.size()},
                                    {"joints", clip->skeleton.joints.size()},
                                    {"translation", translation_interp_name(opt.translation)},
                                    {"budget", budgets},
                                    {"methods", list}};
+    if (runs.front().result.cycle) report["loop"] = loop_json(*runs.front().result.cycle);
     const Status s = write_file_atomically(a.report, [&](std::ostream& out) -> Status {
       out << report.dump(1) << '\n';
       return Ok{};
@@ -281,6 +310,7 @@ int run_reduce(const ReduceArgs& a) {
                100.0 * static_cast<double>(r.result.kept_keys) / static_cast<double>(std::max<std::size_t>(1, r.result.source_keys)),
                r.max_rotation_deg, mm > 0.0 ? fmt::format(", {:.4f} mm shell", r.max_shell_mm) : std::string(), r.seconds);
   }
+  if (!a.quiet && runs.front().result.cycle) fmt::print("  {}\n", cycle_text(runs.front().result));
   return kExitOk;
 }
 
@@ -307,6 +337,10 @@ void add_reduce_command(CLI::App& app, int& exit_code) {
   sub->add_option("--report", a->report, "Write the table as JSON to FILE.json (default none)");
   sub->add_option("--translation", a->translation,
                   "Translation curve: linear, or cubic (default: Steffen's, never overshoots)");
+  add_loop_option(*sub, a->loop,
+                  "Keys are chosen on each joint's periodic curve (wrap-around neighbours, the root with its "
+                  "per-cycle offset) and the seam is one key; the output closes: each looped track's last key is its "
+                  "first again, one period on.");
   add_unit_option(*sub, a->unit);
   add_anim_option(*sub, a->anim, false);
   add_quiet_option(*sub, a->quiet);

@@ -140,9 +140,11 @@ double skeleton_height(const WorldPose& pose) {
   return (hi - lo).maxCoeff();
 }
 
-double in_clip_units(const Clip& clip, double metres) {
+double metres_per_unit(const Clip& clip) {
   const double m = clip.unit.metres_per_unit;
-  return std::isfinite(m) && m > 0.0 ? metres / m : metres;
+  return std::isfinite(m) && m > 0.0 ? m : 1.0;
 }
+
+double in_clip_units(const Clip& clip, double metres) { return metres / metres_per_unit(clip); }
 
 }  // namespace rotinterp

@@ -15,9 +15,6 @@ namespace rotinterp {
 namespace {
 
 constexpr double kDegrees = 180.0 / kPi;
-// Keys of the translation residual unrolled on each side: Steffen's cubic looks two keys away.
-constexpr long long kTranslationPadding = 3;
-
 // Key times moved onto the exact frame grid where the clip has one (as resample does).
 template <class Track>
 Track on_grid(Track track, const FrameGrid& grid) {
@@ -38,35 +35,6 @@ Track one_period(const Track& track, double t0, double period, double frame) {
     }
   return open;
 }
-
-// p(t) = r(t) + D·(t − t₀)/P with r periodic: r's keys unrolled over whole periods, a curve through them.
-class PeriodicTranslation {
- public:
-  PeriodicTranslation(const TranslationTrack& open, Vec3 offset, double t0, double period, TranslationInterp method)
-      : offset_(std::move(offset)), t0_(t0), period_(period) {
-    const auto n = static_cast<long long>(open.times.size());
-    TranslationTrack unrolled;
-    for (long long k = -kTranslationPadding; k <= n + kTranslationPadding; ++k) {
-      const long long cycles = k >= 0 ? k / n : -((-k + n - 1) / n);
-      const auto i = static_cast<std::size_t>(k - cycles * n);
-      const double t = open.times[i] + static_cast<double>(cycles) * period;
-      unrolled.times.push_back(t);
-      unrolled.keys.push_back(open.keys[i] - drift(open.times[i]));
-    }
-    curve_.emplace(unrolled, method);
-  }
-  Vec3 evaluate(double t) const {
-    double x = std::fmod(t - t0_, period_);
-    if (x < 0.0) x += period_;
-    return curve_->evaluate(t0_ + x) + drift(t);
-  }
-
- private:
-  Vec3 drift(double t) const { return offset_ * ((t - t0_) / period_); }
-  Vec3 offset_;
-  double t0_, period_;
-  std::optional<TranslationCurve> curve_;
-};
 
 std::string percent(double x) {
   char s[32];
@@ -201,12 +169,12 @@ Result<CycleResample> resample_cycle(const Clip& in, const ResampleOptions& opti
     const Vec3 offset = per_cycle_offset(tsource, check.form, source_frame);
     TranslationTrack tkeys = open;
     if (options.keep_every) {  // the kept frames only, read off the source's own periodic curve
-      const PeriodicTranslation whole(open, offset, t0, source_period, options.translation);
+      const PeriodicTranslationCurve whole(open, offset, t0, source_period, options.translation);
       tkeys.times = key_times;
       tkeys.keys.clear();
       for (double t : key_times) tkeys.keys.push_back(whole.evaluate(t));
     }
-    const PeriodicTranslation curve(tkeys, offset, t0, source_period, options.translation);
+    const PeriodicTranslationCurve curve(tkeys, offset, t0, source_period, options.translation);
     for (double t : eval_times) tr.keys.push_back(curve.evaluate(t));
   }
   if (Status s = out.validate(); !s) return make_error("internal: the looped clip is not valid: " + s.error());

@@ -1,9 +1,10 @@
-// Translation tracks between keys: linear, or Steffen's monotone cubic.
+// Translation tracks between keys: linear, or Steffen's monotone cubic; a cycle's, periodic with its per-cycle offset.
 #include "rotinterp/clip/translation_curve.h"
 
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 namespace rotinterp {
 
@@ -99,6 +100,30 @@ Vec3 TranslationCurve::derivative(double t) const {
   const double w = 1.0 - u;
   const Vec3 dp_du = d + (w * w - 2.0 * u * w) * a + (u * u - 2.0 * u * w) * b;
   return dp_du / h;
+}
+
+// Keys of the residual unrolled on each side: Steffen's cubic looks two keys away.
+constexpr long long kPeriodicPadding = 3;
+
+PeriodicTranslationCurve::PeriodicTranslationCurve(const TranslationTrack& open, Vec3 offset, double t0, double period,
+                                                   TranslationInterp method)
+    : offset_(std::move(offset)), t0_(t0), period_(period) {
+  const auto n = static_cast<long long>(open.times.size());
+  TranslationTrack unrolled;
+  for (long long k = -kPeriodicPadding; k <= n + kPeriodicPadding; ++k) {
+    const long long cycles = k >= 0 ? k / n : -((-k + n - 1) / n);
+    const auto i = static_cast<std::size_t>(k - cycles * n);
+    const double t = open.times[i] + static_cast<double>(cycles) * period;
+    unrolled.times.push_back(t);
+    unrolled.keys.push_back(open.keys[i] - drift(open.times[i]));
+  }
+  curve_.emplace(unrolled, method);
+}
+
+Vec3 PeriodicTranslationCurve::evaluate(double t) const {
+  double x = std::fmod(t - t0_, period_);
+  if (x < 0.0) x += period_;
+  return curve_->evaluate(t0_ + x) + drift(t);
 }
 
 }  // namespace rotinterp

@@ -40,7 +40,7 @@ aiVector3D to_ai(const Vec3& v) {
 std::unique_ptr<aiScene> build_scene(const Clip& clip) {
   // Collada states its unit as the metre (assimp writes <unit meter="1">):
   // translations are converted with the clip's unit scale, as for glTF.
-  const double metres = 1.0 / in_clip_units(clip, 1.0);
+  const double metres = metres_per_unit(clip);
   auto scene = std::make_unique<aiScene>();
   const Skeleton& sk = clip.skeleton;
   const std::size_t n = sk.joints.size();

@@ -153,7 +153,7 @@ Result<Document> build(const Clip& clip, const GltfKeys& keys) {
   const std::vector<double> times = keys.own_times ? std::vector<double>{} : all_key_times(clip);
   // glTF's unit is the metre: translations are converted with the clip's unit scale
   // (an FBX in centimetres keeps its real size; BVH, which has none, is taken as is).
-  const double metres = 1.0 / in_clip_units(clip, 1.0);
+  const double metres = metres_per_unit(clip);
   Builder b;
 
   const int input = keys.own_times ? -1 : time_accessor(b, times);

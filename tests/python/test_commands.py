@@ -36,6 +36,7 @@ def test_info_raises_as_read_clip_does(tmp_path):
     ("c2", [], {}),  # the default budget: 1 mm at 10 cm
     ("clamped", ["--tolerance", "2mm", "--shell-distance", "5cm", "--tolerance-for", "Head=0.2deg"],
      {"tolerance": ["2mm"], "shell_distance": 0.05, "tolerance_for": {"Head": "0.2deg"}}),
+    ("c2", ["--loop", "closed"], {"loop": "closed"}),
 ])
 def test_reduce_keeps_the_keys_the_command_keeps(method, args, kwargs, tmp_path):
     path = SAMPLES / "walk.bvh"
@@ -59,6 +60,18 @@ def test_reduce_keeps_the_keys_the_command_keeps(method, args, kwargs, tmp_path)
             assert mine["max_translation_error_mm"] == joint["max_translation_error_mm"]
         else:
             assert mine["translation_frames"] is None
+
+
+def test_reduce_loop_takes_a_cycle_as_the_command_does():
+    clip = rotinterp.read_clip(str(DATA / "fbx" / "digitalrune_Marine_Run.fbx"))
+    ends = rotinterp.reduce(clip, method="c2")
+    cycle = rotinterp.reduce(clip, method="c2", loop=True)
+    assert ends["loop"] is None and cycle["loop"] == "closed"
+    assert cycle["kept_keys"] < ends["kept_keys"]
+    looped = {j["name"]: j["looped"] for j in cycle["joints"]}
+    assert not looped["L_Arm"] and sum(looped.values()) == len(looped) - 1  # the source's pop keeps its ends
+    with pytest.raises(ValueError, match="expected auto, closed or open"):
+        rotinterp.reduce(clip, loop="wrap")
 
 
 def test_reduce_refuses_budgets_the_command_refuses():

@@ -105,7 +105,10 @@ WorldPose rest_pose(const Skeleton& skeleton);
 // of one point (the caller then reports percentages against 1 unit).
 double skeleton_height(const WorldPose& pose);
 
-// `metres` in the clip's units (through Clip::unit).
+// The clip's metres per unit (Clip::unit), read through this one guard: 1 where it is
+// not a positive finite number.
+double metres_per_unit(const Clip& clip);
+// `metres` in the clip's units.
 double in_clip_units(const Clip& clip, double metres);
 
 }  // namespace rotinterp

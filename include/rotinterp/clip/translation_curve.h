@@ -21,6 +21,7 @@
 #include "rotinterp/clip/clip.h"
 #include "rotinterp/core/result.h"
 
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -51,6 +52,23 @@ class TranslationCurve {
   std::vector<double> times_;
   std::vector<Vec3> keys_;
   std::vector<Vec3> tangents_;  // cubic only
+};
+
+// A cycle's translation (resample --loop, reduce --loop; clip/loop.h): the track moves by
+// its per-cycle offset D every period P, p(t) = r(t) + D·(t − t₀)/P with r periodic. `open`
+// holds the keys of one period in open form (times in [t₀, t₀ + P)); r is the curve through
+// them with the drift taken out, unrolled over whole periods, so it is as smooth across
+// the seam as between keys, and a run keeps its forward motion. Defined at every t.
+class PeriodicTranslationCurve {
+ public:
+  PeriodicTranslationCurve(const TranslationTrack& open, Vec3 offset, double t0, double period, TranslationInterp method);
+  Vec3 evaluate(double t) const;
+
+ private:
+  Vec3 drift(double t) const { return offset_ * ((t - t0_) / period_); }
+  Vec3 offset_;
+  double t0_, period_;
+  std::optional<TranslationCurve> curve_;
 };
 
 }  // namespace rotinterp

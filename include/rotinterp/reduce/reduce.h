@@ -3,7 +3,7 @@
 //
 // The source is the clip's motion at its frames (clip/frames.h: dense_clip). For
 // each joint the kept keys lie at a subset of those frames, always including the
-// first and the last; the rebuilt clip is each joint's rotation through its kept
+// first and the last (in a cycle: below); the rebuilt clip is each joint's rotation through its kept
 // keys with the method (interp/interpolator.h) and each translation track through
 // its kept keys with the translation curve (clip/translation_curve.h). Translation
 // keys hold the source's values; rotation keys may hold FITTED values (below), so
@@ -46,17 +46,29 @@
 // only return to the source's, so the loop ends; a frame keyed with the source's
 // values on a joint and all its ancestors is reproduced exactly (to the methods'
 // 1e-9 rad at keys).
+// A cycle (options.loop; clip/loop.h): each joint that closes is rebuilt on its
+// periodic curve (interp/periodic.h; translations with their per-cycle offset,
+// clip/translation_curve.h) and measured on it at every frame; its first frame is the
+// seam, its one forced key (its value fitted), and the last frame no key of its own; the
+// last key interval runs round the seam, and removals and refits are checked on the
+// whole periodic curve. In a closed cycle the last frame is the first again: the looped
+// joints are measured there against the first frame's rotations. Joints that miss
+// closure keep their ends. The reduced clip closes every looped track with a key one
+// period after the first (the first key again; translations moved by the offset), not
+// counted as kept, so that resample --loop and a reader unaware of cycles replay it.
 // The result is near-minimal, not minimal (finding the minimum is a search over
 // subsets and values for the non-local methods).
 #pragma once
 
 #include "rotinterp/clip/clip.h"
+#include "rotinterp/clip/loop.h"
 #include "rotinterp/clip/frames.h"
 #include "rotinterp/clip/translation_curve.h"
 #include "rotinterp/core/progress.h"
 #include "rotinterp/core/result.h"
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -93,6 +105,10 @@ struct ReduceOptions {
   double shell_distance = 0.0;  // clip units; > 0 where a shell budget is set
   unsigned threads = 0;         // without a shell budget joints are independent: 0 = one per core
   ProgressFn progress;          // (joints done, joints)
+  // The clip is one period of a cycle (reduce --loop; clip/loop.h): off by default;
+  // `loop_form` forces the form, else it is detected.
+  bool loop = false;
+  std::optional<LoopForm> loop_form;
 };
 
 struct ReducedJoint {
@@ -103,6 +119,9 @@ struct ReducedJoint {
   double max_rotation_error = 0.0;     // rad
   double max_shell_error = 0.0;        // clip units (0 without a shell budget)
   double max_translation_error = 0.0;  // clip units
+  // In a cycle: on its periodic curve, its last key (rotation and translation) the
+  // closing one — the first again one period on — not counted as kept.
+  bool looped = false;
 };
 
 struct ReduceResult {
@@ -111,6 +130,7 @@ struct ReduceResult {
   std::vector<ReducedJoint> joints;
   std::size_t source_keys = 0;  // frames × (joints + translation tracks)
   std::size_t kept_keys = 0;    // rotation + translation keys kept
+  std::optional<LoopCheck> cycle;  // the cycle's check, with loop
 };
 
 // The translation error a joint's translation track is held to: its translation

@@ -1,0 +1,191 @@
+// The reducer's parts (not installed): its constants, the selection on one track, and the class
+// that runs it over a clip's joints (reduce/reduce.h says what it does).
+#pragma once
+
+#include "rotinterp/clip/loop.h"
+#include "rotinterp/reduce/reduce.h"
+
+#include <cstddef>
+#include <functional>
+#include <optional>
+#include <vector>
+
+namespace rotinterp::detail {
+
+// Keys rebuilt on either side of a key whose removal is checked: squad, expmap,
+// clamped and gltf-cubic reach one key beyond a segment, so the frames between the
+// removed key's second neighbours see exactly the whole track's curve; c2, bf and
+// expmap-c2 are global, but the influence of a key decays by ≈ 0.27 per key, and
+// the verification over every frame catches the rest.
+inline constexpr std::size_t kWindow = 4;
+// A frame whose error with the joint keyed there is above this fraction of the
+// budget is passed up to an ancestor (the joint's own key would leave nothing for
+// the interpolator's round-off at keys, ~1e-9 rad).
+inline constexpr double kFloorLimit = 1.0 - 1e-6;
+// With a shell budget, a joint also keeps its children's positions (their own
+// translation exact) within this share of the children's budget, so that they keep
+// room for their own keys instead of passing frames back up. Measured on the shared
+// clips at 1 mm at 10 cm (slerp): 2.5 % fewer keys in all than without (0.5: 13 %
+// more, 0.8: 1 % fewer).
+inline constexpr double kChildShare = 0.9;
+// translation_tolerance's share of the shell budget. Measured at 1 mm at
+// 10 cm (slerp, linear translations): CMU 01_01 25 055 → 22 060 keys (0.25: 21 965,
+// but more in all over the shared clips in bench_reduce); the Bandai walk and the
+// Xbox jump within 0.3 %.
+inline constexpr double kTranslationShare = 0.5;
+// A track is keyed at a frame its joint cannot meet only if being exact there lowers
+// that joint's error by more than this share of its budget.
+inline constexpr double kUseful = 0.01;
+
+// A key whose removal leaves its neighbourhood at most this far over budget is
+// tried again with its neighbours' values refitted, in at most kRefitIterations
+// steps. Measured at 1 mm at 10 cm on CMU 01_01 and the Bandai walk (slerp, c2, bf):
+// 1.25 and 2 keep as few keys as 2.0 and 3, within 2 %, in half the time (a refit
+// far over budget that succeeds spends the neighbours' room).
+inline constexpr double kRefitReach = 1.25;
+inline constexpr int kRefitIterations = 2;
+// A new rotation key starts from the source smoothed over a few milliseconds: a
+// Gaussian in time whose neighbour at 1/120 s weighs half the frame itself (at 30 Hz
+// a neighbour weighs 2e-5: nothing changes). Capture noise at 100–120 Hz is what it
+// removes, which the C² splines would otherwise carry through every key: on CMU
+// 01_01 at 1 mm at 10 cm c2 keeps 8 % fewer keys, bf 7 %; slerp as many.
+inline constexpr double kStartSmoothing = 0.0070771;  // s: (1/120) / √(2 ln 2)
+// The least weight of a frame in a refit, relative to the worst one's before the 6th
+// power: frames within budget still pull (so that the worst one is not traded for them).
+inline constexpr double kRefitWeightFloor = 0.5;
+
+// Normalized error (≤ 1: within budget) of the frames [lo, hi] of a curve rebuilt
+// from the sorted key frames `keys` (which span [lo, hi] outside a cycle); out[f − lo].
+using ErrorFn = std::function<Status(const std::vector<std::size_t>& keys, std::size_t lo, std::size_t hi, double* out)>;
+// Key values that are fitted rather than copied from the source (rotation tracks):
+//  * start(f) sets the value of a new key at f;
+//  * reset(f) sets the value of a key at f back to the source's, true if it changed;
+//  * refit(keys, free, lo, hi) tries values at the key frames `free` that bring the
+//    frames [lo, hi] of the curve through `keys` within budget: true (and the values
+//    kept) if it found them, false (and the values as they were) if not.
+struct KeyValues {
+  std::function<void(std::size_t f)> start;
+  std::function<bool(std::size_t f)> reset;
+  std::function<Result<bool>(const std::vector<std::size_t>& keys, const std::vector<std::size_t>& free, std::size_t lo,
+                             std::size_t hi)>
+      refit;
+};
+// The residuals of a frame with value q (see Reducer::refit_values).
+using ResidualFn = std::function<double(std::size_t f, const Quat& q, double* out)>;
+
+// The selection on one track of `frames` frames: insertion, then (with `removal`) removal
+// and insertion again (reduce/reduce.h, steps 1–3). `keys` holds the start keys, and the kept
+// ones on return; `e` is scratch.
+Status select_keys(std::vector<std::size_t>& keys, std::size_t frames, const ErrorFn& err, const KeyValues* values,
+                   bool removal, std::vector<double>& e);
+// The same on a cycle of `frames` frames (select_cycle.cpp): keys[0] = 0 is the seam, the
+// one key the cycle keeps; the last key is its image one period on (closed: frames − 1,
+// open: frames), no key of its own. The last interval runs round the seam, and removals
+// and refits are checked on the whole periodic curve.
+Status select_cycle_keys(std::vector<std::size_t>& keys, std::size_t frames, const ErrorFn& err, const KeyValues* values,
+                         bool removal, std::vector<double>& e);
+// The first and last of `frames` frames (one for one frame, none for none).
+std::vector<std::size_t> ends(std::size_t frames);
+bool has(const std::vector<std::size_t>& keys, std::size_t f);
+void add_key(std::vector<std::size_t>& keys, std::size_t f);
+TranslationTrack translation_keys(const std::vector<double>& times, const std::vector<Vec3>& source,
+                                  const std::vector<std::size_t>& kept);
+double shell_error_above(const Quat& r_ref, const Vec3& p_ref, const Quat& r_test, const Vec3& p_test, double d,
+                         double limit);
+
+class Reducer {
+ public:
+  // `cycle`: the clip's cycle check (reduce --loop), whose closing joints are looped.
+  Reducer(const Clip& clip, const ReduceOptions& o, std::vector<ReduceBudget> budgets, std::optional<LoopCheck> cycle);
+  Result<ReduceResult> run();
+
+ private:
+  // A cycle's frames: keys lie in [0, frames) — the period, the seam's image (closed: the
+  // last frame; open: one past it) left out; looped joints are rebuilt periodically.
+  struct Cycle {
+    LoopCheck check;
+    std::size_t frames = 0;
+    double period = 0.0;     // seconds
+    std::vector<char> looped;  // [joint]: closes (not a miss of the check)
+    std::vector<Vec3> offset;  // [joint]: its translation's per-cycle offset
+  };
+  Status set_cycle(LoopCheck check);
+  bool looped(std::size_t j) const { return cycle_ && cycle_->looped[j]; }
+  // The key frame a frame falls on: the seam for a looped joint's last frame of a closed cycle.
+  std::size_t key_frame(std::size_t j, std::size_t f) const { return looped(j) && f >= cycle_->frames ? f - cycle_->frames : f; }
+  // A looped joint's keys without the seam's image.
+  std::vector<std::size_t> in_period(const std::vector<std::size_t>& keys) const {
+    return std::vector<std::size_t>(keys.begin(), keys.end() - 1);
+  }
+  // The time of the seam's image: the closing key a looped track is written with.
+  double closing_time() const {
+    return cycle_->check.form == LoopForm::closed ? dense_.grid.times[n_ - 1] : dense_.grid.times[0] + cycle_->period;
+  }
+  Status select_track_keys(std::size_t j, std::vector<std::size_t>& keys, const ErrorFn& err, const KeyValues* values,
+                           bool removal, std::vector<double>& e) {
+    return looped(j) ? select_cycle_keys(keys, n_, err, values, removal, e) : select_keys(keys, n_, err, values, removal, e);
+  }
+
+  const std::vector<double>& times() const { return dense_.grid.times; }
+  int parent(std::size_t j) const { return clip_.skeleton.joints[j].parent; }
+
+  // The translation track of j: keys, then its rebuilt values at every frame.
+  Status select_translation(std::size_t j, bool removal, std::vector<double>& e);
+  const Vec3& test_translation(std::size_t j, std::size_t f) const {
+    return clip_.translations[j] ? test_translation_[j][f] : dense_.translation[j][f];
+  }
+
+  // World transform of j at f with local rotation q, its ancestors rebuilt.
+  void test_world(std::size_t j, std::size_t f, const Quat& q, Quat& r, Vec3& p) const {
+    const int pa = parent(j);
+    if (pa < 0) {
+      r = q;
+      p = test_translation(j, f);
+      return;
+    }
+    const auto pu = static_cast<std::size_t>(pa);
+    r = test_rot_[pu][f] * q;
+    p = test_pos_[pu][f] + test_rot_[pu][f] * test_translation(j, f);
+  }
+
+  // j's rotation at the frames [lo, hi], rebuilt through its keys at the frames `keys`.
+  Result<std::vector<Quat>> rebuild(std::size_t j, const std::vector<std::size_t>& keys, std::size_t lo, std::size_t hi) const;
+  // Fitted values at the key frames `free` (refit.cpp).
+  Result<bool> refit_values(std::size_t j, const std::vector<std::size_t>& keys, const std::vector<std::size_t>& free,
+                            std::size_t lo, std::size_t hi, int blocks, const ResidualFn& residual);
+  // The rotation keys of j (its translation chosen, its ancestors rebuilt).
+  Status select_rotation(std::size_t j, bool removal, std::vector<double>& e);
+
+  Status run_independent();
+
+  // One track of a joint: its rotation, or its translation.
+  struct Track {
+    std::size_t joint;
+    bool translation;
+    bool operator==(const Track& o) const { return joint == o.joint && translation == o.translation; }
+  };
+  bool exact_at(const Track& t, std::size_t f) const;
+  double floor_with_exact(std::size_t j, std::size_t f, const std::vector<Track>& exact) const;
+  std::vector<Track> tracks_to_key(std::size_t j, std::size_t f) const;
+  std::vector<std::size_t> floor_frames(std::size_t j) const;
+  Status run_hierarchical();
+
+  const Clip& clip_;
+  const ReduceOptions& o_;
+  std::vector<ReduceBudget> budget_;
+  DenseClip dense_;
+  std::vector<std::vector<Quat>> value_;  // [joint][frame]: the value of a key there
+  std::vector<std::vector<Quat>> start_;  // [joint][frame]: the value a new key there starts from
+  std::size_t n_ = 0, joints_ = 0;
+  bool shell_ = false;
+  std::vector<std::vector<std::size_t>> rkeys_, tkeys_;
+  std::vector<ReducedJoint> out_;
+  std::vector<std::vector<std::size_t>> children_;
+  std::vector<std::vector<Vec3>> test_translation_;
+  std::vector<std::vector<Quat>> ref_rot_, test_rot_;
+  std::vector<std::vector<Vec3>> ref_pos_, test_pos_;
+  std::optional<Cycle> cycle_;
+  Status setup_ = Ok{};  // an error found building the cycle, returned by run()
+};
+
+}  // namespace rotinterp::detail

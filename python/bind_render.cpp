@@ -4,6 +4,7 @@
 #include "common.h"
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/render/comparison.h"
+#include "rotinterp/render/option_text.h"
 #include "rotinterp/render/context.h"
 #include "rotinterp/render/renderer.h"
 #include "rotinterp/render/video.h"

@@ -2,7 +2,6 @@
 #include "rotinterp/render/loop_play.h"
 
 #include "rotinterp/clip/frames.h"
-#include "rotinterp/interp/periodic.h"
 
 #include <algorithm>
 #include <cmath>
@@ -31,11 +30,9 @@ class RepeatedCurve final : public Interpolator {
 }  // namespace
 
 Result<CyclePlayedTwice> play_cycle_twice(const Clip& clip, const LoopPlay& loop, std::size_t keep_every) {
-  auto check = check_loop(clip, loop.form);
-  if (!check) return check.failure("--loop: ");
-  if (!loop.form && !check->looks_like_cycle)
-    return make_error("--loop: the clip does not look like a cycle: " + loop_check_text(*check) +
-                      " (give --loop closed or --loop open to treat it as one)");
+  auto cycle = cycle_frames(clip, loop.form);
+  if (!cycle) return cycle.failure();
+  const LoopCheck* check = &cycle->check;
   const DenseClip dense = dense_clip(clip);
   const std::vector<double>& times = dense.grid.times;
   const double t0 = times.front(), period = check->period;
@@ -48,7 +45,6 @@ Result<CyclePlayedTwice> play_cycle_twice(const Clip& clip, const LoopPlay& loop
   const std::size_t nj = clip.skeleton.joints.size();
 
   CyclePlayedTwice out;
-  out.check = *check;
   out.period_frames = n;
   out.keep_every = std::max<std::size_t>(keep_every, 1);
   Clip& c = out.clip;
@@ -82,23 +78,16 @@ Result<CyclePlayedTwice> play_cycle_twice(const Clip& clip, const LoopPlay& loop
   for (std::size_t m = 0; m < 2; ++m)
     for (std::size_t k = 0; k < n; k += out.keep_every) out.keys.push_back(m * n + k);
   if (closed) out.keys.push_back(2 * n);
-  out.looped.assign(nj, true);
-  for (const ClosureMiss& miss : check->misses) out.looped[miss.joint] = false;
+  out.cycle = std::move(*cycle);
   if (Status s = c.validate(); !s) return make_error("internal: the cycle played twice is not valid: " + s.error());
   return out;
 }
 
 Result<std::unique_ptr<Interpolator>> CyclePlayedTwice::curve(const std::string& method, std::size_t joint) const {
-  const std::vector<Quat>& q = period_frames_rotation[joint];
-  if (clip.rotations[joint].keys.size() <= 1) return make_interpolator(method, decimated_track(period_times, q, {0}));
-  if (looped[joint]) {
-    std::vector<std::size_t> kf;
-    for (std::size_t k = 0; k < period_frames; k += keep_every) kf.push_back(k);
-    return make_periodic_interpolator(method, decimated_track(period_times, q, kf), check.period);
-  }
-  auto once = make_interpolator(method, decimated_track(period_times, q, keep_every_indices(q.size(), keep_every)));
-  if (!once) return once.failure();
-  return std::unique_ptr<Interpolator>(new RepeatedCurve(std::move(*once), period_times.front(), check.period));
+  auto rebuilt = rebuild_joint(period_times, period_frames_rotation[joint], method, keep_every, &cycle, joint);
+  if (!rebuilt) return rebuilt.failure();
+  if (rebuilt->periodic) return std::move(rebuilt->curve);
+  return std::unique_ptr<Interpolator>(new RepeatedCurve(std::move(rebuilt->curve), period_times.front(), cycle.check.period));
 }
 
 }  // namespace rotinterp::render

@@ -8,6 +8,7 @@
 #include "rotinterp/io/atomic_file.h"
 #include "rotinterp/io/read.h"
 #include "rotinterp/render/comparison.h"
+#include "rotinterp/render/option_text.h"
 #include "rotinterp/render/context.h"
 #include "rotinterp/render/video.h"
 

@@ -2,6 +2,7 @@
 #include "synthetic_clip.h"
 
 #include "rotinterp/render/comparison.h"
+#include "rotinterp/render/option_text.h"
 
 #include <gtest/gtest.h>
 

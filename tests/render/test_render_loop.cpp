@@ -53,7 +53,7 @@ TEST(RenderLoop, PlaysTheCycleTwiceWithTimeRunningOnAndTheRootMovedOn) {
     for (std::size_t k = 0; k < n; ++k)
       EXPECT_LT(angular_distance(c.rotations[j].keys[n + k], c.rotations[j].keys[k]), 1e-12);
   }
-  EXPECT_FALSE(twice->looped[static_cast<std::size_t>(c.skeleton.find("L_Arm"))]);  // the source's pop
+  EXPECT_FALSE(twice->cycle.looped[static_cast<std::size_t>(c.skeleton.find("L_Arm"))]);  // the source's pop
 }
 
 TEST(RenderLoop, AnOpenCycleWithDriftKeepsMovingForwardInItsSecondPeriod) {

@@ -2,7 +2,8 @@
 //
 // The clip's frames, the original's value at each and the key frames for
 // keep_every N are those of clip/frames.h, shared with render and resample. Each
-// method is built per joint on those keys and evaluated at every frame and, with subframe K,
+// method is built per joint on those keys by the rebuild render draws too
+// (clip/rebuild.h), and evaluated at every frame and, with subframe K,
 // at K evenly spaced times between consecutive frames, where the reference is the
 // slerp of the two original frames (or `truth`, when given, everywhere).
 #pragma once

@@ -1,12 +1,9 @@
 // eval --loop: a clip evaluated as one period of a cycle (clip/loop.h), and the
 // figures of its seam next to the same figures inside.
 //
-// Keys. With keep_every N, a joint that closes takes its keys at frames 0, N, 2N, …
-// inside the period and wraps to frame 0 one period later (as resample --loop does);
-// each method is rebuilt on its periodic curve (interp/periodic.h), so every frame,
-// the last one too, is measured on the curve an engine plays in a loop. A joint
-// that misses closure (a pop in the source) is rebuilt on its ordinary curve from
-// every Nth frame and the last, as without --loop: its pop is kept, and shows at the seam.
+// Keys and curves are clip/rebuild.h's with the cycle: every frame, the last one
+// too, is measured on the curve an engine plays in a loop, and a joint that misses
+// closure keeps its pop, which shows at the seam.
 //
 // The seam figures of one joint (radians), next to the same figures inside:
 //  * seam angle: the largest angle error at the frames of the two key intervals that
@@ -20,9 +17,8 @@
 // (the seam of the closed form).
 #pragma once
 
-#include "rotinterp/clip/loop.h"
 #include "rotinterp/clip/metrics.h"
-#include "rotinterp/interp/interpolator.h"
+#include "rotinterp/clip/rebuild.h"
 
 #include <cstddef>
 #include <memory>
@@ -35,35 +31,13 @@ namespace rotinterp {
 struct ClipReference;  // eval/evaluate_clip.h
 struct ErrorRow;       // eval/error_row.h
 
-// The cycle a clip is evaluated as.
-struct CycleFrames {
-  LoopCheck check;           // form, period (seconds), period_frames, joints that miss closure
-  std::vector<bool> looped;  // [joint]: closes, so rebuilt on its periodic curve
-};
-
-// The cycle of `clip` in `form`, or in the form detected (nullopt). Errors (one
-// line): those of check_loop, and a clip that does not look like a cycle when the
-// form is detected (as resample --loop).
-Result<CycleFrames> cycle_frames(const Clip& clip, std::optional<LoopForm> form);
-
-// One joint rebuilt from every keep_every-th frame.
-struct RebuiltJoint {
-  RotationTrack keys;
-  std::unique_ptr<Interpolator> curve;
-  bool periodic = false;
-  // The key times key_jumps reads: its interior keys are the keys inside, not the seam
-  // (periodic: the keys, then frame 0 one period later; otherwise the keys).
-  std::vector<double> jump_times;
-};
-
-// With reference.cycle, as above; without, every keep_every-th frame and the last,
-// on the ordinary curve (eval without --loop). Errors: the method's.
+// With reference.cycle, the rebuild of clip/rebuild.h on the cycle; without, on
+// every keep_every-th frame and the last (eval without --loop). Errors: the method's.
 Result<RebuiltJoint> rebuild_joint(const ClipReference& reference, std::size_t joint, const std::string& method,
                                    int keep_every);
 
-// The frames where the keys of keep_every N lie (per_frame.csv's `key`): without a
-// cycle every Nth and the last; with one, the period's and the wrap-around frame at
-// t₀ + P where the clip has it (the closed form's last frame).
+// The frames where the keys of keep_every N lie (per_frame.csv's `key`): clip/rebuild.h
+// key_frames on the reference's frames and cycle.
 std::vector<std::size_t> key_frames(const ClipReference& reference, int keep_every);
 
 struct SeamFigures {

@@ -12,6 +12,7 @@
 #pragma once
 
 #include "rotinterp/clip/clip.h"
+#include "rotinterp/clip/rebuild.h"
 #include "rotinterp/core/progress.h"
 #include "rotinterp/core/result.h"
 #include "rotinterp/render/axes.h"
@@ -23,7 +24,6 @@
 #include <filesystem>
 #include <optional>
 #include <string>
-#include <string_view>
 #include <vector>
 
 namespace rotinterp::render {
@@ -34,10 +34,6 @@ struct FrameRange {
   std::size_t end = 0;
   std::size_t step = 1;
 };
-// "START:END:STEP", "START:END" (step 1) or "START" (one frame); END ≥ START, STEP ≥ 1.
-Result<FrameRange> parse_frame_range(std::string_view text);
-// "WxH", both positive integers (limits are checked by render()).
-Result<std::pair<int, int>> parse_size(std::string_view text);
 
 // How the rebuilt poses are coloured.
 enum class Colouring {
@@ -50,8 +46,6 @@ enum class CameraMode {
   fixed,      // one view framing every pose of the frames drawn
   follow,     // a view that follows the smoothed root (or the focus joint)
 };
-Result<Colouring> parse_colouring(std::string_view name);   // "error" or "method"
-Result<CameraMode> parse_camera(std::string_view name);     // "fixed" or "follow"
 
 struct ComparisonOptions {
   std::vector<std::string> methods;   // names in methods(); at least one
@@ -89,15 +83,8 @@ struct ComparisonResult {
   double video_fps = 0.0;
 };
 
-// The angular error of a rebuilt pose at one frame, degrees: mean and max over the
-// animated joints (every joint when none is animated) — what a panel's title shows.
-struct FrameError {
-  double mean = 0.0;
-  double max = 0.0;
-};
-
-// `method`'s error at every frame of the clip (clip/frames.h, the frames eval
-// measures) when rebuilt from every keep_every-th frame.
+// `method`'s error at every frame of the clip (clip/rebuild.h FrameError: what a
+// panel's title shows) when rebuilt from every keep_every-th frame.
 // With `loop`, at every frame of the cycle played twice (render/loop_play.h).
 Result<std::vector<FrameError>> comparison_errors(const Clip& clip, const std::string& method, std::size_t keep_every,
                                                   const std::optional<LoopPlay>& loop = std::nullopt);

@@ -7,13 +7,14 @@
 // frame i are the source's at frame i mod (frames per period).
 //
 // Keys: frames 0, N, 2N, … inside each period, then the wrap to the next period's
-// frame 0. Each method is rebuilt on its periodic curve (interp/periodic.h) through
-// the first period's keys; a joint that misses closure (a pop in the source) on its
-// ordinary curve through every Nth frame and the last of one period, repeated each
-// period: its pop shows at the seam, as an engine plays it.
+// frame 0. Each joint's curve is the rebuild of one period with its cycle
+// (clip/rebuild.h, as eval --loop measures it); a joint that misses closure (a pop
+// in the source) has its one-period curve repeated each period: its pop shows at
+// the seam, as an engine plays it.
 #pragma once
 
 #include "rotinterp/clip/loop.h"
+#include "rotinterp/clip/rebuild.h"
 #include "rotinterp/interp/interpolator.h"
 
 #include <cstddef>
@@ -31,14 +32,13 @@ struct LoopPlay {
 
 struct CyclePlayedTwice {
   Clip clip;                        // the two periods
-  LoopCheck check;                  // the source's cycle
+  CycleFrames cycle;                // the source's cycle, and which joints close it
   std::size_t period_frames = 0;    // frames per period in `clip`
   std::vector<std::size_t> keys;    // key frames of `clip`, sorted
-  std::vector<bool> looped;         // [joint]: on its periodic curve
   // The curve of `method` for `joint`, on `clip`'s timeline. Errors: the method's.
   Result<std::unique_ptr<Interpolator>> curve(const std::string& method, std::size_t joint) const;
 
-  // The source's frames of one period and its keys (private to curve()).
+  // The source's frames of one period (private to curve()).
   std::vector<double> period_times;             // [frame], seconds
   std::vector<std::vector<Quat>> period_frames_rotation;  // [joint][frame], one more for the closed form's end
   std::size_t keep_every = 1;

@@ -128,10 +128,6 @@ inline RotationTrack track_of(const double* times, const double* quats, std::siz
   return track;
 }
 
-// Metres per clip unit, the one place the module reads a clip's unit from: the unit
-// the reader settled (clip/units.h: declared, given, inferred or assumed).
-inline double metres_per_unit(const Clip& c) { return c.unit.metres_per_unit; }
-
 // read_clip's reading (bind_commands.cpp): the clip at `path`, its animation `anim`
 // (None, a name or an index) and its unit (None: the file's or inferred; "cm", …, or
 // metres per unit as a number); raises OSError subclasses or ValueError.

@@ -276,12 +276,12 @@ Result<ComparisonResult> render_frames(const Clip& clip, const fs::path& out_dir
       const FrameError& error = errors[m];
       p.title = fmt::format("{}  mean {:.2f}°  max {:.2f}°{}", options.methods[m], error.mean, error.max,
                             is_key ? "  (key)" : "");
-      p.color = method_colour(options.methods[m]);
+      p.colour = method_colour(options.methods[m]);
       p.ghost = ghost;
       p.corner = corner;
       if (options.colouring == Colouring::error) {
         p.colour_scale_deg = scale;
-        for (double e : joint_error[m]) p.joint_colors.push_back(error_colour(e, scale));
+        for (double e : joint_error[m]) p.joint_colours.push_back(error_colour(e, scale));
         if (worst[m] >= 0 && error.max > 0.0) {
           p.label_joint = worst[m];
           p.joint_label = fmt::format("{} {:.1f}°", clip.skeleton.joints[static_cast<std::size_t>(worst[m])].name, error.max);
@@ -326,8 +326,8 @@ Result<ComparisonResult> render_frames(const Clip& clip, const fs::path& out_dir
     const double scale = error_scale(sheet_max);
     for (std::size_t c = 0; c < sheet.size(); ++c) {
       sheet[c].colour_scale_deg = scale;
-      sheet[c].joint_colors.clear();
-      for (double e : sheet_errors[c]) sheet[c].joint_colors.push_back(error_colour(e, scale));
+      sheet[c].joint_colours.clear();
+      for (double e : sheet_errors[c]) sheet[c].joint_colours.push_back(error_colour(e, scale));
     }
   }
   if (options.sheet && writing) {

@@ -58,7 +58,7 @@ void add_axes(const Skeleton& skeleton, const WorldPose& pose, double length, Ba
     const Mat3 r = pose.rotation[j].toRotationMatrix();
     for (int axis = 0; axis < 3; ++axis)
       batch.cylinder(pose.position[j], pose.position[j] + length * r.col(axis), kThickness * length, 0.0,
-                     kAxisColors[axis], 1.0f);
+                     kAxisColours[axis], 1.0f);
   }
 }
 

@@ -13,7 +13,7 @@ namespace {
 // 256, sRGB. Entry k sits at t = index/255.
 struct ControlPoint {
   int index;
-  Color rgb;
+  Colour rgb;
 };
 constexpr ControlPoint kViridis[] = {
     {0, {0.267004f, 0.004874f, 0.329415f}},
@@ -53,7 +53,7 @@ constexpr ControlPoint kViridis[] = {
 
 }  // namespace
 
-Color viridis(double t) {
+Colour viridis(double t) {
   if (!(t > 0.0)) return kViridis[0].rgb;
   if (t >= 1.0) return std::prev(std::end(kViridis))->rgb;
   const double x = t * 255.0;
@@ -62,7 +62,7 @@ Color viridis(double t) {
   const ControlPoint& a = kViridis[k - 1];
   const ControlPoint& b = kViridis[k];
   const double w = (x - a.index) / (b.index - a.index);
-  Color c;
+  Colour c;
   for (std::size_t i = 0; i < 3; ++i) c[i] = static_cast<float>(a.rgb[i] + w * (b.rgb[i] - a.rgb[i]));
   return c;
 }
@@ -75,7 +75,7 @@ double error_scale(double max_error_deg) {
   return 180.0;
 }
 
-Color error_colour(double error_deg, double scale_deg) {
+Colour error_colour(double error_deg, double scale_deg) {
   return viridis(scale_deg > 0.0 ? error_deg / scale_deg : 0.0);
 }
 

@@ -8,6 +8,7 @@
 #include "rotinterp/clip/frames.h"
 #include "rotinterp/clip/rebuild.h"
 #include "rotinterp/interp/interpolator.h"
+#include "rotinterp/io/fbx_source.h"
 #include "rotinterp/render/colour_map.h"
 #include "rotinterp/render/layout.h"
 #include "rotinterp/render/video.h"
@@ -24,21 +25,60 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// The file's own motion as a curve (render -m source): evaluated, not rebuilt from keys.
+class SourceCurve final : public Interpolator {
+ public:
+  SourceCurve(SourceMotion source, std::size_t joint) : source_(std::move(source)), joint_(joint) {}
+  Quat evaluate(double t) const override { return source_(joint_, t); }
+
+ private:
+  SourceMotion source_;
+  std::size_t joint_;
+};
+
+bool is_source(const std::string& method) { return method == kSourceMethodName; }
+
+// Every method is a registry's, or "source" with the file's motion at hand.
+Status check_methods(const std::vector<std::string>& methods, const SourceMotion& source, bool loop) {
+  for (const std::string& m : methods) {
+    if (!is_source(m)) {
+      if (!find_method(m)) return make_error(unknown_method_message(m));
+    } else if (!source) {
+      return make_error("--method source needs the file's own curves (an FBX file with rotation curves)");
+    } else if (loop) {
+      return make_error("--method source draws the file's own motion, which --loop cannot play as a cycle");
+    }
+  }
+  return Ok{};
+}
+
 // The methods rebuilt on `clip`'s frames; with `cycle` (--loop), `clip` is its two
-// periods and the curves are the cycle's.
+// periods and the curves are the cycle's; "source" is `source`'s motion.
 Result<RebuiltClip> rebuild_methods(const Clip& clip, const std::vector<std::string>& methods, std::size_t keep_every,
-                                    const CyclePlayedTwice* cycle) {
-  if (!cycle) return RebuiltClip::build(clip, methods, keep_every);
-  return RebuiltClip::build(clip, methods, cycle->keys,
-                            [cycle](const std::string& m, std::size_t j) { return cycle->curve(m, j); });
+                                    const CyclePlayedTwice* cycle, const SourceMotion& source) {
+  if (cycle) return RebuiltClip::build(clip, methods, cycle->keys,
+                                       [cycle](const std::string& m, std::size_t j) { return cycle->curve(m, j); });
+  if (std::none_of(methods.begin(), methods.end(), is_source)) return RebuiltClip::build(clip, methods, keep_every);
+  // As RebuiltClip::build(clip, methods, keep_every) does, with the source's curves beside.
+  keep_every = std::max<std::size_t>(keep_every, 1);
+  const DenseClip reference = dense_clip(clip);
+  return RebuiltClip::build(
+      clip, methods, keep_every_indices(reference.grid.size(), keep_every),
+      [&](const std::string& m, std::size_t j) -> Result<std::unique_ptr<Interpolator>> {
+        if (is_source(m)) return std::unique_ptr<Interpolator>(std::make_unique<SourceCurve>(source, j));
+        auto rebuilt = rebuild_joint(reference.grid.times, reference.rotation[j], m, keep_every, nullptr, j);
+        if (!rebuilt) return rebuilt.failure();
+        return std::move(rebuilt->curve);
+      });
 }
 
 }  // namespace
 
 Result<std::vector<FrameError>> comparison_errors(const Clip& clip, const std::string& method, std::size_t keep_every,
-                                                  const std::optional<LoopPlay>& loop) {
+                                                  const std::optional<LoopPlay>& loop,
+                                                  const SourceMotion& source) {
   if (Status s = clip.validate(); !s) return s.failure();
-  if (!find_method(method)) return make_error(unknown_method_message(method));
+  if (Status s = check_methods({method}, source, loop.has_value()); !s) return s.failure();
   keep_every = std::max<std::size_t>(keep_every, 1);
   std::optional<CyclePlayedTwice> cycle;
   if (loop) {
@@ -46,7 +86,7 @@ Result<std::vector<FrameError>> comparison_errors(const Clip& clip, const std::s
     if (!twice) return twice.failure();
     cycle = std::move(*twice);
   }
-  auto rebuild = rebuild_methods(cycle ? cycle->clip : clip, {method}, keep_every, cycle ? &*cycle : nullptr);
+  auto rebuild = rebuild_methods(cycle ? cycle->clip : clip, {method}, keep_every, cycle ? &*cycle : nullptr, source);
   if (!rebuild) return rebuild.failure();
   std::vector<FrameError> errors(rebuild->frames());
   std::vector<Quat> local;
@@ -115,8 +155,7 @@ Result<ComparisonResult> render_frames(const Clip& clip, const fs::path& out_dir
   // ---- validate everything before drawing anything ----
   if (Status s = clip.validate(); !s) return s.failure();
   if (options.methods.empty()) return make_error("no methods to compare");
-  for (const std::string& m : options.methods)
-    if (!find_method(m)) return make_error(unknown_method_message(m));
+  if (Status s = check_methods(options.methods, options.source, cycle != nullptr); !s) return s.failure();
   if (options.keep_every < 1) return make_error("--keep-every must be at least 1");
   if (!options.pngs && options.video.empty()) return make_error("nothing to write: no frame images and no video");
   if (!options.pngs && options.sheet) return make_error("--sheet needs an output directory");
@@ -166,7 +205,7 @@ Result<ComparisonResult> render_frames(const Clip& clip, const fs::path& out_dir
     return make_error(probe ? std::string(backend_name(backend)) + " is not available" : probe.error());
   }
 
-  auto built = rebuild_methods(clip, options.methods, options.keep_every, cycle);
+  auto built = rebuild_methods(clip, options.methods, options.keep_every, cycle, options.source);
   if (!built) return built.failure();
   const RebuiltClip& rebuild = *built;
   const std::size_t frame_count = rebuild.frames();
@@ -276,12 +315,12 @@ Result<ComparisonResult> render_frames(const Clip& clip, const fs::path& out_dir
       const FrameError& error = errors[m];
       p.title = fmt::format("{}  mean {:.2f}°  max {:.2f}°{}", options.methods[m], error.mean, error.max,
                             is_key ? "  (key)" : "");
-      p.color = method_colour(options.methods[m]);
+      p.colour = method_colour(options.methods[m]);
       p.ghost = ghost;
       p.corner = corner;
       if (options.colouring == Colouring::error) {
         p.colour_scale_deg = scale;
-        for (double e : joint_error[m]) p.joint_colors.push_back(error_colour(e, scale));
+        for (double e : joint_error[m]) p.joint_colours.push_back(error_colour(e, scale));
         if (worst[m] >= 0 && error.max > 0.0) {
           p.label_joint = worst[m];
           p.joint_label = fmt::format("{} {:.1f}°", clip.skeleton.joints[static_cast<std::size_t>(worst[m])].name, error.max);
@@ -326,8 +365,8 @@ Result<ComparisonResult> render_frames(const Clip& clip, const fs::path& out_dir
     const double scale = error_scale(sheet_max);
     for (std::size_t c = 0; c < sheet.size(); ++c) {
       sheet[c].colour_scale_deg = scale;
-      sheet[c].joint_colors.clear();
-      for (double e : sheet_errors[c]) sheet[c].joint_colors.push_back(error_colour(e, scale));
+      sheet[c].joint_colours.clear();
+      for (double e : sheet_errors[c]) sheet[c].joint_colours.push_back(error_colour(e, scale));
     }
   }
   if (options.sheet && writing) {

@@ -10,27 +10,27 @@ namespace rotinterp::render {
 
 namespace {
 
-constexpr Color kGhostColor = {0.84f, 0.87f, 0.92f};
+constexpr Colour kGhostColour = {0.84f, 0.87f, 0.92f};
 constexpr float kGhostAlpha = 0.33f;
-constexpr Color kKeyMarker = {0.96f, 0.96f, 0.96f};
+constexpr Colour kKeyMarker = {0.96f, 0.96f, 0.96f};
 constexpr float kGridLine[4] = {0.30f, 0.32f, 0.35f, 1.0f};
 constexpr float kSphereWire[4] = {0.30f, 0.32f, 0.36f, 1.0f};
 
-Instance make_instance(const Eigen::Matrix4d& model, const Color& color, float alpha) {
+Instance make_instance(const Eigen::Matrix4d& model, const Colour& colour, float alpha) {
   Instance in;
   const Eigen::Matrix4f f = model.cast<float>();
   std::memcpy(in.model, f.data(), sizeof in.model);  // Eigen is column-major, like GL
-  in.color[0] = color[0];
-  in.color[1] = color[1];
-  in.color[2] = color[2];
-  in.color[3] = alpha;
+  in.colour[0] = colour[0];
+  in.colour[1] = colour[1];
+  in.colour[2] = colour[2];
+  in.colour[3] = alpha;
   return in;
 }
 
-// `color` mixed towards the inset background: f = 1 keeps it, f = 0 is the background.
-Color faded(const Color& color, float f) {
-  return {kInsetBackground[0] + f * (color[0] - kInsetBackground[0]), kInsetBackground[1] + f * (color[1] - kInsetBackground[1]),
-          kInsetBackground[2] + f * (color[2] - kInsetBackground[2])};
+// `colour` mixed towards the inset background: f = 1 keeps it, f = 0 is the background.
+Colour faded(const Colour& colour, float f) {
+  return {kInsetBackground[0] + f * (colour[0] - kInsetBackground[0]), kInsetBackground[1] + f * (colour[1] - kInsetBackground[1]),
+          kInsetBackground[2] + f * (colour[2] - kInsetBackground[2])};
 }
 
 bool pose_usable(const WorldPose& pose, const Skeleton& skeleton) {
@@ -85,14 +85,14 @@ void Batch::clear() {
   spheres.clear();
 }
 
-void Batch::sphere(const Vec3& p, double radius, const Color& color, float alpha) {
+void Batch::sphere(const Vec3& p, double radius, const Colour& colour, float alpha) {
   Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
   m.block<3, 3>(0, 0) = Mat3::Identity() * radius;
   m.block<3, 1>(0, 3) = p;
-  spheres.push_back(make_instance(m, color, alpha));
+  spheres.push_back(make_instance(m, colour, alpha));
 }
 
-void Batch::cylinder(const Vec3& a, const Vec3& b, double radius, double min_length, const Color& color, float alpha) {
+void Batch::cylinder(const Vec3& a, const Vec3& b, double radius, double min_length, const Colour& colour, float alpha) {
   const Vec3 d = b - a;
   const double length = d.norm();
   if (!(length > min_length)) return;
@@ -100,62 +100,62 @@ void Batch::cylinder(const Vec3& a, const Vec3& b, double radius, double min_len
   Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
   m.block<3, 3>(0, 0) = r * Eigen::Vector3d(radius, radius, length).asDiagonal();
   m.block<3, 1>(0, 3) = a;
-  cylinders.push_back(make_instance(m, color, alpha));
+  cylinders.push_back(make_instance(m, colour, alpha));
 }
 
-void add_pose(const Skeleton& skeleton, const WorldPose& pose, double radius, const Color& color, float alpha,
-              Batch& batch, const std::vector<Color>& joint_colors) {
+void add_pose(const Skeleton& skeleton, const WorldPose& pose, double radius, const Colour& colour, float alpha,
+              Batch& batch, const std::vector<Colour>& joint_colours) {
   if (!pose_usable(pose, skeleton)) return;
-  const bool per_joint = joint_colors.size() == skeleton.joints.size();
-  auto colour = [&](std::size_t j) -> const Color& { return per_joint ? joint_colors[j] : color; };
+  const bool per_joint = joint_colours.size() == skeleton.joints.size();
+  auto bone_colour = [&](std::size_t j) -> const Colour& { return per_joint ? joint_colours[j] : colour; };
   const double min_length = radius * 1e-3;
   for (std::size_t j = 0; j < skeleton.joints.size(); ++j) {
     const int p = skeleton.joints[j].parent;
     const auto turner = p >= 0 ? static_cast<std::size_t>(p) : j;
-    if (p >= 0) batch.cylinder(pose.position[turner], pose.position[j], radius, min_length, colour(turner), alpha);
-    batch.sphere(pose.position[j], radius, colour(turner), alpha);
+    if (p >= 0) batch.cylinder(pose.position[turner], pose.position[j], radius, min_length, bone_colour(turner), alpha);
+    batch.sphere(pose.position[j], radius, bone_colour(turner), alpha);
   }
   if (pose.end_site_position.size() != skeleton.end_sites.size()) return;
   for (std::size_t e = 0; e < skeleton.end_sites.size(); ++e) {
     const auto parent = static_cast<std::size_t>(skeleton.end_sites[e].parent);
     const Vec3& b = pose.end_site_position[e];
-    batch.cylinder(pose.position[parent], b, radius, min_length, colour(parent), alpha);
-    batch.sphere(b, radius, colour(parent), alpha);
+    batch.cylinder(pose.position[parent], b, radius, min_length, bone_colour(parent), alpha);
+    batch.sphere(b, radius, bone_colour(parent), alpha);
   }
 }
 
-void add_curve(const std::vector<Vec3>& points, std::size_t stride, double radius, const Color& color, float alpha,
+void add_curve(const std::vector<Vec3>& points, std::size_t stride, double radius, const Colour& colour, float alpha,
                Batch& batch, const std::vector<float>& fade) {
   if (points.empty()) return;
   const bool fading = fade.size() == points.size();
   auto f = [&](std::size_t k) { return fading ? std::clamp(fade[k], 0.0f, 1.0f) : 1.0f; };
   std::size_t previous = 0;
-  batch.sphere(unit_or_zero(points[0]), radius, faded(color, f(0)), alpha * f(0));
+  batch.sphere(unit_or_zero(points[0]), radius, faded(colour, f(0)), alpha * f(0));
   for (std::size_t i = stride; ; i += stride) {
     const std::size_t k = std::min(i, points.size() - 1);
     if (k == previous) break;
     const Vec3 a = unit_or_zero(points[previous]), b = unit_or_zero(points[k]);
     const float w = std::max(f(previous), f(k));
-    batch.cylinder(a, b, radius, 1e-6, faded(color, w), alpha * w);
-    batch.sphere(b, radius, faded(color, f(k)), alpha * f(k));
+    batch.cylinder(a, b, radius, 1e-6, faded(colour, w), alpha * w);
+    batch.sphere(b, radius, faded(colour, f(k)), alpha * f(k));
     previous = k;
   }
 }
 
 void panel_figure(const Scene& scene, const Panel& panel, Batch& solid, Batch& translucent) {
   solid.clear();
-  add_pose(scene.skeleton, panel.pose, scene.bone_radius, panel.color, 1.0f, solid, panel.joint_colors);
+  add_pose(scene.skeleton, panel.pose, scene.bone_radius, panel.colour, 1.0f, solid, panel.joint_colours);
   if (scene.axes) add_axes(scene.skeleton, panel.pose, axes_length(panel.view ? *panel.view : scene.bounds, scene.bone_radius),
                             solid);
   translucent.clear();
-  add_pose(scene.skeleton, panel.ghost, scene.bone_radius * 1.02, kGhostColor, kGhostAlpha, translucent);
+  add_pose(scene.skeleton, panel.ghost, scene.bone_radius * 1.02, kGhostColour, kGhostAlpha, translucent);
 }
 
-void trail_figure(const Trail& trail, const Color& color, double zoom, Batch& solid, Batch& translucent) {
+void trail_figure(const Trail& trail, const Colour& colour, double zoom, Batch& solid, Batch& translucent) {
   const std::size_t n = trail.reference.size();
   const std::size_t stride = std::max<std::size_t>(1, (n + kMaxTrailSegments - 1) / kMaxTrailSegments);
   solid.clear();
-  add_curve(trail.method, stride, zoom * kTrailMethodRadius, color, 1.0f, solid, trail.fade);
+  add_curve(trail.method, stride, zoom * kTrailMethodRadius, colour, 1.0f, solid, trail.fade);
   const bool fading = trail.fade.size() == n;
   if (trail.keys.size() <= kMaxKeyMarkers)
     for (std::size_t k : trail.keys)
@@ -163,11 +163,11 @@ void trail_figure(const Trail& trail, const Color& color, double zoom, Batch& so
         solid.sphere(unit_or_zero(trail.method[k]), zoom * kTrailKeyRadius,
                      fading ? faded(kKeyMarker, std::clamp(trail.fade[k], 0.0f, 1.0f)) : kKeyMarker, 1.0f);
   if (trail.current < trail.method.size())
-    solid.sphere(unit_or_zero(trail.method[trail.current]), zoom * kTrailCurrentRadius, color, 1.0f);
+    solid.sphere(unit_or_zero(trail.method[trail.current]), zoom * kTrailCurrentRadius, colour, 1.0f);
   translucent.clear();
-  add_curve(trail.reference, stride, zoom * kTrailReferenceRadius, kGhostColor, kGhostAlpha, translucent, trail.fade);
+  add_curve(trail.reference, stride, zoom * kTrailReferenceRadius, kGhostColour, kGhostAlpha, translucent, trail.fade);
   if (trail.current < n)
-    translucent.sphere(unit_or_zero(trail.reference[trail.current]), zoom * kTrailCurrentRadius * 1.25, kGhostColor,
+    translucent.sphere(unit_or_zero(trail.reference[trail.current]), zoom * kTrailCurrentRadius * 1.25, kGhostColour,
                        kGhostAlpha);
 }
 

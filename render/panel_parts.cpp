@@ -8,7 +8,7 @@
 
 namespace rotinterp::render {
 
-Color method_colour(const std::string& method) {
+Colour method_colour(const std::string& method) {
   const auto& rgb = method_style(method_slot(method)).rgb;
   return {rgb[0] / 255.0f, rgb[1] / 255.0f, rgb[2] / 255.0f};
 }

@@ -13,7 +13,7 @@
 namespace rotinterp::render {
 
 // A method's colour: its registry slot's (interp/method_style.h), as in eval's plots.
-Color method_colour(const std::string& method);
+Colour method_colour(const std::string& method);
 
 // Method m's trail of `joint`'s bone direction over frames first…last.
 std::shared_ptr<Trail> make_trail(const RebuiltClip& rebuild, std::size_t m, int joint, std::size_t first,

@@ -59,7 +59,7 @@ Status Renderer::Impl::draw_panel(const Panel& panel, int width, int height) {
     draw_lines(grid, view_projection);
   use_mesh_program(camera, scene.bone_radius, figure.height);
   panel_figure(scene, panel, solid, translucent);
-  if (!panel.joint_colors.empty()) gl.Uniform1f(mesh_shade, kErrorShade);
+  if (!panel.joint_colours.empty()) gl.Uniform1f(mesh_shade, kErrorShade);
   draw_opaque(solid);
   gl.Uniform1f(mesh_shade, 1.0f);
   draw_translucent(translucent);

@@ -84,7 +84,7 @@ void Renderer::Impl::make_mesh(Mesh& mesh, const MeshData& data) {
     gl.VertexAttribDivisor(2 + column, 1);
   }
   gl.EnableVertexAttribArray(6);
-  gl.VertexAttribPointer(6, 4, GL_FLOAT, GL_FALSE, sizeof(Instance), reinterpret_cast<void*>(offsetof(Instance, color)));
+  gl.VertexAttribPointer(6, 4, GL_FLOAT, GL_FALSE, sizeof(Instance), reinterpret_cast<void*>(offsetof(Instance, colour)));
   gl.VertexAttribDivisor(6, 1);
   gl.BindVertexArray(0);
 }
@@ -130,7 +130,7 @@ Status Renderer::Impl::setup() {
   mesh_shade = gl.GetUniformLocation(mesh_program, "u_shade");
   line_view_projection = gl.GetUniformLocation(line_program, "u_view_projection");
   text_viewport = gl.GetUniformLocation(text_program, "u_viewport");
-  text_color = gl.GetUniformLocation(text_program, "u_color");
+  text_colour = gl.GetUniformLocation(text_program, "u_color");
   text_atlas = gl.GetUniformLocation(text_program, "u_atlas");
 
   for (int level = 0; level < 2; ++level) {
@@ -178,10 +178,10 @@ void Renderer::Impl::release_framebuffers() {
   if (msaa_fbo) {
     GLuint fbos[] = {msaa_fbo, resolve_fbo};
     gl.DeleteFramebuffers(2, fbos);
-    GLuint rbs[] = {msaa_color, msaa_depth, resolve_color};
+    GLuint rbs[] = {msaa_colour, msaa_depth, resolve_colour};
     gl.DeleteRenderbuffers(3, rbs);
   }
-  msaa_fbo = resolve_fbo = msaa_color = msaa_depth = resolve_color = 0;
+  msaa_fbo = resolve_fbo = msaa_colour = msaa_depth = resolve_colour = 0;
   fbo_width = fbo_height = 0;
 }
 
@@ -190,10 +190,10 @@ Status Renderer::Impl::ensure_framebuffers(int width, int height) {
   release_framebuffers();
   gl.GenFramebuffers(1, &msaa_fbo);
   gl.BindFramebuffer(GL_FRAMEBUFFER, msaa_fbo);
-  gl.GenRenderbuffers(1, &msaa_color);
-  gl.BindRenderbuffer(GL_RENDERBUFFER, msaa_color);
+  gl.GenRenderbuffers(1, &msaa_colour);
+  gl.BindRenderbuffer(GL_RENDERBUFFER, msaa_colour);
   gl.RenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_RGBA8, width, height);
-  gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, msaa_color);
+  gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, msaa_colour);
   gl.GenRenderbuffers(1, &msaa_depth);
   gl.BindRenderbuffer(GL_RENDERBUFFER, msaa_depth);
   gl.RenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT24, width, height);
@@ -203,10 +203,10 @@ Status Renderer::Impl::ensure_framebuffers(int width, int height) {
                       "×" + std::to_string(height) + " multisampled framebuffer");
   gl.GenFramebuffers(1, &resolve_fbo);
   gl.BindFramebuffer(GL_FRAMEBUFFER, resolve_fbo);
-  gl.GenRenderbuffers(1, &resolve_color);
-  gl.BindRenderbuffer(GL_RENDERBUFFER, resolve_color);
+  gl.GenRenderbuffers(1, &resolve_colour);
+  gl.BindRenderbuffer(GL_RENDERBUFFER, resolve_colour);
   gl.RenderbufferStorageMultisample(GL_RENDERBUFFER, 0, GL_RGBA8, width, height);
-  gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, resolve_color);
+  gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, resolve_colour);
   if (gl.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
     return make_error(std::string(backend_name(context->backend())) + ": cannot make a " + std::to_string(width) +
                       "×" + std::to_string(height) + " framebuffer");
@@ -290,7 +290,7 @@ void Renderer::Impl::draw_texts(int width, int height) {
   gl.UseProgram(text_program);
   gl.Uniform1i(text_atlas, 0);
   gl.Uniform2f(text_viewport, static_cast<float>(width), static_cast<float>(height));
-  gl.Uniform4f(text_color, kTitleText[0], kTitleText[1], kTitleText[2], kTitleText[3]);
+  gl.Uniform4f(text_colour, kTitleText[0], kTitleText[1], kTitleText[2], kTitleText[3]);
   gl.ActiveTexture(GL_TEXTURE0);
   gl.BindVertexArray(text_vao);
   gl.BindBuffer(GL_ARRAY_BUFFER, text_vbo);

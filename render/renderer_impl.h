@@ -53,7 +53,7 @@ struct Renderer::Impl {
   GLuint mesh_program = 0, line_program = 0, text_program = 0;
   GLint mesh_view_projection = -1, mesh_light = -1, mesh_eye = -1, mesh_shade = -1;
   GLint line_view_projection = -1;
-  GLint text_viewport = -1, text_color = -1, text_atlas = -1;
+  GLint text_viewport = -1, text_colour = -1, text_atlas = -1;
   // Two levels of detail: coarse meshes for bones a few pixels thick (most of the
   // time; llvmpipe's vertex work is single-threaded), fine ones for close-ups.
   Mesh cylinder[2], sphere[2];
@@ -68,7 +68,7 @@ struct Renderer::Impl {
   };
   std::map<int, GLAtlas> atlases;
 
-  GLuint msaa_fbo = 0, msaa_color = 0, msaa_depth = 0, resolve_fbo = 0, resolve_color = 0;
+  GLuint msaa_fbo = 0, msaa_colour = 0, msaa_depth = 0, resolve_fbo = 0, resolve_colour = 0;
   int fbo_width = 0, fbo_height = 0;
   std::vector<std::uint8_t> readback;
 

@@ -39,7 +39,7 @@ void Renderer::Impl::draw_trail(const Panel& panel, const Trail& trail, const Re
   const TrailView view = trail_view(trail.reference, trail.method, scene.view);
   draw_lines(sphere_lines, to_float(view.camera.projection() * view.camera.view()));
   use_mesh_program(view.camera, view.zoom * kTrailReferenceRadius, inset.height);
-  trail_figure(trail, panel.color, view.zoom, solid, translucent);
+  trail_figure(trail, panel.colour, view.zoom, solid, translucent);
   draw_opaque(solid);
   draw_translucent(translucent);
   gl.Disable(GL_SCISSOR_TEST);
@@ -51,7 +51,7 @@ void Renderer::Impl::draw_trail(const Panel& panel, const Trail& trail, const Re
 void Renderer::Impl::draw_colour_bar(const Panel& panel, const Rect& bar, int width, int height) {
   LineList lines;
   for (int row = 0; row < bar.height; ++row) {
-    const Color c = viridis(static_cast<double>(bar.height - 1 - row) / std::max(1, bar.height - 1));
+    const Colour c = viridis(static_cast<double>(bar.height - 1 - row) / std::max(1, bar.height - 1));
     const float rgba[4] = {c[0], c[1], c[2], 1.0f};
     const float y = static_cast<float>(bar.y + row) + 0.5f;
     pixel_line(lines, static_cast<float>(bar.x), y, static_cast<float>(bar.x + bar.width), y, rgba);

@@ -6,6 +6,7 @@
 #include "rotinterp/clip/metrics.h"
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/io/atomic_file.h"
+#include "rotinterp/io/fbx_source.h"
 #include "rotinterp/io/read.h"
 #include "rotinterp/render/comparison.h"
 #include "rotinterp/render/option_text.h"
@@ -104,11 +105,32 @@ struct RenderArgs {
   std::string loop = "off";  // --loop as written
 };
 
+// The clip, and with `source` (-m source) the file's own motion into `motion`
+// (io/fbx_source.h). Errors (one line naming the file): not FBX, no curves, and
+// read_clip's.
+Result<Clip> read_render_clip(const std::string& input, const ReadOptions& read_options, bool source,
+                              SourceMotion& motion) {
+  if (!source) return read_clip(input, read_options);
+  auto read = read_source_clip(input, read_options);
+  if (!read) return read.failure();
+  auto file = std::make_shared<const SourceClip>(std::move(*read));
+  auto own = source_motion(file, input);
+  if (!own) return own.failure();
+  motion = std::move(*own);
+  return file->clip;
+}
+
 int run_render(const RenderArgs& a) {
   render::ComparisonOptions options;
   if (a.out_dir.empty() && a.video.empty()) return fail_usage("render: give -o DIR (frame PNGs), --video FILE, or both");
   // Repeats stay: the same method twice draws two identical panels (a check of determinism).
+  bool source = false;  // -m source: the file's own curves, a panel beside the methods
   for (const std::string& m : split_comma_list(a.methods)) {
+    if (is_source_method(m)) {
+      source = true;
+      options.methods.push_back(kSourceMethodName);
+      continue;
+    }
     auto one = parse_methods(m, true);
     if (!one) return fail_usage(one.error());
     options.methods.insert(options.methods.end(), one->begin(), one->end());
@@ -175,6 +197,8 @@ int run_render(const RenderArgs& a) {
   auto loop = parse_loop_option(a.loop);
   if (!loop) return fail_usage(loop.error());
   if (*loop) options.loop = render::LoopPlay{(*loop)->form};
+  if (source && options.loop)
+    return fail_usage("--method source draws the file's own motion, which --loop cannot play as a cycle");
 
   protect_input(a.input);  // no frame written may replace it
   ReadOptions read_options;
@@ -183,7 +207,7 @@ int run_render(const RenderArgs& a) {
   if (!unit) return fail_usage(unit.error());
   read_options.unit = *unit;
   read_options.on_warning = warn;
-  auto clip = read_clip(a.input, read_options);
+  auto clip = read_render_clip(a.input, read_options, source, options.source);
   if (!clip) return fail(clip.error());
   if (clip->skeleton.joints.size() > 1 && degenerate(*clip))
     warn(fmt::format("{}: all {} joints lie within 1e-6 units of one point; the frames will show {}", a.input,
@@ -216,7 +240,9 @@ void add_render_command(CLI::App& app, int& exit_code) {
   sub->add_option("input", args->input, "Clip to read (BVH, FBX, glTF, Collada, …)")->required();
   add_output_option(*sub, args->out_dir,
                     "Output directory for frame_NNNNNN.png (created if missing); default none, then --video is needed");
-  add_method_option(*sub, args->methods, true, "all, one panel each");
+  add_method_option(*sub, args->methods, true,
+                    "all, one panel each; 'source' adds a panel of an FBX file's own curves (the animator's "
+                    "motion, not rebuilt from keys)");
   add_keep_every_option(*sub, args->keep_every, false, "default 10");
   sub->add_option("--frames", args->frames,
                   "Frames to draw, START:END:STEP (END included; frame 0 = first frame). Default: 8 frames spread "

@@ -1,8 +1,9 @@
-// replay_fbx_rotations: joints' local rotations evaluated from the FBX file's
-// stored curves at the keys' times (the `source` method of resample).
+// The `source` motion of an FBX file: joints' local rotations evaluated from its stored
+// curves (replay_fbx_rotations at the keys' times for resample; source_motion at any time).
 #include "rotinterp/io/fbx_source.h"
 
 #include "rotinterp/io/info.h"
+#include "rotinterp/track/sample.h"
 
 #include <algorithm>
 #include <cctype>
@@ -81,6 +82,17 @@ Result<std::size_t> replay_fbx_rotations(Clip& clip, const SourceClip& source, c
     ++replayed;
   }
   return replayed;
+}
+
+Result<SourceMotion> source_motion(std::shared_ptr<const SourceClip> source, const std::string& label) {
+  auto curves = fbx_joint_curves(source->clip, *source, {}, label);
+  if (!curves) return curves.failure();
+  auto joints = std::make_shared<const std::vector<FbxJointCurves>>(std::move(*curves));
+  return SourceMotion([source, joints](std::size_t j, double t) {
+    const FbxJointCurves& c = (*joints)[j];
+    return c.model ? fbx_local_rotation(source->curves.takes.at(source->take), c, fbx_source_ticks(*source, t))
+                   : sample_rotation(source->clip.rotations[j], t);
+  });
 }
 
 }  // namespace rotinterp

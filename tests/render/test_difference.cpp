@@ -34,7 +34,7 @@ namespace fs = std::filesystem;
 using test::fresh_dir;
 using test::run_cli;
 
-std::array<int, 3> to_bytes(const Color& c) {
+std::array<int, 3> to_bytes(const Colour& c) {
   return {static_cast<int>(std::lround(c[0] * 255)), static_cast<int>(std::lround(c[1] * 255)),
           static_cast<int>(std::lround(c[2] * 255))};
 }
@@ -51,7 +51,7 @@ TEST(ColourMap, ViridisPassesThroughItsPublishedEntriesAndGetsLighterThroughout)
   EXPECT_EQ(to_bytes(viridis(128.0 / 255.0)), to_bytes({0.127568f, 0.566949f, 0.550556f}));
   EXPECT_EQ(to_bytes(viridis(1.0)), to_bytes({0.993248f, 0.906157f, 0.143936f}));
   // Between control points: entry 100 (0.166617, 0.463708, 0.558119) within 1.7/255.
-  const Color mid = viridis(100.0 / 255.0);
+  const Colour mid = viridis(100.0 / 255.0);
   EXPECT_NEAR(mid[0], 0.166617, 1.7 / 255);
   EXPECT_NEAR(mid[1], 0.463708, 1.7 / 255);
   EXPECT_NEAR(mid[2], 0.558119, 1.7 / 255);
@@ -60,7 +60,7 @@ TEST(ColourMap, ViridisPassesThroughItsPublishedEntriesAndGetsLighterThroughout)
   EXPECT_EQ(to_bytes(viridis(7.0)), to_bytes(viridis(1.0)));
   double previous = -1.0;
   for (int i = 0; i <= 100; ++i) {
-    const Color c = viridis(i / 100.0);
+    const Colour c = viridis(i / 100.0);
     const double luma = 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2];
     EXPECT_GT(luma, previous) << i;
     previous = luma;
@@ -115,7 +115,7 @@ TEST(ErrorColours, ABoneWhoseErrorIsKnownGetsTheColourMapsColour) {
     Panel p;
     p.pose.position = {Vec3(0, 0, 0), Vec3(1, 0, 0)};
     // The root's rotation turns the bone: its error colours it.
-    p.joint_colors = {error_colour(error, scale), error_colour(0.0, scale)};
+    p.joint_colours = {error_colour(error, scale), error_colour(0.0, scale)};
     auto image = (*renderer)->render({p}, 160, 120);
     ASSERT_TRUE(image.ok()) << image.error();
     const PanelLayout layout = panel_layout(160, 120, false);
@@ -316,7 +316,7 @@ TEST(TrailInset, AHingesArcIsSeenFaceOnNotEdgeOn) {
   auto renderer = Renderer::create(std::move(context).value(), scene);
   ASSERT_TRUE(renderer.ok()) << renderer.error();
   Panel p;
-  p.color = {1.0f, 0.0f, 0.0f};
+  p.colour = {1.0f, 0.0f, 0.0f};
   p.trail = trail;
   auto image = (*renderer)->render({p}, 320, 200);
   ASSERT_TRUE(image.ok()) << image.error();

@@ -34,7 +34,7 @@ WorldPose first_frame(const Clip& clip) {
   return pose;
 }
 
-constexpr Color kRed = {1.0f, 0.0f, 0.0f};
+constexpr Colour kRed = {1.0f, 0.0f, 0.0f};
 
 TEST(Geometry, CylinderMeshIsTheUnitTubeAlongZ) {
   const MeshData m = cylinder_mesh(10);
@@ -92,9 +92,9 @@ TEST(Geometry, APoseGivesASphereAtEveryJointAndEndSiteAndACylinderPerBone) {
   }
   for (const auto* list : {&batch.cylinders, &batch.spheres})
     for (const Instance& in : *list) {
-      EXPECT_EQ(in.color[0], 1.0f);
-      EXPECT_EQ(in.color[1], 0.0f);
-      EXPECT_EQ(in.color[3], 0.5f);
+      EXPECT_EQ(in.colour[0], 1.0f);
+      EXPECT_EQ(in.colour[1], 0.0f);
+      EXPECT_EQ(in.colour[3], 0.5f);
     }
 }
 
@@ -173,7 +173,7 @@ TEST(Geometry, ATrailMarksKeysAndTheCurrentSampleAndScalesWithTheZoom) {
   EXPECT_NEAR(radius(translucent.cylinders[0]), 0.5 * kTrailReferenceRadius, 1e-7);
   EXPECT_GT(radius(translucent.spheres.back()), radius(current));
   EXPECT_LT((apply(translucent.spheres.back(), Vec3::Zero()) - t.reference[7].normalized()).norm(), 1e-6);
-  for (const Instance& in : translucent.spheres) EXPECT_LT(in.color[3], 1.0f);
+  for (const Instance& in : translucent.spheres) EXPECT_LT(in.colour[3], 1.0f);
 
   t.keys.assign(kMaxKeyMarkers + 1, 3);  // too many keys: none marked
   trail_figure(t, kRed, 0.5, solid, translucent);

@@ -58,7 +58,7 @@ std::vector<Panel> golden_panels(const Clip& clip) {
   trail->current = frame;
   std::vector<Panel> panels(2);
   panels[0].title = "original  mean 0.00°  max 0.00°";
-  panels[0].color = {0.25f, 0.6f, 0.95f};
+  panels[0].colour = {0.25f, 0.6f, 0.95f};
   panels[1].title = "shifted  mean 9.9°  max 31.2°";
   for (auto& p : panels) p.ghost = fk(clip, local(frame, false));
   panels[0].pose = fk(clip, local(frame, false));

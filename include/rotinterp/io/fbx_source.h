@@ -18,6 +18,8 @@
 #include <array>
 #include <cstddef>
 #include <filesystem>
+#include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -56,6 +58,12 @@ Result<std::vector<FbxJointCurves>> fbx_joint_curves(const Clip& clip, const Sou
                                                      const std::vector<std::string>& keep, const std::string& label);
 // The FBX time (ticks) of clip time t: take start + t.
 double fbx_source_ticks(const SourceClip& source, double t);
+
+// The file's own motion: joint j's local rotation at clip time t, evaluated from its
+// curves where it has them and sampled from `source.clip`'s keys elsewhere (as eval
+// --truth source reads it; render -m source draws it). Errors as fbx_joint_curves's.
+using SourceMotion = std::function<Quat(std::size_t joint, double t)>;
+Result<SourceMotion> source_motion(std::shared_ptr<const SourceClip> source, const std::string& label);
 
 // Replaces every rotation key of each joint of `clip` whose node has Lcl Rotation
 // curves in `source`'s take with the curves' value at the key's time (clip time t

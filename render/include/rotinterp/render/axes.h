@@ -20,7 +20,7 @@ enum class AxesMode {
 };
 Result<AxesMode> parse_axes(std::string_view name);  // "auto", "on" or "off"
 
-constexpr Color kAxisColors[3] = {{0.92f, 0.16f, 0.14f}, {0.18f, 0.80f, 0.22f}, {0.20f, 0.36f, 0.98f}};
+constexpr Colour kAxisColours[3] = {{0.92f, 0.16f, 0.14f}, {0.18f, 0.80f, 0.22f}, {0.20f, 0.36f, 0.98f}};
 
 // Whether every joint lies within 1e-6 units of one point, at rest and in the
 // first frame (a reader that lost the offsets; a clip of objects that turn in place).

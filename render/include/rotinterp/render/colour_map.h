@@ -11,7 +11,7 @@ namespace rotinterp::render {
 // viridis at t ∈ [0, 1] (clamped; NaN gives the colour of 0): piecewise linear
 // through 33 of the 256 published entries (every 8th, and the last), within
 // 1.7/255 of the full table everywhere. sRGB display values 0…1.
-Color viridis(double t);
+Colour viridis(double t);
 
 // The colour bar's top, degrees: the smallest 1-2-5 step (…, 0.5, 1, 2, 5, 10, …)
 // at or above `max_error_deg`, at least 1° (a frame whose worst error is tiny —
@@ -20,6 +20,6 @@ Color viridis(double t);
 double error_scale(double max_error_deg);
 
 // The colour of `error_deg` on a bar from 0 to `scale_deg`.
-Color error_colour(double error_deg, double scale_deg);
+Colour error_colour(double error_deg, double scale_deg);
 
 }  // namespace rotinterp::render

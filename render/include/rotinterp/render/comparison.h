@@ -15,6 +15,7 @@
 #include "rotinterp/clip/rebuild.h"
 #include "rotinterp/core/progress.h"
 #include "rotinterp/core/result.h"
+#include "rotinterp/io/fbx_source.h"
 #include "rotinterp/render/axes.h"
 #include "rotinterp/render/context.h"
 #include "rotinterp/render/loop_play.h"
@@ -48,7 +49,10 @@ enum class CameraMode {
 };
 
 struct ComparisonOptions {
-  std::vector<std::string> methods;   // names in methods(); at least one
+  std::vector<std::string> methods;   // names in methods(), or "source" with `source`; at least one
+  // The panel of a method named "source" (kSourceMethodName): the file's own motion,
+  // not rebuilt from keys; its error is against the clip's frames like any panel's.
+  SourceMotion source;
   std::size_t keep_every = 10;        // N ≥ 1: keys at frames 0, N, 2N, … and the last
   // Unset: 8 frames spread evenly over the clip, each halfway between two keys
   // (where interpolation errs most); every frame when there are fewer — or, with
@@ -86,8 +90,10 @@ struct ComparisonResult {
 // `method`'s error at every frame of the clip (clip/rebuild.h FrameError: what a
 // panel's title shows) when rebuilt from every keep_every-th frame.
 // With `loop`, at every frame of the cycle played twice (render/loop_play.h).
+// `method` "source" is `source`'s motion (no loop).
 Result<std::vector<FrameError>> comparison_errors(const Clip& clip, const std::string& method, std::size_t keep_every,
-                                                  const std::optional<LoopPlay>& loop = std::nullopt);
+                                                  const std::optional<LoopPlay>& loop = std::nullopt,
+                                                  const SourceMotion& source = {});
 
 // The frames the options select in `clip` (checked against its frame count).
 Result<std::vector<std::size_t>> comparison_frames(const Clip& clip, const ComparisonOptions& options);
@@ -99,8 +105,8 @@ Result<std::vector<std::size_t>> comparison_frames(const Clip& clip, const Compa
 // frame number and time at the top left, the rebuilt pose coloured by error
 // (with a colour bar and the worst joint labelled) or by method, the ghost of the
 // original, the trail inset, and the error strip.
-// Errors (one line): unknown method or joint, frames outside the clip, a size
-// outside limits, a backend that is not available, an unwritable directory, a
+// Errors (one line): unknown method or joint, "source" without `source` or with
+// a loop, frames outside the clip, a size outside limits, a backend that is not available, an unwritable directory, a
 // video that cannot be made (format, size, ffmpeg).
 Result<ComparisonResult> render_comparison(const Clip& clip, const std::filesystem::path& out_dir,
                                            const ComparisonOptions& options);

@@ -32,7 +32,7 @@ MeshData sphere_mesh(int slices, int stacks);
 // One placed copy of a unit mesh, laid out as the instance attributes read it.
 struct Instance {
   float model[16];  // column-major
-  float color[4];   // linear RGB, alpha
+  float colour[4];   // linear RGB, alpha
 };
 
 // Instances of the cylinder and of the sphere, drawn together with one look.
@@ -41,27 +41,27 @@ struct Batch {
   std::vector<Instance> spheres;
 
   void clear();
-  void sphere(const Vec3& p, double radius, const Color& color, float alpha);
+  void sphere(const Vec3& p, double radius, const Colour& colour, float alpha);
   // A capsule's body from a to b; skipped when not longer than `min_length`.
-  void cylinder(const Vec3& a, const Vec3& b, double radius, double min_length, const Color& color, float alpha);
+  void cylinder(const Vec3& a, const Vec3& b, double radius, double min_length, const Colour& colour, float alpha);
 };
 
 // Capsule bones joint → parent and End Site → joint, and a sphere at every joint
 // and End Site. Nothing when the pose's positions do not match the skeleton's
 // joints; no End Sites when its End Site positions do not match. With
-// `joint_colors` (one per joint) the colours are per bone as Panel::joint_colors
-// says, else all `color`.
-void add_pose(const Skeleton& skeleton, const WorldPose& pose, double radius, const Color& color, float alpha,
-              Batch& batch, const std::vector<Color>& joint_colors = {});
+// `joint_colours` (one per joint) the colours are per bone as Panel::joint_colours
+// says, else all `colour`.
+void add_pose(const Skeleton& skeleton, const WorldPose& pose, double radius, const Colour& colour, float alpha,
+              Batch& batch, const std::vector<Colour>& joint_colours = {});
 
 // The colour trails fade to (the trail inset's background).
-constexpr Color kInsetBackground = {0.120f, 0.128f, 0.145f};
+constexpr Colour kInsetBackground = {0.120f, 0.128f, 0.145f};
 
 // A tube through `points` (every `stride`-th, and the last) put on the unit sphere
 // (unit_or_zero), with a sphere at every point used. With `fade` (one per point,
 // 0…1) each piece's colour is mixed towards kInsetBackground and its alpha scaled
 // by its end's fade.
-void add_curve(const std::vector<Vec3>& points, std::size_t stride, double radius, const Color& color, float alpha,
+void add_curve(const std::vector<Vec3>& points, std::size_t stride, double radius, const Colour& colour, float alpha,
                Batch& batch, const std::vector<float>& fade = {});
 
 // A panel's figure: its pose into `solid`, its ghost (pale, a little thicker)
@@ -77,10 +77,10 @@ constexpr std::size_t kMaxTrailSegments = 720;  // longer trails are drawn with 
 constexpr std::size_t kMaxKeyMarkers = 64;      // more keys than this are not marked (clutter)
 
 // A trail on the unit sphere, its sizes scaled by `zoom` (TrailView::zoom): the
-// method's tube, key markers and current sample in `color` into `solid`; the
+// method's tube, key markers and current sample in `colour` into `solid`; the
 // reference's tube and current sample as a ghost into `translucent`. Both
 // batches are cleared first.
-void trail_figure(const Trail& trail, const Color& color, double zoom, Batch& solid, Batch& translucent);
+void trail_figure(const Trail& trail, const Colour& colour, double zoom, Batch& solid, Batch& translucent);
 
 // ---- line lists ----------------------------------------------------------------
 

@@ -22,7 +22,7 @@
 
 namespace rotinterp::render {
 
-using Color = std::array<float, 3>;  // linear 0…1 RGB
+using Colour = std::array<float, 3>;  // linear 0…1 RGB
 
 // A curve of unit directions drawn on a unit sphere in a corner of the panel:
 // the reference (translucent, like the ghost) and the method's (solid), seen from
@@ -51,14 +51,14 @@ struct ErrorStrip {
 
 struct Panel {
   std::string title;            // UTF-8; characters outside Latin-1 show as '?'
-  Color color = {0.95f, 0.55f, 0.2f};  // the solid pose and its trail
+  Colour colour = {0.95f, 0.55f, 0.2f};  // the solid pose and its trail
   WorldPose ghost;              // reference pose (positions used); empty = none
   WorldPose pose;               // the pose drawn solid; empty = none
   std::shared_ptr<const Trail> trail;  // optional
-  // One colour per joint (or empty: every bone in `color`): joint j's colour on the
+  // One colour per joint (or empty: every bone in `colour`): joint j's colour on the
   // bones its rotation turns (j → each child, j → its End Sites) and on the
   // spheres at their far ends; the root's sphere in the root's colour.
-  std::vector<Color> joint_colors;
+  std::vector<Colour> joint_colours;
   double colour_scale_deg = 0.0;   // > 0: a viridis colour bar from 0 to this, labelled in degrees
   std::string corner;              // a line at the top left of the figure (frame, time)
   int label_joint = -1;            // ≥ 0: `joint_label` written next to this joint of `pose`

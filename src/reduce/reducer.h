@@ -86,6 +86,8 @@ Status select_cycle_keys(std::vector<std::size_t>& keys, std::size_t frames, con
                          bool removal, std::vector<double>& e);
 // The first and last of `frames` frames (one for one frame, none for none).
 std::vector<std::size_t> ends(std::size_t frames);
+// The worst frame over budget (error `e` above 1) inside each key interval, into `add`.
+void worst_frames(const std::vector<std::size_t>& keys, const std::vector<double>& e, std::vector<std::size_t>& add);
 bool has(const std::vector<std::size_t>& keys, std::size_t f);
 void add_key(std::vector<std::size_t>& keys, std::size_t f);
 TranslationTrack translation_keys(const std::vector<double>& times, const std::vector<Vec3>& source,

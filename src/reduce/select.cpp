@@ -23,14 +23,7 @@ Status insert_worst(std::vector<std::size_t>& keys, std::size_t frames, const Er
   for (;;) {
     if (full)
       if (Status s = err(keys, 0, frames - 1, e.data()); !s) return s;
-    add.clear();
-    for (std::size_t i = 0; i + 1 < keys.size(); ++i) {
-      std::size_t worst = 0;
-      double w = 1.0;
-      for (std::size_t f = keys[i] + 1; f < keys[i + 1]; ++f)
-        if (e[f] > w) w = e[f], worst = f;
-      if (worst) add.push_back(worst);
-    }
+    worst_frames(keys, e, add);
     if (add.empty()) {
       if (!full) {
         full = true;  // confirm with the whole track
@@ -108,6 +101,17 @@ std::vector<std::size_t> ends(std::size_t frames) {
   if (frames == 0) return {};
   if (frames == 1) return {0};
   return {0, frames - 1};
+}
+
+void worst_frames(const std::vector<std::size_t>& keys, const std::vector<double>& e, std::vector<std::size_t>& add) {
+  add.clear();
+  for (std::size_t i = 0; i + 1 < keys.size(); ++i) {
+    std::size_t worst = 0;
+    double w = 1.0;
+    for (std::size_t f = keys[i] + 1; f < keys[i + 1]; ++f)
+      if (e[f] > w) w = e[f], worst = f;
+    if (worst) add.push_back(worst);
+  }
 }
 
 bool has(const std::vector<std::size_t>& keys, std::size_t f) { return std::binary_search(keys.begin(), keys.end(), f); }

@@ -20,14 +20,7 @@ Status insert_cycle(std::vector<std::size_t>& keys, std::size_t frames, const Er
   std::vector<std::size_t> add, merged;
   for (;;) {
     if (Status s = err(keys, 0, frames - 1, e.data()); !s) return s;
-    add.clear();
-    for (std::size_t i = 0; i + 1 < keys.size(); ++i) {
-      std::size_t worst = 0;
-      double w = 1.0;
-      for (std::size_t f = keys[i] + 1; f < keys[i + 1]; ++f)
-        if (e[f] > w) w = e[f], worst = f;
-      if (worst) add.push_back(worst);
-    }
+    worst_frames(keys, e, add);
     if (add.empty()) {
       bool reset = false;
       if (values)

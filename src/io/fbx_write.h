@@ -22,13 +22,12 @@
 
 #include "rotinterp/clip/clip.h"
 #include "rotinterp/core/result.h"
+#include "rotinterp/io/fbx_curves.h"  // kFbxTicksPerSecond: one FBX time unit for reader and writer
 
 #include <cstdint>
 #include <string>
 
 namespace rotinterp {
-
-constexpr std::int64_t kFbxTicksPerSecond = 46186158000;
 
 enum class FbxEncoding { binary, ascii };
 

@@ -1,6 +1,9 @@
 #include "io_test_util.h"
 
 #include "rotinterp/clip/bvh_layout.h"
+#include "rotinterp/io/fbx_nodes.h"
+
+#include <gtest/gtest.h>
 
 #include <unistd.h>
 
@@ -43,6 +46,15 @@ std::string read_text(const fs::path& path) {
   std::ostringstream ss;
   ss << f.rdbuf();
   return ss.str();
+}
+
+FbxAnimation read_fbx_curves(const std::string& path) {
+  auto doc = parse_fbx_nodes(read_text(path), path);
+  EXPECT_TRUE(doc.ok()) << doc.error();
+  if (!doc.ok()) return {};
+  auto anim = read_fbx_animation(*doc, path);
+  EXPECT_TRUE(anim.ok()) << anim.error();
+  return anim.ok() ? *anim : FbxAnimation{};
 }
 
 Quat sample(const RotationTrack& track, double t) {

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "rotinterp/clip/clip.h"
+#include "rotinterp/io/fbx_curves.h"
 
 #include <filesystem>
 #include <string>
@@ -27,6 +28,10 @@ class TempDir {
 
 void write_text(const std::filesystem::path& path, const std::string& text);
 std::string read_text(const std::filesystem::path& path);
+
+// The animation curves of the FBX file at `path`, read with our node reader; a failure
+// is a test failure and gives an empty animation.
+FbxAnimation read_fbx_curves(const std::string& path);
 
 // Slerp/lerp of a track at time t (clamped), for tests only.
 Quat sample(const RotationTrack& track, double t);

@@ -11,14 +11,7 @@
 namespace rotinterp {
 namespace {
 
-FbxAnimation read_animation(const std::string& path) {
-  auto doc = parse_fbx_nodes(test::read_text(path), path);
-  EXPECT_TRUE(doc.ok()) << doc.error();
-  if (!doc.ok()) return {};
-  auto anim = read_fbx_animation(*doc, path);
-  EXPECT_TRUE(anim.ok()) << anim.error();
-  return anim.ok() ? *anim : FbxAnimation{};
-}
+FbxAnimation read_animation(const std::string& path) { return test::read_fbx_curves(path); }
 
 // The case's curve: by node name, or the one animated node's.
 const FbxCurve* find_curve(const FbxAnimation& anim, const test::DccCase& c) {

@@ -20,13 +20,7 @@ namespace {
 constexpr double kDegreesPerRadian = 180.0 / kPi;
 
 FbxAnimation read_animation(const std::string& relative) {
-  const std::string path = (test::kData / relative).string();
-  auto doc = parse_fbx_nodes(test::read_text(path), path);
-  EXPECT_TRUE(doc.ok()) << doc.error();
-  if (!doc.ok()) return {};
-  auto anim = read_fbx_animation(*doc, path);
-  EXPECT_TRUE(anim.ok()) << anim.error();
-  return anim.ok() ? *anim : FbxAnimation{};
+  return test::read_fbx_curves((test::kData / relative).string());
 }
 
 const FbxCurve* curve_of(const FbxAnimation& anim, const std::string& node, const std::string& property, char channel) {

@@ -26,7 +26,8 @@ int print_info_curves(const std::string& path, const ClipFileInfo& info, double 
              static_cast<double>(take_end_ticks(*take)) / ticks, take->curves.size());
   for (std::size_t l = 0; l < take->layers.size(); ++l) {
     const FbxLayer& layer = take->layers[l];
-    fmt::print("layer {}: '{}' {} weight {:g}%{}\n", l, layer.name, fbx_blend_mode_name(layer.blend), layer.weight,
+    fmt::print("layer {}: '{}' {} weight {:g}%{}{}\n", l, layer.name, fbx_blend_mode_name(layer.blend), layer.weight,
+               layer.weight_curve ? fmt::format(" (keyed: {} key(s))", layer.weight_curve->keys.size()) : "",
                layer.mute ? " (muted)" : "");
   }
   for (const FbxCurve& c : take->curves) {

@@ -15,7 +15,7 @@ namespace rotinterp::wire {
 namespace {
 
 // Also the format's version: bytes from another build fail here, not in a field.
-constexpr std::string_view kMagic = "rotinterp-clip-wire-4";
+constexpr std::string_view kMagic = "rotinterp-clip-wire-5";
 
 // Smallest encoded sizes, for Reader::count.
 constexpr std::size_t kCount = 8, kDouble = 8, kVec3 = 3 * kDouble, kQuat = 4 * kDouble;
@@ -166,7 +166,7 @@ void get(Reader& r, FbxCurve& c) {
   c.node = r.str();
   c.property = r.str();
   c.channel = static_cast<char>(r.u8());
-  if (c.channel != 'X' && c.channel != 'Y' && c.channel != 'Z') r.fail();
+  if (c.channel != 'X' && c.channel != 'Y' && c.channel != 'Z' && c.channel != ' ') r.fail();  // ' ': a layer's weight
   c.layer = r.size();
   c.default_value = r.f64();
   for (FbxExtrapolationRule* e : {&c.pre, &c.post}) {
@@ -211,6 +211,8 @@ void put(Writer& w, const FbxAnimation& a) {
       w.u8(static_cast<std::uint8_t>(l.blend));
       w.u8(l.mute), w.u8(l.solo);
       w.i64(l.rotation_accumulation), w.i64(l.scale_accumulation);
+      w.u8(l.weight_curve.has_value());
+      if (l.weight_curve) put(w, *l.weight_curve);
     }
     w.u64(t.curves.size());
     for (const FbxCurve& c : t.curves) put(w, c);
@@ -238,13 +240,14 @@ void get(Reader& r, FbxAnimation& a) {
   for (FbxTake& t : a.takes) {
     t.name = r.str();
     t.start = r.i64(), t.stop = r.i64();
-    t.layers.resize(r.count(kString + kDouble + 3 + 16));
+    t.layers.resize(r.count(kString + kDouble + 3 + 16 + 1));
     for (FbxLayer& l : t.layers) {
       l.name = r.str();
       l.weight = r.f64();
       l.blend = r.enumerator(FbxBlendMode::override_passthrough);
       l.mute = r.flag(), l.solo = r.flag();
       l.rotation_accumulation = r.index(), l.scale_accumulation = r.index();
+      if (r.flag()) get(r, l.weight_curve.emplace());
     }
     t.curves.resize(r.count(2 * kString + 1 + 8 + kDouble + 18 + 8));
     for (FbxCurve& c : t.curves) {

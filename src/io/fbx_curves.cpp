@@ -171,12 +171,38 @@ std::vector<const FbxNode*> children_of(const Objects& o, std::int64_t parent, s
   return out;
 }
 
+// The curve of `curve_node` connected as `property` ("d|X", "d|Weight"), or nullptr.
+const FbxNode* curve_of(const Objects& o, std::int64_t curve_node, std::string_view property) {
+  for (auto [ci, cend] = o.by_parent.equal_range(curve_node); ci != cend; ++ci) {
+    const Connection& link = o.connections[ci->second];
+    const auto curve = o.by_id.find(link.child);
+    if (curve != o.by_id.end() && curve->second->name == "AnimationCurve" && link.property == property)
+      return curve->second;
+  }
+  return nullptr;
+}
+
 Status read_layer_curves(const Objects& o, const FbxNode& layer, std::size_t index, const std::vector<FbxModel>& models,
                          FbxTake& take, const std::string& label) {
-  for (const FbxNode* cn : children_of(o, fbx::object_id(layer), "AnimationCurveNode")) {
+  const std::int64_t layer_id = fbx::object_id(layer);
+  for (const FbxNode* cn : children_of(o, layer_id, "AnimationCurveNode")) {
     const std::int64_t cn_id = fbx::object_id(*cn);
     for (auto [it, end] = o.by_child.equal_range(cn_id); it != end; ++it) {
       const Connection& target = o.connections[it->second];
+      if (target.parent == layer_id && target.property == "Weight") {  // the layer's own weight, keyed
+        const FbxNode* curve = curve_of(o, cn_id, "d|Weight");
+        if (!curve) continue;
+        FbxCurve c;
+        c.node = take.layers[index].name;
+        c.property = "Weight";
+        c.channel = ' ';
+        c.layer = index;
+        c.default_value = fbx::property_number(fbx::find_property(*cn, "d|Weight"), 0, take.layers[index].weight);
+        const std::string where = label + ": FBX layer " + fbx_printable(c.node) + "/Weight";
+        if (Status st = read_keys(*curve, c, where); !st) return make_error(st.error(), ErrorKind::unreadable);
+        take.layers[index].weight_curve = std::move(c);
+        continue;
+      }
       if (std::find(std::begin(kProperties), std::end(kProperties), target.property) == std::end(kProperties)) continue;
       const auto model = std::find_if(models.begin(), models.end(), [&](const FbxModel& m) { return m.id == target.parent; });
       if (model == models.end()) continue;

@@ -237,7 +237,7 @@ Result<FbxAnimation> read_fbx_takes(const FbxDocument& doc, const std::string& l
     if (node.name != "Take") continue;
     FbxTake take;
     take.name = object_name(node);
-    take.layers.push_back(FbxLayer{"BaseLayer"});
+    take.layers.emplace_back().name = "BaseLayer";
     for (const char* span : {"ReferenceTime", "LocalTime"})
       if (const FbxNode* t = node.child(span);
           t && t->properties.size() >= 2 && t->properties[0].is_integer() && t->properties[1].is_integer())

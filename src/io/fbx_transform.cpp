@@ -55,9 +55,14 @@ FbxVec3 layer_value(const FbxLayerChannels& l, double ticks) {
   return v;
 }
 
-void blend(const FbxLayer& layer, std::size_t property, int order, const FbxVec3& value, FbxVec3& result) {
-  double w = std::isnan(layer.weight) ? 1.0 : std::clamp(layer.weight / 100.0, 0.0, 1.0);
-  if (w > kFullWeight) w = 1.0;
+// The layer's weight at `ticks` as a fraction in [0, 1].
+double layer_weight(const FbxLayer& layer, double ticks) {
+  const double percent = layer.weight_curve ? evaluate_fbx_curve(*layer.weight_curve, ticks) : layer.weight;
+  const double w = std::isnan(percent) ? 1.0 : std::clamp(percent / 100.0, 0.0, 1.0);
+  return w > kFullWeight ? 1.0 : w;
+}
+
+void blend(const FbxLayer& layer, double w, std::size_t property, int order, const FbxVec3& value, FbxVec3& result) {
   if (layer.blend == FbxBlendMode::override) {
     result = value;
     return;
@@ -133,7 +138,8 @@ FbxLclValues fbx_lcl_values(const FbxTake& take, const FbxModel& model, const Fb
         if (l.layer == 0)
           *results[p] = value;  // the take's first layer sets the property
         else
-          blend(take.layers[l.layer], p, kLayerRotationOrder, value, *results[p]);
+          blend(take.layers[l.layer], layer_weight(take.layers[l.layer], ticks), p, kLayerRotationOrder, value,
+                *results[p]);
       }
   // A hostile file's non-finite static or default value: no NaN leaves the library.
   for (std::size_t p = 0; p < 3; ++p)

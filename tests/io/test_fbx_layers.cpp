@@ -6,6 +6,8 @@
 // Each cube's local vertices (its Geometry node), taken through our evaluated node
 // transform at frame 18, land on Maya's within 1e-3 cm.
 #include "io_test_util.h"
+#include "rotinterp/core/rotation.h"
+#include "rotinterp/io/fbx_curve_eval.h"
 #include "rotinterp/io/fbx_curves.h"
 #include "rotinterp/io/fbx_nodes.h"
 #include "rotinterp/io/fbx_transform.h"
@@ -120,10 +122,50 @@ TEST(FbxLayers, WithoutTheLayersOrTheirWeightsTheCubesMissMayasMesh) {
   EXPECT_GT(worst_vertex_error(base_only, file.anim, file.doc), 1.0);
   FbxTake full_weight = file.anim.takes[0];
   full_weight.layers.at(2).weight = 100.0;
+  full_weight.layers.at(2).weight_curve.reset();
   EXPECT_GT(worst_vertex_error(full_weight, file.anim, file.doc), 1e-2);
   FbxTake euler_add = file.anim.takes[0];
   euler_add.layers.at(2).rotation_accumulation = 1;  // blend Euler angles instead of slerping
   EXPECT_GT(worst_vertex_error(euler_add, file.anim, file.doc), 1e-2);
+}
+
+// Layer Y's weight is keyed, 0 % at frame 1 to 100 % at frame 20 (a weighted
+// Bezier): the file's static 99.39 % is its value at frame 18, where Maya wrote the
+// mesh. Elsewhere the keyed weight, not the static one, blends the layer.
+TEST(FbxLayers, AKeyedLayerWeightBlendsByItsValueAtEachTime) {
+  const LayeredFile file = read_layered_file();
+  ASSERT_EQ(file.anim.takes.size(), 1u);
+  const FbxTake& take = file.anim.takes[0];
+  ASSERT_EQ(take.layers.size(), 3u);
+  ASSERT_TRUE(take.layers[2].weight_curve.has_value());
+  EXPECT_FALSE(take.layers[1].weight_curve.has_value());
+  const FbxCurve& weight = *take.layers[2].weight_curve;
+  ASSERT_EQ(weight.keys.size(), 2u);
+  const double tick_per_frame = static_cast<double>(kFbxTicksPerSecond) / kRate;
+  EXPECT_NEAR(evaluate_fbx_curve(weight, kFrame * tick_per_frame), take.layers[2].weight, 1e-2);  // 1e-4 of its range
+  EXPECT_EQ(evaluate_fbx_curve(weight, 1.0 * tick_per_frame), 0.0);
+
+  // Frame 1: the layer at 0 % is the layer muted; frame 10: neither muted nor static.
+  FbxTake muted = take, static_weight = take;
+  muted.layers[2].mute = true;
+  static_weight.layers[2].weight_curve.reset();
+  const auto keyed_layers = fbx_node_layers(take), muted_layers = fbx_node_layers(muted),
+             static_layers = fbx_node_layers(static_weight);
+  std::size_t layered = 0;
+  for (const FbxModel& model : file.anim.models) {
+    const auto k = keyed_layers.find(model.name);
+    if (k == keyed_layers.end()) continue;
+    ++layered;
+    auto rotation = [&](const FbxTake& t, const FbxNodeLayers& l, double frame) {
+      return fbx_node_rotation(model, fbx_lcl_values(t, model, &l, frame * tick_per_frame).rotation);
+    };
+    const FbxNodeLayers& m = muted_layers.at(model.name);
+    const FbxNodeLayers& st = static_layers.at(model.name);
+    EXPECT_LT(angular_distance(rotation(take, k->second, 1.0), rotation(muted, m, 1.0)), 1e-12) << model.name;
+    EXPECT_GT(angular_distance(rotation(take, k->second, 10.0), rotation(muted, m, 10.0)), 1e-3) << model.name;
+    EXPECT_GT(angular_distance(rotation(take, k->second, 10.0), rotation(static_weight, st, 10.0)), 1e-3) << model.name;
+  }
+  EXPECT_EQ(layered, 6u);
 }
 
 }  // namespace

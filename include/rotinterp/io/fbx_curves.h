@@ -13,8 +13,8 @@
 #include "rotinterp/io/fbx_nodes.h"
 
 #include <array>
-#include <string>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -75,6 +75,10 @@ const char* fbx_blend_mode_name(FbxBlendMode b);
 struct FbxLayer {
   std::string name;
   double weight = 100.0;  // percent
+  // An animated Weight (Maya keys a layer's weight; the static value is the one at
+  // the scene's current time): percent at each time. Node: the layer's name,
+  // property "Weight", channel ' '.
+  std::optional<FbxCurve> weight_curve;
   FbxBlendMode blend = FbxBlendMode::additive;
   bool mute = false, solo = false;
   // 0 by layer: the layer's rotation composes with the result as a rotation

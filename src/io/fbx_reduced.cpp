@@ -196,6 +196,7 @@ Result<FbxReducedResult> encode_reduced_fbx(const Clip& reduced, const Clip& sou
     for (std::size_t j = 0; j < n; ++j) {
       out[j].axes = curves[j].axes();
       out[j].rotation = rotation_curves(curves[j], rot_keys[j], dense.rotation[j], ticks, cubic_rotations);
+      out[j].has_translation = moves[j].has_value();
       if (moves[j])
         out[j].translation = translation_curves(*moves[j], pos_keys[j], dense.translation[j], grid.times, ticks,
                                                 cubic_translations && reduced.translations[j]->times.size() > 1);

@@ -5,6 +5,7 @@
 #include "fbx_rest.h"
 #include "rotinterp/clip/frames.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
@@ -104,20 +105,23 @@ void write_curve(Document& doc, std::int64_t id, const FbxOutCurve& keys) {
     ticks.push_back(k.ticks);
     values.push_back(k.value);
     std::int32_t f = kKeyLinearFlags;
-    float right = 0.0f, next_left = 0.0f;
-    if (k.cubic) {
+    std::array<float, 4> slots{0.0f, 0.0f, weights, 0.0f};
+    if (k.stored_flags) {
+      f = static_cast<std::int32_t>(k.stored_flags);
+      slots = k.stored_data;
+    } else if (k.cubic) {
       f = kKeyCubicUserFlags;
-      right = k.right_slope, next_left = k.next_left_slope;
+      slots[0] = k.right_slope, slots[1] = k.next_left_slope;
       if (i > 0 && keys[i - 1].cubic && keys[i - 1].next_left_slope != k.right_slope) f |= kKeyBrokenFlag;
     }
-    const bool same = !flags.empty() && flags.back() == f && data[data.size() - 4] == right && data[data.size() - 3] == next_left;
-    if (same) {
+    // Compared by bits: stored data may hold packed integers.
+    if (!flags.empty() && flags.back() == f && std::memcmp(&data[data.size() - 4], slots.data(), 16) == 0) {
       ++runs.back();
       continue;
     }
     flags.push_back(f);
     runs.push_back(1);
-    for (float v : {right, next_left, weights, 0.0f}) data.push_back(v);
+    data.insert(data.end(), slots.begin(), slots.end());
   }
   e.begin("AnimationCurve");
   e.i64(id).str(e.object_name("", "AnimCurve")).str("");
@@ -162,8 +166,8 @@ Result<std::string> encode_fbx_curves(const Clip& clip, const std::vector<FbxOut
         any = true;
       }
   for (std::size_t j = 0; j < n; ++j)
-    for (const FbxOutCurve& curve : curves[j].rotation)
-      if (curve.empty()) return make_error("FBX curves: joint " + sk.joints[j].name + " has a rotation curve without keys");
+    if (std::all_of(curves[j].rotation.begin(), curves[j].rotation.end(), [](const FbxOutCurve& c) { return c.empty(); }))
+      return make_error("FBX curves: joint " + sk.joints[j].name + " has no rotation keys");
   const std::string take = clip.name.empty() ? std::string("clip") : clip.name;
 
   std::vector<Vec3> rest_euler(n);
@@ -228,11 +232,11 @@ Result<std::string> encode_fbx_curves(const Clip& clip, const std::vector<FbxOut
   std::size_t curve_nodes = 0;
   for (std::size_t j = 0; j < n; ++j) {
     rot_node[j] = new_id();
-    for (auto& c : rot_curve[j]) c = new_id();
+    for (std::size_t a = 0; a < 3; ++a) rot_curve[j][a] = curves[j].rotation[a].empty() ? 0 : new_id();
     ++curve_nodes;
-    if (!curves[j].translation[0].empty()) {
+    if (curves[j].has_translation) {
       pos_node[j] = new_id();
-      for (auto& c : pos_curve[j]) c = new_id();
+      for (std::size_t a = 0; a < 3; ++a) pos_curve[j][a] = curves[j].translation[a].empty() ? 0 : new_id();
       ++curve_nodes;
     }
   }
@@ -255,12 +259,15 @@ Result<std::string> encode_fbx_curves(const Clip& clip, const std::vector<FbxOut
   e.begin("References");
   e.end();
 
+  std::size_t curve_count = 0;
+  for (std::size_t j = 0; j < n; ++j)
+    for (std::size_t a = 0; a < 3; ++a) curve_count += (rot_curve[j][a] != 0) + (pos_curve[j][a] != 0);
   e.begin("Definitions");
   doc.leaf_i32("Version", 100);
   const std::pair<const char*, std::size_t> types[] = {{"GlobalSettings", 1}, {"NodeAttribute", n}, {"Model", n},
                                                        {"AnimationStack", 1}, {"AnimationLayer", 1},
                                                        {"AnimationCurveNode", curve_nodes},
-                                                       {"AnimationCurve", 3 * curve_nodes}};
+                                                       {"AnimationCurve", curve_count}};
   std::size_t total = 0;
   for (const auto& t : types) total += t.second;
   doc.leaf_i32("Count", static_cast<std::int32_t>(total));
@@ -293,8 +300,12 @@ Result<std::string> encode_fbx_curves(const Clip& clip, const std::vector<FbxOut
     doc.p_int("RotationActive", "bool", "", 1);
     doc.p_int("InheritType", "enum", "", 1);
     doc.p_int("DefaultAttributeIndex", "int", "Integer", 0);
-    doc.p_vec("Lcl Translation", rest_translation[j]);
-    doc.p_vec("Lcl Rotation", rest_euler[j]);
+    if (const auto& node = curves[j].node) {
+      doc.p_vec("PreRotation", node->pre_rotation);
+      doc.p_vec("PostRotation", node->post_rotation);
+    }
+    doc.p_vec("Lcl Translation", curves[j].node ? curves[j].node->lcl_translation : rest_translation[j]);
+    doc.p_vec("Lcl Rotation", curves[j].node ? curves[j].node->lcl_rotation : rest_euler[j]);
     doc.p_vec("Lcl Scaling", Vec3::Ones());
     e.end();
     doc.leaf_str("Culling", "CullingOff");
@@ -312,25 +323,27 @@ Result<std::string> encode_fbx_curves(const Clip& clip, const std::vector<FbxOut
   e.begin("AnimationLayer");
   e.i64(layer_id).str(e.object_name("BaseLayer", "AnimLayer")).str("");
   e.end();
-  auto curve_node = [&](std::int64_t id, const char* name, const std::array<FbxOutCurve, 3>& c) {
+  auto curve_node = [&](std::int64_t id, const char* name, const std::array<FbxOutCurve, 3>& c, const Vec3& defaults) {
     e.begin("AnimationCurveNode");
     e.i64(id).str(e.object_name(name, "AnimCurveNode")).str("");
     e.begin("Properties70");
     for (std::size_t a = 0; a < 3; ++a) {
-      doc.p(std::string("d|") + static_cast<char>('X' + a), "Number", "", "A").f64(c[a].front().value);
+      const double value = c[a].empty() ? defaults[static_cast<Eigen::Index>(a)] : c[a].front().value;
+      doc.p(std::string("d|") + static_cast<char>('X' + a), "Number", "", "A").f64(value);
       e.end();
     }
     e.end();
     e.end();
   };
   for (std::size_t j = 0; j < n; ++j) {
-    curve_node(rot_node[j], "R", curves[j].rotation);
-    if (pos_node[j]) curve_node(pos_node[j], "T", curves[j].translation);
+    curve_node(rot_node[j], "R", curves[j].rotation, curves[j].rotation_default);
+    if (pos_node[j]) curve_node(pos_node[j], "T", curves[j].translation, curves[j].translation_default);
   }
   for (std::size_t j = 0; j < n; ++j) {
-    for (std::size_t a = 0; a < 3; ++a) write_curve(doc, rot_curve[j][a], curves[j].rotation[a]);
-    if (pos_node[j])
-      for (std::size_t a = 0; a < 3; ++a) write_curve(doc, pos_curve[j][a], curves[j].translation[a]);
+    for (std::size_t a = 0; a < 3; ++a)
+      if (rot_curve[j][a]) write_curve(doc, rot_curve[j][a], curves[j].rotation[a]);
+    for (std::size_t a = 0; a < 3; ++a)
+      if (pos_curve[j][a]) write_curve(doc, pos_curve[j][a], curves[j].translation[a]);
   }
   e.end();
 
@@ -345,11 +358,13 @@ Result<std::string> encode_fbx_curves(const Clip& clip, const std::vector<FbxOut
   for (std::size_t j = 0; j < n; ++j) {
     doc.connect(rot_node[j], layer_id);
     doc.connect(rot_node[j], model_id[j], "Lcl Rotation");
-    for (std::size_t a = 0; a < 3; ++a) doc.connect(rot_curve[j][a], rot_node[j], axis_names[a]);
+    for (std::size_t a = 0; a < 3; ++a)
+      if (rot_curve[j][a]) doc.connect(rot_curve[j][a], rot_node[j], axis_names[a]);
     if (!pos_node[j]) continue;
     doc.connect(pos_node[j], layer_id);
     doc.connect(pos_node[j], model_id[j], "Lcl Translation");
-    for (std::size_t a = 0; a < 3; ++a) doc.connect(pos_curve[j][a], pos_node[j], axis_names[a]);
+    for (std::size_t a = 0; a < 3; ++a)
+      if (pos_curve[j][a]) doc.connect(pos_curve[j][a], pos_node[j], axis_names[a]);
   }
   e.end();
 

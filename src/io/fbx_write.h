@@ -43,27 +43,42 @@ enum class FbxEncoding { binary, ascii };
 // writes them): linear, or cubic with user slopes in value per second — its own
 // right slope and the next key's left slope, as KeyAttrDataFloat holds them
 // (io/fbx_curves.h FbxKey). Left and right slopes that differ make a broken key.
+// A key copied from a read file instead keeps its KeyAttrFlags and
+// KeyAttrDataFloat as they were (stored_flags non-zero).
 struct FbxOutKey {
   std::int64_t ticks = 0;
   float value = 0.0f;
   bool cubic = false;
   float right_slope = 0.0f, next_left_slope = 0.0f;
+  std::uint32_t stored_flags = 0;
+  std::array<float, 4> stored_data{};
 };
 using FbxOutCurve = std::vector<FbxOutKey>;
 
 // What is written for one joint: its rotation order and its Lcl Rotation curves
 // (degrees) by axis X, Y, Z; Lcl Translation curves (clip units) where it has a
 // translation track, else empty.
+// A channel without keys has no AnimationCurve: its curve node's default holds it.
+// The node's properties are the clip's (the whole local rotation as Lcl Rotation, no
+// Pre/PostRotation, the Blender-safe rest translation: fbx_rest.h) unless `node`
+// gives the read file's, for curves copied from it.
+struct FbxOutNode {
+  Vec3 lcl_translation, lcl_rotation;  // static values (degrees)
+  Vec3 pre_rotation, post_rotation;    // degrees, XYZ
+};
 struct FbxOutJoint {
   EulerAxes axes{2, 1, 0};
   std::array<FbxOutCurve, 3> rotation, translation;
+  Vec3 rotation_default = Vec3::Zero(), translation_default = Vec3::Zero();  // channels without keys
+  bool has_translation = false;  // an "T" curve node (any translation channel with keys)
+  std::optional<FbxOutNode> node;
 };
 
 // The FBX file for `clip` (validated first) as bytes, a linear key at every key
 // time of the clip (fbx_frame_curves).
 Result<std::string> encode_fbx(const Clip& clip, FbxEncoding encoding);
 // The FBX file of `clip`'s skeleton, rate and name with these curves (one per joint,
-// every rotation curve with keys) as bytes. Errors: an invalid clip, curves that do
+// some rotation curve with keys) as bytes. Errors: an invalid clip, curves that do
 // not match its joints.
 Result<std::string> encode_fbx_curves(const Clip& clip, const std::vector<FbxOutJoint>& curves, FbxEncoding encoding);
 

@@ -91,6 +91,7 @@ std::vector<FbxOutJoint> fbx_frame_curves(const Clip& clip) {
         joint.rotation[static_cast<std::size_t>(joint.axes[i])].push_back(
             {ticks[k], static_cast<float>(previous[static_cast<Eigen::Index>(i)] * kDegrees)});
     }
+    joint.has_translation = clip.translations[j].has_value();
     if (const auto& tr = clip.translations[j])
       for (std::size_t k = 0; k < times.size(); ++k) {
         const Vec3 v = sample_translation(*tr, times[k]);

@@ -74,6 +74,12 @@ Result<FbxReplayErrors> fbx_replay_errors(const std::string& bytes, const Skelet
       if (budgets[j].shell > 0.0)
         out.shell[j][f] = shell_distance_between(replayed.rotation[j], replayed.position[j], expected.rotation[j],
                                                  expected.position[j], shell_distance);
+    // A joint's children's positions are its own rotation's doing.
+    for (std::size_t c = 0; c < n; ++c)
+      if (const int p = skeleton.joints[c].parent; p >= 0 && budgets[static_cast<std::size_t>(p)].shell > 0.0) {
+        double& e = out.shell[static_cast<std::size_t>(p)][f];
+        e = std::max(e, (replayed.position[c] - expected.position[c]).norm());
+      }
   }
   return out;
 }

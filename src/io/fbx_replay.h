@@ -15,7 +15,9 @@ namespace rotinterp {
 // Per joint and frame: [joint][frame].
 struct FbxReplayErrors {
   std::vector<std::vector<double>> rotation_deg;  // local rotation angle
-  std::vector<std::vector<double>> shell;         // virtual vertices in object space (0 without a shell budget)
+  // Virtual vertices in object space, and the joint's children's positions (0
+  // without a shell budget).
+  std::vector<std::vector<double>> shell;
   std::vector<std::vector<double>> translation;   // local translation (0 for joints without a track)
 };
 

@@ -39,16 +39,17 @@ FbxAnimation read_back(const std::string& bytes) {
 
 struct ReplayError {
   double rotation_deg = 0.0, shell = 0.0, translation = 0.0;  // worst over joints and frames
+  double position = 0.0;                                      // every joint's position in object space
 };
 
 // The file's motion as our reader evaluates it at each source frame (FBX time =
 // the frame's time in ticks), against the source: local rotation angle, local
-// translation of the tracks, and the virtual vertices at `shell_distance` in
-// object space with every joint replayed.
+// translation of the tracks, and the virtual vertices at `shell_distance` and the
+// joints' positions in object space with every joint replayed.
 ReplayError replay_error(const std::string& bytes, const Clip& source, double shell_distance) {
   const FbxAnimation anim = read_back(bytes);
   ReplayError worst;
-  if (anim.takes.empty()) return {1e9, 1e9, 1e9};
+  if (anim.takes.empty()) return {1e9, 1e9, 1e9, 1e9};
   const FbxTake& take = anim.takes.front();
   const auto layers = fbx_node_layers(take);
   const DenseClip dense = dense_clip(source);
@@ -65,7 +66,7 @@ ReplayError replay_error(const std::string& bytes, const Clip& source, double sh
       const FbxModel* model = nullptr;
       for (const FbxModel& m : anim.models)
         if (m.name == sk.joints[j].name) model = &m;
-      if (!model) return {1e9, 1e9, 1e9};
+      if (!model) return {1e9, 1e9, 1e9, 1e9};
       const auto it = layers.find(model->name);
       const FbxLclValues v = fbx_lcl_values(take, *model, it == layers.end() ? nullptr : &it->second, ticks);
       q[j] = fbx_node_rotation(*model, v.rotation);
@@ -77,6 +78,7 @@ ReplayError replay_error(const std::string& bytes, const Clip& source, double sh
     }
     forward_kinematics(sk, q, p, a);
     forward_kinematics(sk, sq, sp, b);
+    for (std::size_t j = 0; j < n; ++j) worst.position = std::max(worst.position, (a.position[j] - b.position[j]).norm());
     for (std::size_t j = 0; j < n; ++j)
       for (int axis = 0; axis < 3; ++axis) {
         const Vec3 d = Vec3::Unit(axis) * shell_distance;
@@ -136,6 +138,7 @@ TEST(ReduceFbx, OurReaderReplaysTheWrittenCurvesWithinBudgetAtEveryFrameWithFarF
           EXPECT_LE(e.rotation_deg, deg * (1.0 + 1e-9));
         } else {
           EXPECT_LE(e.shell, in_clip_units(clip, mm / 1000.0) * (1.0 + 1e-9));
+          EXPECT_LE(e.position, in_clip_units(clip, mm / 1000.0) * (1.0 + 1e-9));
         }
         EXPECT_LE(e.translation, in_clip_units(clip, (mm > 0.0 ? mm : 1.0) / 1000.0) * (1.0 + 1e-9));
         // Sparse: a quarter more keys than reduce kept at most, and with the angle

@@ -15,8 +15,9 @@
 //    (linear keys, or cubic keys with its Hermite tangents, which FBX replays
 //    exactly);
 //  * check: per joint and frame, the same budgets as reduce (local rotation angle;
-//    shell — virtual vertices at shell_distance in object space, every ancestor
-//    replayed from the file too; local translation); in every key interval over
+//    shell — virtual vertices at shell_distance in object space and the joint's
+//    children's positions, every ancestor replayed from the file too; local
+//    translation); in every key interval over
 //    budget its worst frame becomes a key on the method's curve (slopes from both
 //    sides of it); a key frame still over budget takes the source's value, then
 //    its ancestors' keys there do, nearest first. The loop ends when every frame is

@@ -264,7 +264,8 @@ void add_resample_command(CLI::App& app, int& exit_code) {
   add_method_option(*sub, a->method, false,
                     std::string(kDefaultResampleMethod) +
                         ", for every joint; 'source' replays an FBX file's own curves (tangents, Euler order, "
-                        "pre/post-rotation) on the joints that have them, " + kDefaultResampleMethod + " on the rest");
+                        "pre/post-rotation) on the joints that have them, " + kDefaultResampleMethod + " on the rest; "
+                        "to .fbx without --fps it writes those curves back as stored (keys and tangents)");
   sub->add_option("--method-for", a->method_for, "Per-joint override JOINT=METHOD (repeatable; default none)");
   sub->add_option("--translation", a->translation,
                   "Translation tracks: linear, or cubic (default: C¹, Steffen tangents — never overshoots between keys)");

@@ -190,6 +190,40 @@ TEST(ReduceFbx, CubicMethodsWriteCubicKeysWithTangentsAndSlerpWritesLinearKeys) 
   }
 }
 
+// A joint turning once about Y (with a wobble about X) passes through XYZ's gimbal
+// lock at Y = 90° twice: the Euler keys stay continuous (no key-to-key step near
+// 180° or 360° on any axis), and the file still replays within budget.
+TEST(ReduceFbx, EulerKeysStayContinuousThroughGimbalLockAndReplayWithinBudget) {
+  Clip clip;
+  clip.name = "gimbal";
+  Joint root;
+  root.name = "root";
+  clip.skeleton.joints.push_back(root);
+  RotationTrack track;
+  for (int k = 0; k <= 60; ++k) {
+    const double t = k / 30.0;
+    track.times.push_back(t);
+    track.keys.push_back(Quat(Eigen::AngleAxisd(kPi * t, Vec3::UnitY()) * Eigen::AngleAxisd(0.3 * std::sin(3.0 * t), Vec3::UnitX())));
+  }
+  track.make_sign_continuous();
+  clip.rotations.push_back(track);
+  clip.translations.emplace_back();
+  clip.frame_time = 1.0 / 30.0;
+  ASSERT_TRUE(clip.validate().ok());
+  for (const char* method : {"slerp", "squad", "c2"}) {
+    SCOPED_TRACE(method);
+    const Written w = reduce_to_fbx(clip, method, 0.5, 0.0);
+    ASSERT_FALSE(w.fbx.bytes.empty());
+    EXPECT_TRUE(w.fbx.within_budget);
+    EXPECT_LE(replay_error(w.fbx.bytes, clip, 0.1).rotation_deg, 0.5 * (1.0 + 1e-9));
+    const FbxAnimation anim = read_back(w.fbx.bytes);
+    ASSERT_FALSE(anim.takes.empty());
+    for (const FbxCurve& c : anim.takes.front().curves)
+      for (std::size_t k = 1; k < c.keys.size(); ++k)
+        EXPECT_LT(std::abs(c.keys[k].value - c.keys[k - 1].value), 90.0) << c.channel << " key " << k;
+  }
+}
+
 // The command writes the file, says what it wrote, and assimp reads it back with
 // every joint and the clip's duration.
 TEST(ReduceFbx, TheCommandWritesAnFbxThatAssimpReads) {

@@ -6,6 +6,7 @@
 #include "rotinterp/clip/units.h"
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/io/atomic_file.h"
+#include "rotinterp/io/fbx_reduced.h"
 #include "rotinterp/io/read.h"
 #include "rotinterp/io/write.h"
 #include "rotinterp/reduce/reduce.h"
@@ -149,6 +150,34 @@ std::string cycle_text(const ReduceResult& r) {
   return s;
 }
 
+// The kept keys as FBX curves replaying the method (io/fbx_reduced.h), refused
+// unless our reader's replay of the file is within the budget at every frame.
+Status write_reduced_fbx(const std::string& path, const Clip& source, const MethodRun& run, const ReduceOptions& opt,
+                         bool quiet) {
+  FbxReducedOptions o;
+  o.method = run.method;
+  o.translation = opt.translation;
+  o.shell_distance = opt.shell_distance;
+  for (const ReducedJoint& j : run.result.joints) o.budgets.push_back({j.budget.rotation_deg, j.budget.shell, j.budget.translation});
+  auto fbx = encode_reduced_fbx(run.result.reduced, source, o);
+  if (!fbx) return make_error(path + ": " + fbx.error());
+  const double mm = source.unit.metres_per_unit * 1000.0;
+  if (!fbx->within_budget)
+    return make_error(fmt::format("{}: the FBX Euler curves miss the budget even keyed with the source's values "
+                                  "(max {:.4f}° local, {:.4f} mm shell, {:.4f} mm translation); not written",
+                                  path, fbx->max_rotation_error_deg, fbx->max_shell_error * mm, fbx->max_translation_error * mm));
+  if (!quiet)
+    fmt::print("FBX curves: {} rotation + {} translation keys ({} kept, {} added where the Euler curves miss the method's, "
+               "{} set to the source's value); replayed by our reader: max {:.4f}° local, {:.4f} mm shell, {:.4f} mm "
+               "translation\n",
+               fbx->rotation_keys, fbx->translation_keys, run.result.kept_keys, fbx->added_keys, fbx->corrected_keys,
+               fbx->max_rotation_error_deg, fbx->max_shell_error * mm, fbx->max_translation_error * mm);
+  return write_file_atomically(path, [&](std::ostream& out) -> Status {
+    out.write(fbx->bytes.data(), static_cast<std::streamsize>(fbx->bytes.size()));
+    return Ok{};
+  });
+}
+
 int run_reduce(const ReduceArgs& a) {
   // Everything that can be checked without the input first (exit 2).
   auto listed = parse_methods(a.methods, true);
@@ -158,9 +187,9 @@ int run_reduce(const ReduceArgs& a) {
   const std::string method = listed->front();
   const std::vector<std::string> names = listed->size() > 1 || a.output.empty() ? *listed : std::vector<std::string>{};
   const std::string ext = a.output.empty() ? "" : lower_extension(a.output);
-  const bool gltf = ext == ".glb" || ext == ".gltf";
-  if (!a.output.empty() && !gltf && ext != ".json")
-    return fail_usage("output '" + a.output + "': unknown format (use .json, .glb or .gltf)");
+  const bool gltf = ext == ".glb" || ext == ".gltf", fbx = ext == ".fbx";
+  if (!a.output.empty() && !gltf && !fbx && ext != ".json")
+    return fail_usage("output '" + a.output + "': unknown format (use .json, .glb, .gltf or .fbx)");
   if (gltf && method != "slerp" && method != "gltf-cubic")
     return fail_usage("a glTF viewer replays only --method slerp (LINEAR) or gltf-cubic (CUBICSPLINE); write .json for " +
                       method);
@@ -182,6 +211,8 @@ int run_reduce(const ReduceArgs& a) {
   if (!unit) return fail_usage(unit.error());
   auto loop = parse_loop_option(a.loop);
   if (!loop) return fail_usage(loop.error());
+  if (fbx && loop->has_value())
+    return fail_usage("--loop: FBX curves have no periodic form; write .json, .glb or .gltf for a cycle");
   if (deg == 0.0 && mm == 0.0) mm = kDefaultToleranceMm;  // neither: ozz's 1 mm at 10 cm
   std::vector<JointBudget> per_joint;
   for (const std::string& item : a.tolerance_for) {
@@ -270,6 +301,8 @@ int run_reduce(const ReduceArgs& a) {
       w.gltf_cubic_translations = opt.translation == TranslationInterp::cubic;
       w.on_warning = warn;
       written = write_clip(run.result.reduced, a.output, w);
+    } else if (fbx) {
+      written = write_reduced_fbx(a.output, *clip, run, opt, a.quiet);
     } else {
       opt.method = run.method;
       written = write_keys_json(a.output, *clip, run, opt, metres_per_unit, budgets);
@@ -321,8 +354,10 @@ void add_reduce_command(CLI::App& app, int& exit_code) {
   auto a = std::make_shared<ReduceArgs>();
   sub->add_option("IN", a->input, "Input clip (BVH, FBX, glTF/GLB, Collada, … — anything assimp reads)")->required();
   add_output_option(*sub, a->output,
-                    "Output: .json (per joint the kept key frames, times and values) or .glb/.gltf (sparse keys, "
-                    "LINEAR for slerp, CUBICSPLINE for gltf-cubic); default none: print the table");
+                    "Output: .json (per joint the kept key frames, times and values), .glb/.gltf (sparse keys, "
+                    "LINEAR for slerp, CUBICSPLINE for gltf-cubic) or .fbx (sparse Euler curves replaying the method: "
+                    "linear keys for slerp/nlerp, cubic keys with user tangents for the others, keys added where our "
+                    "reader's replay would miss the budget; no --loop); default none: print the table");
   add_method_option(*sub, a->methods, true,
                     "slerp. The keys are chosen for it; with several, each is run and tabled, and -o gets the first");
   sub->add_option("--tolerance", a->tolerance,

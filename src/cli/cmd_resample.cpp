@@ -141,7 +141,23 @@ Status resample_file(FileRun& run, const ResampleArgs& a, const ResampleOptions&
   write_options.on_warning = warn;
   write_options.threads = opt.threads;
   stage("writing " + run.output.string());
-  const Status written = write_clip(*out, run.output, write_options);
+  Status written = Ok{};
+  std::string ext = run.output.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (curves && !opt.fps && ext == ".fbx") {
+    // The source's own key times: its curves go back as stored (io/fbx_source.h).
+    std::vector<std::string> keep;
+    for (const auto& [joint, method] : opt.method_for) keep.push_back(joint);
+    auto fbx = encode_source_fbx(*out, *curves, keep, a.fbx_ascii, run.input);
+    if (!fbx) return fbx.failure();
+    run.copied_curves = fbx->copied;
+    written = write_file_atomically(run.output, [&](std::ostream& stream) -> Status {
+      stream.write(fbx->bytes.data(), static_cast<std::streamsize>(fbx->bytes.size()));
+      return Ok{};
+    });
+  } else {
+    written = write_clip(*out, run.output, write_options);
+  }
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return written;
 }
@@ -181,6 +197,8 @@ int run_single(const ResampleArgs& a, ResampleOptions opt) {
     if (run.replayed)
       methods += fmt::format(" ({} of {} joints from the file's curves, the rest {} over the baked keys)", run.replayed,
                              run.joints, kDefaultResampleMethod);
+    if (run.copied_curves)
+      methods += fmt::format("; FBX: the curves of {} joints written back as stored (keys and tangents)", run.copied_curves);
     if (!opt.method_for.empty()) methods += fmt::format(" (+{} per-joint override{})", opt.method_for.size(),
                                                         opt.method_for.size() == 1 ? "" : "s");
     fmt::print("{} → {}: {} → {} frames ({}), method {}, translation {}, {:.3f} s; unit {}{}\n", input, a.output,
@@ -246,7 +264,8 @@ void add_resample_command(CLI::App& app, int& exit_code) {
   add_method_option(*sub, a->method, false,
                     std::string(kDefaultResampleMethod) +
                         ", for every joint; 'source' replays an FBX file's own curves (tangents, Euler order, "
-                        "pre/post-rotation) on the joints that have them, " + kDefaultResampleMethod + " on the rest");
+                        "pre/post-rotation) on the joints that have them, " + kDefaultResampleMethod + " on the rest; "
+                        "to .fbx without --fps it writes those curves back as stored (keys and tangents)");
   sub->add_option("--method-for", a->method_for, "Per-joint override JOINT=METHOD (repeatable; default none)");
   sub->add_option("--translation", a->translation,
                   "Translation tracks: linear, or cubic (default: C¹, Steffen tangents — never overshoots between keys)");

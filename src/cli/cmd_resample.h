@@ -52,6 +52,7 @@ struct FileRun {
   double output_metres_per_unit = 0.0;
   std::string cycle;  // --loop: the cycle's summary (clip/resample_loop.h)
   std::size_t replayed = 0;  // --method source: joints evaluated from the file's curves
+  std::size_t copied_curves = 0;  // --method source to FBX without --fps: joints whose curves were written back
 };
 
 // Reads, resamples and writes one file, filling `run`; `stage` names each step.

@@ -1,15 +1,11 @@
-// Our FBX writer: the clip as FBX 7.4 objects, properties, curves and connections.
+// Our FBX writer: a clip's skeleton and given curves as FBX 7.4 objects, properties, curves and connections.
 #include "fbx_write.h"
 
 #include "fbx_encode.h"
 #include "fbx_rest.h"
-#include "rotinterp/clip/bvh_layout.h"
 #include "rotinterp/clip/frames.h"
-#include "rotinterp/clip/sampling.h"
-#include "rotinterp/io/euler.h"
-#include "key_times.h"
-#include "rotinterp/track/sample.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
@@ -19,64 +15,21 @@ namespace rotinterp {
 
 namespace {
 
-using i128 = __int128;
-
-constexpr int kTimeModeCustom = 14;
 constexpr int kTimeModeDefault = 0;
-// FbxAnimCurve key layout version and per-key attributes (one shared entry): linear
-// interpolation (0x4) with the SDK's default tangent bits, and the default tangent
-// weights 1/3 packed as two 16-bit 3333s into one float's bits.
+// FbxAnimCurve key layout version and per-key attributes (io/fbx_curves.cpp reads
+// them): linear interpolation (0x4) with the SDK's default tangent bits; cubic (0x8)
+// with user tangents (0x400), broken (0x800) where the left and right slopes differ.
+// The tangent weights are the default 1/3, packed as two 16-bit 3333s into one
+// float's bits.
 constexpr std::int32_t kKeyVersion = 4008;
 constexpr std::int32_t kKeyLinearFlags = 0x4 | 0x100 | 0x2000 | 0x4000;
+constexpr std::int32_t kKeyCubicUserFlags = 0x8 | 0x400, kKeyBrokenFlag = 0x800;
 constexpr std::uint32_t kDefaultTangentWeights = 0x0D050D05;
 // A fixed creation time (and the FileId the format notes give for it), so that the
 // same command writes the same bytes.
 constexpr const char* kCreationTime = "1970-01-01 10:00:00:000";
 constexpr unsigned char kFileId[16] = {0x28, 0xb3, 0x2a, 0xeb, 0xb6, 0x24, 0xcc, 0xc2,
                                        0xbf, 0xc8, 0xb0, 0x2a, 0xa9, 0x2b, 0xfc, 0xf1};
-// Key times within this (s, relative to max(1, |t|)) of a grid time are on the grid.
-constexpr double kOnGridTolerance = 1e-9;
-
-// Tick k of a rate num/den after `start_tick`: start + round(k·den·TPS/num), exactly.
-std::int64_t grid_tick(std::int64_t start_tick, std::int64_t k, const Rate& r) {
-  const i128 n = static_cast<i128>(k) * r.den * kFbxTicksPerSecond;
-  const i128 q = (2 * n + r.num) / (2 * static_cast<i128>(r.num));  // round half up (n ≥ 0)
-  return start_tick + static_cast<std::int64_t>(q);
-}
-
-std::vector<std::int64_t> fbx_ticks(const std::vector<double>& times, const std::optional<Rate>& rate) {
-  std::vector<std::int64_t> ticks(times.size());
-  const double t0 = times.front();
-  const auto start_tick = static_cast<std::int64_t>(std::llround(t0 * static_cast<double>(kFbxTicksPerSecond)));
-  for (std::size_t i = 0; i < times.size(); ++i) {
-    const double t = times[i];
-    if (rate) {
-      const double k = std::round((t - t0) * rate->hz());
-      if (k >= 0 && k < 9e15 &&
-          std::abs(t0 + rate->time_of(static_cast<std::int64_t>(k)) - t) <= kOnGridTolerance * std::max(1.0, std::abs(t))) {
-        ticks[i] = grid_tick(start_tick, static_cast<std::int64_t>(k), *rate);
-        continue;
-      }
-    }
-    ticks[i] = static_cast<std::int64_t>(std::llround(t * static_cast<double>(kFbxTicksPerSecond)));
-  }
-  return ticks;
-}
-
-// The joint's rotation order: its BVH rotation channels when they are three
-// different axes (FBX has only those six orders), else FBX's default XYZ
-// (R = Rz·Ry·Rx: our outermost-first ZYX).
-EulerAxes joint_axes(const std::vector<Channel>& channels) {
-  EulerAxes axes{};
-  int n = 0;
-  for (Channel c : channels) {
-    if (c < Channel::Xrotation) continue;
-    if (n == 3) return {2, 1, 0};
-    axes[static_cast<std::size_t>(n++)] = static_cast<int>(c) - static_cast<int>(Channel::Xrotation);
-  }
-  if (n != 3 || axes[0] == axes[1] || axes[1] == axes[2] || axes[0] == axes[2]) return {2, 1, 0};
-  return axes;
-}
 
 // FBX's EFbxRotationOrder names the axes in the order they apply (innermost first):
 // eEulerXYZ = 0 is R = Rz·Ry·Rx.
@@ -138,57 +91,91 @@ class Document {
   FbxEncoder enc_;
 };
 
-struct Curves {
-  std::vector<float> axis[3];
-};
+// An AnimationCurve: its keys, and their attributes as runs of keys that share
+// flags and data (KeyAttrRefCount: the length of each run).
+void write_curve(Document& doc, std::int64_t id, const FbxOutCurve& keys) {
+  FbxEncoder& e = doc.enc();
+  std::vector<std::int64_t> ticks;
+  std::vector<float> values, data;
+  std::vector<std::int32_t> flags, runs;
+  float weights;
+  std::memcpy(&weights, &kDefaultTangentWeights, 4);
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    const FbxOutKey& k = keys[i];
+    ticks.push_back(k.ticks);
+    values.push_back(k.value);
+    std::int32_t f = kKeyLinearFlags;
+    std::array<float, 4> slots{0.0f, 0.0f, weights, 0.0f};
+    if (k.stored_flags) {
+      f = static_cast<std::int32_t>(k.stored_flags);
+      slots = k.stored_data;
+    } else if (k.cubic) {
+      f = kKeyCubicUserFlags;
+      slots[0] = k.right_slope, slots[1] = k.next_left_slope;
+      if (i > 0 && keys[i - 1].cubic && keys[i - 1].next_left_slope != k.right_slope) f |= kKeyBrokenFlag;
+    }
+    // Compared by bits: stored data may hold packed integers.
+    if (!flags.empty() && flags.back() == f && std::memcmp(&data[data.size() - 4], slots.data(), 16) == 0) {
+      ++runs.back();
+      continue;
+    }
+    flags.push_back(f);
+    runs.push_back(1);
+    data.insert(data.end(), slots.begin(), slots.end());
+  }
+  e.begin("AnimationCurve");
+  e.i64(id).str(e.object_name("", "AnimCurve")).str("");
+  e.begin("Default");
+  e.f64(values.front());
+  e.end();
+  doc.leaf_i32("KeyVer", kKeyVersion);
+  e.begin("KeyTime");
+  e.i64_array(ticks);
+  e.end();
+  e.begin("KeyValueFloat");
+  e.f32_array(values);
+  e.end();
+  e.begin("KeyAttrFlags");
+  e.i32_array(flags);
+  e.end();
+  e.begin("KeyAttrDataFloat");
+  e.f32_array(data);
+  e.end();
+  e.begin("KeyAttrRefCount");
+  e.i32_array(runs);
+  e.end();
+  e.end();
+}
 
 }  // namespace
 
-int fbx_time_mode(std::int64_t num, std::int64_t den) {
-  struct Mode {
-    std::int64_t num, den;
-    int mode;
-  };
-  static constexpr Mode modes[] = {{120, 1, 1},    {100, 1, 2},       {60, 1, 3},         {50, 1, 4},
-                                   {48, 1, 5},     {30, 1, 6},        {30000, 1001, 9},   {25, 1, 10},
-                                   {24, 1, 11},    {24000, 1001, 13}, {96, 1, 15},        {72, 1, 16},
-                                   {60000, 1001, 17}, {120000, 1001, 18}};
-  for (const Mode& m : modes)
-    if (m.num == num && m.den == den) return m.mode;
-  return kTimeModeCustom;
-}
-
-Result<std::string> encode_fbx(const Clip& clip, FbxEncoding encoding) {
+Result<std::string> encode_fbx_curves(const Clip& clip, const std::vector<FbxOutJoint>& curves, FbxEncoding encoding) {
   if (Status s = clip.validate(); !s) return s.failure("cannot write an invalid clip: ");
   const Skeleton& sk = clip.skeleton;
   const std::size_t n = sk.joints.size();
-  const std::vector<double> times = all_key_times(clip);
+  if (curves.size() != n) return make_error("FBX curves for " + std::to_string(curves.size()) + " joints, the clip has " + std::to_string(n));
   const std::optional<Rate> rate = clip_rate(clip);
-  const std::vector<std::int64_t> ticks = fbx_ticks(times, rate);
-  const std::int64_t first = ticks.front(), last = ticks.back();
+  std::int64_t first = 0, last = 0;
+  bool any = false;
+  for (const FbxOutJoint& c : curves)
+    for (const auto* set : {&c.rotation, &c.translation})
+      for (const FbxOutCurve& curve : *set) {
+        if (curve.empty()) continue;
+        first = any ? std::min(first, curve.front().ticks) : curve.front().ticks;
+        last = any ? std::max(last, curve.back().ticks) : curve.back().ticks;
+        any = true;
+      }
+  for (std::size_t j = 0; j < n; ++j)
+    if (std::all_of(curves[j].rotation.begin(), curves[j].rotation.end(), [](const FbxOutCurve& c) { return c.empty(); }))
+      return make_error("FBX curves: joint " + sk.joints[j].name + " has no rotation keys");
   const std::string take = clip.name.empty() ? std::string("clip") : clip.name;
 
-  // Curves: Euler angles (degrees) continuous from key to key, translations.
-  std::vector<EulerAxes> axes(n);
-  std::vector<Curves> rot(n), pos(n);
   std::vector<Vec3> rest_euler(n);
   for (std::size_t j = 0; j < n; ++j) {
-    axes[j] = joint_axes(bvh_channels(clip, j));
+    const EulerAxes& axes = curves[j].axes;
     // Angle i of a sequence turns about axis axes[i]; FBX stores them by axis (X, Y, Z).
-    const Vec3 rest = euler_nearest(sk.joints[j].rest_rotation, axes[j], Vec3::Zero()) * kDegrees;
-    for (int i = 0; i < 3; ++i) rest_euler[j][axes[j][static_cast<std::size_t>(i)]] = rest[i];
-    Vec3 previous = Vec3::Zero();
-    for (auto& a : rot[j].axis) a.reserve(times.size());
-    for (double t : times) {
-      previous = euler_nearest(sample_rotation(clip.rotations[j], t), axes[j], previous);
-      for (int i = 0; i < 3; ++i)
-        rot[j].axis[axes[j][static_cast<std::size_t>(i)]].push_back(static_cast<float>(previous[i] * kDegrees));
-    }
-    if (const auto& tr = clip.translations[j])
-      for (double t : times) {
-        const Vec3 v = sample_translation(*tr, t);
-        for (int a = 0; a < 3; ++a) pos[j].axis[a].push_back(static_cast<float>(v[a]));
-      }
+    const Vec3 rest = euler_nearest(sk.joints[j].rest_rotation, axes, Vec3::Zero()) * kDegrees;
+    for (int i = 0; i < 3; ++i) rest_euler[j][axes[static_cast<std::size_t>(i)]] = rest[i];
   }
 
   const std::vector<Vec3> rest_translation = fbx_rest_translations(clip);  // Blender-safe (fbx_rest.h)
@@ -245,11 +232,11 @@ Result<std::string> encode_fbx(const Clip& clip, FbxEncoding encoding) {
   std::size_t curve_nodes = 0;
   for (std::size_t j = 0; j < n; ++j) {
     rot_node[j] = new_id();
-    for (auto& c : rot_curve[j]) c = new_id();
+    for (std::size_t a = 0; a < 3; ++a) rot_curve[j][a] = curves[j].rotation[a].empty() ? 0 : new_id();
     ++curve_nodes;
-    if (!pos[j].axis[0].empty()) {
+    if (curves[j].has_translation) {
       pos_node[j] = new_id();
-      for (auto& c : pos_curve[j]) c = new_id();
+      for (std::size_t a = 0; a < 3; ++a) pos_curve[j][a] = curves[j].translation[a].empty() ? 0 : new_id();
       ++curve_nodes;
     }
   }
@@ -272,12 +259,15 @@ Result<std::string> encode_fbx(const Clip& clip, FbxEncoding encoding) {
   e.begin("References");
   e.end();
 
+  std::size_t curve_count = 0;
+  for (std::size_t j = 0; j < n; ++j)
+    for (std::size_t a = 0; a < 3; ++a) curve_count += (rot_curve[j][a] != 0) + (pos_curve[j][a] != 0);
   e.begin("Definitions");
   doc.leaf_i32("Version", 100);
   const std::pair<const char*, std::size_t> types[] = {{"GlobalSettings", 1}, {"NodeAttribute", n}, {"Model", n},
                                                        {"AnimationStack", 1}, {"AnimationLayer", 1},
                                                        {"AnimationCurveNode", curve_nodes},
-                                                       {"AnimationCurve", 3 * curve_nodes}};
+                                                       {"AnimationCurve", curve_count}};
   std::size_t total = 0;
   for (const auto& t : types) total += t.second;
   doc.leaf_i32("Count", static_cast<std::int32_t>(total));
@@ -305,13 +295,17 @@ Result<std::string> encode_fbx(const Clip& clip, FbxEncoding encoding) {
     e.i64(model_id[j]).str(e.object_name(joint.name, "Model")).str("LimbNode");
     doc.leaf_i32("Version", 232);
     e.begin("Properties70");
-    doc.p("RotationOrder", "enum", "", "").i32(fbx_rotation_order(axes[j]));
+    doc.p("RotationOrder", "enum", "", "").i32(fbx_rotation_order(curves[j].axes));
     e.end();
     doc.p_int("RotationActive", "bool", "", 1);
     doc.p_int("InheritType", "enum", "", 1);
     doc.p_int("DefaultAttributeIndex", "int", "Integer", 0);
-    doc.p_vec("Lcl Translation", rest_translation[j]);
-    doc.p_vec("Lcl Rotation", rest_euler[j]);
+    if (const auto& node = curves[j].node) {
+      doc.p_vec("PreRotation", node->pre_rotation);
+      doc.p_vec("PostRotation", node->post_rotation);
+    }
+    doc.p_vec("Lcl Translation", curves[j].node ? curves[j].node->lcl_translation : rest_translation[j]);
+    doc.p_vec("Lcl Rotation", curves[j].node ? curves[j].node->lcl_rotation : rest_euler[j]);
     doc.p_vec("Lcl Scaling", Vec3::Ones());
     e.end();
     doc.leaf_str("Culling", "CullingOff");
@@ -329,55 +323,27 @@ Result<std::string> encode_fbx(const Clip& clip, FbxEncoding encoding) {
   e.begin("AnimationLayer");
   e.i64(layer_id).str(e.object_name("BaseLayer", "AnimLayer")).str("");
   e.end();
-  auto curve_node = [&](std::int64_t id, const char* name, const Curves& c) {
+  auto curve_node = [&](std::int64_t id, const char* name, const std::array<FbxOutCurve, 3>& c, const Vec3& defaults) {
     e.begin("AnimationCurveNode");
     e.i64(id).str(e.object_name(name, "AnimCurveNode")).str("");
     e.begin("Properties70");
-    for (int a = 0; a < 3; ++a) {
-      doc.p(std::string("d|") + static_cast<char>('X' + a), "Number", "", "A").f64(c.axis[a].front());
+    for (std::size_t a = 0; a < 3; ++a) {
+      const double value = c[a].empty() ? defaults[static_cast<Eigen::Index>(a)] : c[a].front().value;
+      doc.p(std::string("d|") + static_cast<char>('X' + a), "Number", "", "A").f64(value);
       e.end();
     }
     e.end();
     e.end();
   };
-  const std::vector<float> key_data{0.0f, 0.0f, [] {
-                                      float f;
-                                      std::memcpy(&f, &kDefaultTangentWeights, 4);
-                                      return f;
-                                    }(),
-                                    0.0f};
-  auto curve = [&](std::int64_t id, const std::vector<float>& values) {
-    e.begin("AnimationCurve");
-    e.i64(id).str(e.object_name("", "AnimCurve")).str("");
-    e.begin("Default");
-    e.f64(values.front());
-    e.end();
-    doc.leaf_i32("KeyVer", kKeyVersion);
-    e.begin("KeyTime");
-    e.i64_array(ticks);
-    e.end();
-    e.begin("KeyValueFloat");
-    e.f32_array(values);
-    e.end();
-    e.begin("KeyAttrFlags");
-    e.i32_array({kKeyLinearFlags});
-    e.end();
-    e.begin("KeyAttrDataFloat");
-    e.f32_array(key_data);
-    e.end();
-    e.begin("KeyAttrRefCount");
-    e.i32_array({static_cast<std::int32_t>(values.size())});
-    e.end();
-    e.end();
-  };
   for (std::size_t j = 0; j < n; ++j) {
-    curve_node(rot_node[j], "R", rot[j]);
-    if (pos_node[j]) curve_node(pos_node[j], "T", pos[j]);
+    curve_node(rot_node[j], "R", curves[j].rotation, curves[j].rotation_default);
+    if (pos_node[j]) curve_node(pos_node[j], "T", curves[j].translation, curves[j].translation_default);
   }
   for (std::size_t j = 0; j < n; ++j) {
-    for (int a = 0; a < 3; ++a) curve(rot_curve[j][static_cast<std::size_t>(a)], rot[j].axis[a]);
-    if (pos_node[j])
-      for (int a = 0; a < 3; ++a) curve(pos_curve[j][static_cast<std::size_t>(a)], pos[j].axis[a]);
+    for (std::size_t a = 0; a < 3; ++a)
+      if (rot_curve[j][a]) write_curve(doc, rot_curve[j][a], curves[j].rotation[a]);
+    for (std::size_t a = 0; a < 3; ++a)
+      if (pos_curve[j][a]) write_curve(doc, pos_curve[j][a], curves[j].translation[a]);
   }
   e.end();
 
@@ -392,11 +358,13 @@ Result<std::string> encode_fbx(const Clip& clip, FbxEncoding encoding) {
   for (std::size_t j = 0; j < n; ++j) {
     doc.connect(rot_node[j], layer_id);
     doc.connect(rot_node[j], model_id[j], "Lcl Rotation");
-    for (std::size_t a = 0; a < 3; ++a) doc.connect(rot_curve[j][a], rot_node[j], axis_names[a]);
+    for (std::size_t a = 0; a < 3; ++a)
+      if (rot_curve[j][a]) doc.connect(rot_curve[j][a], rot_node[j], axis_names[a]);
     if (!pos_node[j]) continue;
     doc.connect(pos_node[j], layer_id);
     doc.connect(pos_node[j], model_id[j], "Lcl Translation");
-    for (std::size_t a = 0; a < 3; ++a) doc.connect(pos_curve[j][a], pos_node[j], axis_names[a]);
+    for (std::size_t a = 0; a < 3; ++a)
+      if (pos_curve[j][a]) doc.connect(pos_curve[j][a], pos_node[j], axis_names[a]);
   }
   e.end();
 

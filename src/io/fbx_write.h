@@ -12,8 +12,10 @@
 //    it, else custom + CustomFrameRate), Y up, Z front, X right (right-handed,
 //    as BVH), UnitScaleFactor = centimetres per clip unit (100 × metres per unit);
 //  * per joint an AnimationCurveNode "R" (and "T" where the joint has a translation
-//    track) with one AnimationCurve per axis and a key at every key time of the
-//    clip (the union over all joints), linear; Euler angles in degrees in the
+//    track) with one AnimationCurve per axis: by default a key at every key time of the
+//    clip (the union over all joints), linear (fbx_frame_curves); or the curves given
+//    (encode_fbx_curves: sparse keys, linear or cubic with user tangents, as
+//    rotinterp reduce writes them: io/fbx_reduced.h); Euler angles in degrees in the
 //    joint's BVH rotation order (FBX XYZ for joints without one), each the solution
 //    nearest the previous key (euler_nearest), so curves never jump by 360°; key
 //    times in FBX ticks (46 186 158 000 per second), rounded exactly from the
@@ -24,15 +26,73 @@
 #include "rotinterp/core/result.h"
 #include "rotinterp/io/fbx_curves.h"  // kFbxTicksPerSecond: one FBX time unit for reader and writer
 
+#include "rotinterp/clip/sampling.h"
+#include "rotinterp/io/euler.h"
+
+#include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace rotinterp {
 
 enum class FbxEncoding { binary, ascii };
 
-// The FBX file for `clip` (validated first) as bytes.
+// One key of a written curve (fbx_write_curves.cpp builds them, fbx_write.cpp
+// writes them): linear, or cubic with user slopes in value per second — its own
+// right slope and the next key's left slope, as KeyAttrDataFloat holds them
+// (io/fbx_curves.h FbxKey). Left and right slopes that differ make a broken key.
+// A key copied from a read file instead keeps its KeyAttrFlags and
+// KeyAttrDataFloat as they were (stored_flags non-zero).
+struct FbxOutKey {
+  std::int64_t ticks = 0;
+  float value = 0.0f;
+  bool cubic = false;
+  float right_slope = 0.0f, next_left_slope = 0.0f;
+  std::uint32_t stored_flags = 0;
+  std::array<float, 4> stored_data{};
+};
+using FbxOutCurve = std::vector<FbxOutKey>;
+
+// What is written for one joint: its rotation order and its Lcl Rotation curves
+// (degrees) by axis X, Y, Z; Lcl Translation curves (clip units) where it has a
+// translation track, else empty.
+// A channel without keys has no AnimationCurve: its curve node's default holds it.
+// The node's properties are the clip's (the whole local rotation as Lcl Rotation, no
+// Pre/PostRotation, the Blender-safe rest translation: fbx_rest.h) unless `node`
+// gives the read file's, for curves copied from it.
+struct FbxOutNode {
+  Vec3 lcl_translation, lcl_rotation;  // static values (degrees)
+  Vec3 pre_rotation, post_rotation;    // degrees, XYZ
+};
+struct FbxOutJoint {
+  EulerAxes axes{2, 1, 0};
+  std::array<FbxOutCurve, 3> rotation, translation;
+  Vec3 rotation_default = Vec3::Zero(), translation_default = Vec3::Zero();  // channels without keys
+  bool has_translation = false;  // an "T" curve node (any translation channel with keys)
+  std::optional<FbxOutNode> node;
+};
+
+// The FBX file for `clip` (validated first) as bytes, a linear key at every key
+// time of the clip (fbx_frame_curves).
 Result<std::string> encode_fbx(const Clip& clip, FbxEncoding encoding);
+// The FBX file of `clip`'s skeleton, rate and name with these curves (one per joint,
+// some rotation curve with keys) as bytes. Errors: an invalid clip, curves that do
+// not match its joints.
+Result<std::string> encode_fbx_curves(const Clip& clip, const std::vector<FbxOutJoint>& curves, FbxEncoding encoding);
+
+// The writer's curves for `clip` (valid): a linear key at every key time of the clip
+// (the union over all joints), Euler angles each nearest the previous key's.
+std::vector<FbxOutJoint> fbx_frame_curves(const Clip& clip);
+
+// The joint's rotation order as written: its BVH rotation channels where they are
+// three different axes, else FBX's default XYZ.
+EulerAxes fbx_joint_axes(const Clip& clip, std::size_t joint);
+
+// FBX ticks of clip times: exact on the clip's rate grid (start + round(k·TPS/rate))
+// where a time lies on it, else the time rounded to a tick.
+std::vector<std::int64_t> fbx_ticks(const std::vector<double>& times, const std::optional<Rate>& rate);
 
 // FBX's TimeMode for an exact rate (FbxTime::EMode: 6 for 30 Hz, 9 for
 // 30000/1001, …), or 14 (custom) when FBX has no mode for it.

@@ -79,4 +79,25 @@ Result<Clip> read_clip_with_source_motion(const std::filesystem::path& path, con
 Result<std::size_t> replay_fbx_rotations(Clip& clip, const SourceClip& source, const std::vector<std::string>& keep,
                                          const std::string& label);
 
+// The FBX file of `clip` (resampled from `source`: its skeleton, rate and name) in
+// which each joint with curves in `source`'s take gets its node's curves back as
+// the file stores them — key times, values, interpolation and tangents
+// (KeyAttrFlags and KeyAttrDataFloat as read: user, auto, TCB, weighted, …), its
+// rotation order and Pre/PostRotation — so that our reader, and the DCC, replay
+// the source's own curves (resample --method source -o OUT.fbx without --fps).
+// The file keeps the source's time axis (clip time t at FBX time take start + t,
+// every joint's keys). Copied per joint, from a one-layer take, where the node has no
+// rotation/scaling pivot or offset: Lcl Rotation, and Lcl Translation where the
+// joint's translation (its track, else its rest offset) equals the curves at its
+// keys (same units); joints in
+// `keep`, the rest, and layered takes get a linear key at every frame of `clip`
+// as the writer's default. Extrapolation is written as constant. `copied` counts
+// the joints whose rotation curves were copied.
+struct SourceFbx {
+  std::string bytes;
+  std::size_t copied = 0;
+};
+Result<SourceFbx> encode_source_fbx(const Clip& clip, const SourceClip& source, const std::vector<std::string>& keep,
+                                    bool ascii, const std::string& label);
+
 }  // namespace rotinterp

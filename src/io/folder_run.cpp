@@ -2,6 +2,8 @@
 #include "rotinterp/io/folder_run.h"
 
 #include "rotinterp/io/atomic_file.h"
+#include "rotinterp/io/csv.h"
+#include "rotinterp/io/dataset.h"
 
 #include <atomic>
 #include <system_error>

@@ -16,8 +16,6 @@
 #include "rotinterp/core/progress.h"
 #include "rotinterp/core/result.h"
 #include "rotinterp/core/work_queue.h"
-#include "rotinterp/io/csv.h"
-#include "rotinterp/io/dataset.h"
 
 #include <algorithm>
 #include <atomic>

@@ -2,8 +2,6 @@
 // them, the key frames and the bone axes, shared by eval, render and resample.
 #include "rotinterp/clip/frames.h"
 
-#include "rotinterp/interp/slerp.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -62,25 +60,6 @@ TEST(Frames, KeysOnNoGridMakeTheLongestTracksTimesTheFrames) {
   EXPECT_EQ(g.times, clip.rotations[0].times);
   EXPECT_FALSE(g.rate.has_value());
   EXPECT_EQ(g.exact_time(3), 1.0);
-}
-
-TEST(Frames, AFrameTakesAKeyWithinItsSnapElseTheSlerpOfItsNeighbours) {
-  RotationTrack track;
-  track.times = {0.0, 1.0 + 0.01, 3.0};  // the middle key a hundredth of a frame late
-  track.keys = {Quat::Identity(), exp(RotVec(0.5, 0, 0)), exp(RotVec(1.5, 0, 0))};
-  const std::vector<double> times = {-1.0, 0.0, 1.0, 2.0, 3.0, 4.0};
-  std::vector<Quat> out(times.size());
-  sample_rotations(track, times, 0.05, out.data());
-  EXPECT_EQ(out[0].coeffs(), track.keys[0].coeffs());  // held before the first key
-  EXPECT_EQ(out[1].coeffs(), track.keys[0].coeffs());
-  EXPECT_EQ(out[2].coeffs(), track.keys[1].coeffs());  // the late key is frame 1's
-  const Quat between = slerp(track.keys[1], track.keys[2], (2.0 - 1.01) / (3.0 - 1.01));
-  EXPECT_EQ(out[3].coeffs(), between.coeffs());
-  EXPECT_EQ(out[4].coeffs(), track.keys[2].coeffs());
-  EXPECT_EQ(out[5].coeffs(), track.keys[2].coeffs());  // held after the last
-  // With no snap the late key is not frame 1's: frame 1 lies between keys.
-  sample_rotations(track, times, 0.0, out.data());
-  EXPECT_NE(out[2].coeffs(), track.keys[1].coeffs());
 }
 
 TEST(Frames, DenseClipAndDecimationTakeTheKeysAtTheKeptFrames) {

@@ -4,7 +4,6 @@
 #include "common.h"
 #include "rotinterp/core/work_queue.h"
 #include "rotinterp/io/atomic_file.h"
-#include "rotinterp/io/csv.h"
 #include "rotinterp/io/dataset.h"
 #include "rotinterp/io/folder_run.h"
 #include "rotinterp/io/write.h"
@@ -16,6 +15,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <mutex>
@@ -92,7 +92,6 @@ int run_resample_folder(const ResampleArgs& a, const ResampleOptions& opt) {
     bytes_total += bytes[i];
     runs[i].input = (*plan)[i].input;
     runs[i].output = (*plan)[i].output;
-    runs[i].bytes = bytes[i];
   }
   std::atomic<std::size_t> done{0};
   std::atomic<std::uintmax_t> bytes_done{0};

@@ -74,13 +74,8 @@ int run(const EvalArgs& a) {
   const bool quiet = a.quiet;
   // A file without animation is said at the end: alone, it is the one line of a run
   // that had nothing to evaluate (a static mesh), not an empty table.
-  auto print_failure = [](const EvalFailure& f) {
-    // Out of memory ends the run, as in every command: one line, exit 1, nothing written.
-    if (f.kind == ErrorKind::out_of_memory) {
-      name_out_of_memory_file(f.file);
-      throw std::bad_alloc();
-    }
-    if (f.kind != ErrorKind::no_animation) std::fprintf(stderr, "rotinterp: %s\n", f.message.c_str());
+  auto print_failure = [quiet](const EvalFailure& f) {
+    if (f.kind != ErrorKind::no_animation) print_file_failure(f, quiet);
   };
   Result<EvalReport> report = make_error("");
   // No output file may be one of the inputs (a shard merged into itself, -o where a

@@ -9,6 +9,7 @@
 #include "rotinterp/clip/loop.h"
 #include "rotinterp/core/work_queue.h"
 #include "rotinterp/io/dataset.h"
+#include "rotinterp/io/folder_run.h"
 #include "rotinterp/io/info.h"
 
 #include <CLI/CLI.hpp>
@@ -19,11 +20,9 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cctype>
 #include <cstdio>
 #include <filesystem>
-#include <future>
 #include <map>
 #include <memory>
 #include <string>
@@ -100,26 +99,26 @@ int run_summary(const InfoArgs& args) {
   ReadOptions options = *read_options;
   // Warnings belong to the files' rows, not to stderr.
   options.on_warning = [](const std::string&) {};
-  WorkQueue queue(static_cast<unsigned>(args.jobs));
-  const ProgressFn progress = make_progress("info", false);
-  std::atomic<std::size_t> done{0};
-  std::vector<std::future<FileSummary>> futures;
-  for (const std::string& f : *files)
-    futures.push_back(queue.submit([&, f] {
-      FileSummary s = summarize(f, options);
-      if (progress) progress(++done, files->size());
-      return s;
-    }));
-  std::vector<FileSummary> rows;
-  for (auto& f : futures) rows.push_back(f.get());
+  std::vector<FileSummary> all(files->size());
+  std::vector<RunFile> run;
+  for (const std::string& f : *files) run.push_back({f, {}});
+  FileRunOptions run_options;
+  run_options.named = named;
+  run_options.threads = thread_count(static_cast<unsigned>(args.jobs));
+  run_options.progress = make_progress("info", false);
+  run_options.on_failure = [](const FileFailure& f) { print_file_failure(f, false); };
+  const FileRunReport report = run_files(run, run_options, [&](std::size_t i, unsigned threads) -> Status {
+    ReadOptions mine = options;
+    mine.threads = threads;
+    all[i] = summarize((*files)[i], mine);
+    if (!all[i].error.empty()) return make_error(all[i].error, all[i].error_kind);
+    return Ok{};
+  });
   end_progress(false);
   // Meshes found next to the clips are not part of the dataset (as eval skips them).
-  rows.erase(std::remove_if(rows.begin(), rows.end(),
-                            [&](const FileSummary& s) {
-                              return !s.error.empty() && s.error_kind == ErrorKind::no_animation &&
-                                     found_in_directory(s.file, named);
-                            }),
-             rows.end());
+  std::vector<FileSummary> rows;
+  for (std::size_t i = 0; i < all.size(); ++i)
+    if (report.outcomes[i].status != FileStatus::no_animation) rows.push_back(std::move(all[i]));
   std::map<std::string, std::size_t> row_of;
   for (std::size_t i = 0; i < rows.size(); ++i) row_of[rows[i].file] = i;
   const auto copies = duplicate_files(*files);

@@ -10,7 +10,6 @@
 #include "rotinterp/core/result.h"
 
 #include <cstddef>
-#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -36,18 +35,16 @@ struct ResampleArgs {
   std::optional<LoopRequest> loop_request;
 };
 
-// One file's run: a row of the manifest.
+// What one file's run found and wrote: a row of the manifest after its first columns
+// (io/folder_run.h FileOutcome: input, output, status, message).
 struct FileRun {
   std::string input;
   std::filesystem::path output;
-  std::string status = "ok";  // ok, exists (--skip-existing), no-animation, failed
-  std::string message;        // the error line of a failed file
   std::string frame_time;     // as written in the file (BVH), else empty
   std::optional<Rate> rate;   // as recognized
   std::optional<Rate> output_rate;
   std::size_t frames = 0, joints = 0, output_frames = 0;
   double duration = 0.0, seconds = 0.0;
-  std::uintmax_t bytes = 0;  // of the input
   ClipUnit unit;             // the input's (clip/units.h)
   double output_metres_per_unit = 0.0;
   std::string cycle;  // --loop: the cycle's summary (clip/resample_loop.h)

@@ -1,11 +1,11 @@
 // rotinterp resample PATH... -o OUTDIR: a whole dataset resampled file by file on a
-// work queue, its layout mirrored under OUTDIR, a progress line and the manifest.
+// folder run (io/folder_run.h), its layout mirrored under OUTDIR, a progress line and the manifest.
 #include "cmd_resample.h"
 #include "common.h"
 #include "rotinterp/core/work_queue.h"
 #include "rotinterp/io/atomic_file.h"
-#include "rotinterp/io/csv.h"
 #include "rotinterp/io/dataset.h"
+#include "rotinterp/io/folder_run.h"
 #include "rotinterp/io/write.h"
 
 #include <fmt/core.h>
@@ -15,36 +15,40 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
-#include <future>
 #include <mutex>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace rotinterp::cli {
 
 namespace {
 
-Status write_manifest(const std::string& path, const std::vector<FileRun>& runs, const ResampleOptions& opt) {
-  static const CsvSchema schema = {"input",  "output",   "status",        "frame_time_written", "rate_hz",
-                                   "rate",   "frames",   "duration_s",    "joints",             "output_frames",
-                                   "method", "seconds",  "message",       "metres_per_unit",    "unit"};
-  return write_file_atomically(path, [&](std::ostream& out) -> Status {
-    out << schema.header();
-    for (const FileRun& r : runs) {
-      const bool read = r.status == "ok" || (r.status == "failed" && r.frames > 0);
-      const bool ok = r.status == "ok";
-      CsvRow row(schema);
-      row << r.input << r.output.string() << r.status << r.frame_time
-          << (r.rate ? fmt::format("{:.9g}", r.rate->hz()) : "") << (r.rate ? r.rate->to_string() : "")
-          << (read ? std::to_string(r.frames) : "") << (read ? fmt::format("{:.9g}", r.duration) : "")
-          << (read ? std::to_string(r.joints) : "") << (ok ? std::to_string(r.output_frames) : "") << opt.method
-          << (ok ? fmt::format("{:.3f}", r.seconds) : "") << r.message
-          << (read ? fmt::format("{}", r.unit.metres_per_unit) : "") << (read ? describe_unit(r.unit) : "");
-      out << row.line();
-    }
-    return Ok{};
+Status write_resample_manifest(const std::string& path, const FileRunReport& report, const std::vector<FileRun>& runs,
+                               const ResampleOptions& opt) {
+  static const std::vector<std::string> columns = {"frame_time_written", "rate_hz", "rate",    "frames",
+                                                   "duration_s",         "joints",  "output_frames", "method",
+                                                   "seconds",            "message", "metres_per_unit", "unit"};
+  return write_manifest(path, report.outcomes, columns, [&](std::size_t i) -> std::vector<std::string> {
+    const FileRun& r = runs[i];
+    const FileOutcome& o = report.outcomes[i];
+    const bool ok = o.status == FileStatus::ok;
+    const bool read = ok || (o.status == FileStatus::failed && r.frames > 0);
+    return {r.frame_time,
+            r.rate ? fmt::format("{:.9g}", r.rate->hz()) : "",
+            r.rate ? r.rate->to_string() : "",
+            read ? std::to_string(r.frames) : "",
+            read ? fmt::format("{:.9g}", r.duration) : "",
+            read ? std::to_string(r.joints) : "",
+            ok ? std::to_string(r.output_frames) : "",
+            opt.method,
+            ok ? fmt::format("{:.3f}", r.seconds) : "",
+            o.message,
+            read ? fmt::format("{}", r.unit.metres_per_unit) : "",
+            read ? describe_unit(r.unit) : ""};
   });
 }
 
@@ -64,34 +68,43 @@ int run_resample_folder(const ResampleArgs& a, const ResampleOptions& opt) {
   if (!a.format.empty() && !can_write_format(fs::path("x." + a.format)))
     return fail_usage("--format '" + a.format + "': unknown format (use bvh, fbx, glb, gltf or dae)");
   std::vector<fs::path> named(a.inputs.begin(), a.inputs.end());
-  auto found = discover_inputs(named);
-  if (!found) return fail(found.error());
-  if (found->empty()) {
-    std::string where;
-    for (const std::string& p : a.inputs) where += (where.empty() ? "" : ", ") + p;
-    return fail(where + ": no clip files found (looked for every format assimp imports)");
-  }
-  std::vector<std::string> files = *found;
+  int shard_index = 1, shard_count = 1;
   if (!a.shard.empty()) {
     auto shard = parse_shard(a.shard);
     if (!shard) return fail_usage(shard.error());
-    files = shard_of(files, shard->first, shard->second);
+    std::tie(shard_index, shard_count) = *shard;
   }
-  auto plan = mirror_outputs(files, named, a.output, a.format);
+  auto files = find_run_inputs(named, shard_index, shard_count);
+  if (!files) return fail(files.error());
+  auto plan = mirror_outputs(*files, named, a.output, a.format);
   if (!plan) return fail(plan.error());
-  for (const MirroredOutput& m : *plan) protect_input(m.input);
+  std::vector<RunFile> run_files_of;
+  for (const MirroredOutput& m : *plan) {
+    protect_input(m.input);
+    run_files_of.push_back({m.input, m.output});
+  }
 
-  WorkQueue queue(static_cast<unsigned>(a.jobs));
-  // Joints in parallel only where fewer files than workers are in flight (the last ones).
-  std::atomic<unsigned> in_flight{0};
+  std::vector<FileRun> runs(plan->size());
+  std::vector<std::uintmax_t> bytes(plan->size());
+  std::uintmax_t bytes_total = 0;
+  for (std::size_t i = 0; i < plan->size(); ++i) {
+    bytes[i] = fs::file_size((*plan)[i].input, ec) * !ec;
+    bytes_total += bytes[i];
+    runs[i].input = (*plan)[i].input;
+    runs[i].output = (*plan)[i].output;
+  }
   std::atomic<std::size_t> done{0};
   std::atomic<std::uintmax_t> bytes_done{0};
-  std::uintmax_t bytes_total = 0;
-  for (const MirroredOutput& m : *plan) bytes_total += fs::file_size(m.input, ec) * !ec;
   const bool show = !a.quiet && ::isatty(STDERR_FILENO);
   std::mutex progress_mutex;
   const auto started = std::chrono::steady_clock::now();
-  auto report = [&] {
+  FileRunOptions run_options;
+  run_options.named = named;
+  run_options.threads = thread_count(static_cast<unsigned>(a.jobs));
+  run_options.skip_existing = a.skip_existing;
+  run_options.finished = [&](std::size_t i) {
+    ++done;
+    bytes_done += bytes[i];
     if (!show) return;
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     const double mb = static_cast<double>(bytes_done.load()) / 1e6;
@@ -101,67 +114,27 @@ int run_resample_folder(const ResampleArgs& a, const ResampleOptions& opt) {
     std::fprintf(stderr, "\r\033[Kresample  %zu/%zu files  %.1f MB/s  ETA %s", done.load(), plan->size(), rate,
                  rate > 0 ? duration_text(left / rate).c_str() : "?");
   };
+  run_options.on_failure = [&](const FileFailure& f) { print_file_failure(f, a.quiet); };
   auto no_stage = [](const std::string&) {};
-
-  std::vector<std::future<FileRun>> futures;
-  for (const MirroredOutput& m : *plan) {
-    futures.push_back(queue.submit([&, m] {
-      FileRun run;
-      run.input = m.input;
-      run.output = m.output;
-      std::error_code size_error;  // this worker's own
-      run.bytes = fs::file_size(m.input, size_error) * !size_error;
-      if (a.skip_existing && fs::is_regular_file(m.output, size_error)) {
-        run.status = "exists";
-      } else if (Status mine = check_not_an_input(m.output); !mine) {
-        run.status = "failed";
-        run.message = mine.error();
-      } else {
-        ResampleOptions file_opt = opt;
-        const unsigned now = ++in_flight;
-        file_opt.threads = std::max(1u, queue.threads() / std::max(1u, now));
-        std::error_code mkdir_error;
-        fs::create_directories(m.output.parent_path(), mkdir_error);
-        Status s = mkdir_error ? Status(make_error(m.output.parent_path().string() + ": " + mkdir_error.message()))
-                               : resample_file(run, a, file_opt, no_stage);
-        --in_flight;
-        if (!s && s.error_kind() == ErrorKind::no_animation && found_in_directory(m.input, named)) {
-          run.status = "no-animation";  // a mesh next to the clips, as eval skips it
-        } else if (!s) {
-          run.status = "failed";
-          run.message = s.error();
-        }
-      }
-      ++done;
-      bytes_done += run.bytes;
-      report();
-      return run;
-    }));
-  }
-  std::vector<FileRun> runs;
-  std::size_t failed = 0, written = 0, existing = 0;
-  for (auto& f : futures) {
-    runs.push_back(f.get());
-    const FileRun& r = runs.back();
-    if (r.status == "failed") {
-      ++failed;
-      if (show) std::fprintf(stderr, "\r\033[K");
-      fail(r.message);
-    }
-    written += r.status == "ok";
-    existing += r.status == "exists";
-  }
+  const FileRunReport report = run_files(run_files_of, run_options, [&](std::size_t i, unsigned threads) -> Status {
+    if (Status mine = check_not_an_input(runs[i].output); !mine) return mine;
+    ResampleOptions file_opt = opt;
+    file_opt.threads = threads;
+    return resample_file(runs[i], a, file_opt, no_stage);
+  });
   end_progress(a.quiet);
   if (!a.manifest.empty())
-    if (Status s = write_manifest(a.manifest, runs, opt); !s) return fail(s.error());
+    if (Status s = write_resample_manifest(a.manifest, report, runs, opt); !s) return fail(s.error());
+  const std::size_t failed = report.count(FileStatus::failed), written = report.count(FileStatus::ok),
+                    existing = report.count(FileStatus::exists);
   if (!a.quiet) {
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     fmt::print("{} file{} → {}: {} written, {} already there, {} failed, {} skipped (no animation); {:.1f} MB in "
                "{:.2f} s ({:.1f} MB/s), {} worker{}\n",
                runs.size(), runs.size() == 1 ? "" : "s", a.output, written, existing, failed,
-               runs.size() - written - existing - failed, static_cast<double>(bytes_total) / 1e6, seconds,
-               seconds > 0 ? static_cast<double>(bytes_total) / 1e6 / seconds : 0.0, queue.threads(),
-               queue.threads() == 1 ? "" : "s");
+               report.count(FileStatus::no_animation), static_cast<double>(bytes_total) / 1e6, seconds,
+               seconds > 0 ? static_cast<double>(bytes_total) / 1e6 / seconds : 0.0, report.threads,
+               report.threads == 1 ? "" : "s");
   }
   return failed > 0 ? kExitPartial : kExitOk;
 }

@@ -3,6 +3,7 @@
 
 #include "rotinterp/clip/units.h"
 #include "rotinterp/interp/interpolator.h"
+#include "rotinterp/io/folder_run.h"
 
 #include <CLI/CLI.hpp>
 
@@ -18,6 +19,7 @@
 #include <cstdlib>
 #include <memory>
 #include <mutex>
+#include <new>
 
 namespace rotinterp::cli {
 
@@ -233,6 +235,15 @@ ProgressFn make_progress(std::string label, bool quiet) {
 
 void end_progress(bool quiet) {
   if (progress_visible(quiet)) std::fprintf(stderr, "\r\033[K");
+}
+
+void print_file_failure(const FileFailure& failure, bool quiet) {
+  if (failure.kind == ErrorKind::out_of_memory) {
+    name_out_of_memory_file(failure.file);
+    throw std::bad_alloc();
+  }
+  end_progress(quiet);
+  fail(failure.message);
 }
 
 }  // namespace rotinterp::cli

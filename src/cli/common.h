@@ -16,6 +16,10 @@ class App;
 class Option;
 }
 
+namespace rotinterp {
+struct FileFailure;
+}
+
 namespace rotinterp::cli {
 
 // Exit codes (README "Exit codes").
@@ -66,6 +70,10 @@ std::vector<std::string> split_comma_list(std::string_view text);
 ProgressFn make_progress(std::string label, bool quiet);
 // Ends the progress line (if one was drawn).
 void end_progress(bool quiet);
+// A file of a folder run that failed (io/folder_run.h), said the same way by every
+// command: the progress line cleared, then "rotinterp: <message>" on stderr. Out of
+// memory ends the run instead: main's one line naming the file, exit 1.
+void print_file_failure(const FileFailure& failure, bool quiet);
 
 // ---- One vocabulary: every option that means the same in several subcommands is
 // declared here, once, with its names, its default and its help (STYLE rule 15).

@@ -59,8 +59,7 @@ Result<RebuiltJoint> rebuild_joint(const std::vector<double>& times, const std::
   const std::vector<std::size_t> kf =
       out.periodic ? period_keys(times, cycle->check, n, wrap_frame) : keep_every_indices(times.size(), n);
   out.keys = decimated_track(times, source, kf);
-  auto curve = out.periodic ? make_periodic_interpolator(method, out.keys, cycle->check.period)
-                            : make_interpolator(method, out.keys);
+  auto curve = make_joint_curve(method, out.keys, out.periodic ? std::optional<double>(cycle->check.period) : std::nullopt);
   if (!curve) return curve.failure();
   out.curve = std::move(*curve);
   out.jump_times = out.keys.times;

@@ -127,6 +127,8 @@ Result<CycleResample> resample_cycle(const Clip& in, const ResampleOptions& opti
     loops[m.joint] = false;
     result.not_looped.push_back(m.name);
   }
+  // A joint that closes is rebuilt on its periodic curve; one that misses closure as it is.
+  auto period_of = [&](std::size_t j) { return loops[j] ? std::optional<double>(source_period) : std::nullopt; };
   out.rotations.resize(n);
   out.translations.resize(n);
   for (std::size_t j = 0; j < n; ++j) {
@@ -134,8 +136,7 @@ Result<CycleResample> resample_cycle(const Clip& in, const ResampleOptions& opti
     RotationTrack keys = loops[j] ? one_period(source, t0, source_period, source_frame) : source;
     if (keys.times.empty()) keys = source;  // a single key past the period: a still joint
     if (options.keep_every && keys.times.size() > 1) {
-      auto whole = loops[j] ? make_periodic_interpolator(method[j], keys, source_period)
-                            : make_interpolator(method[j], keys);
+      auto whole = make_joint_curve(method[j], keys, period_of(j));
       if (!whole) return whole.failure("joint '" + in.skeleton.joints[j].name + "': ");
       RotationTrack sparse;
       sparse.times = key_times;
@@ -151,7 +152,7 @@ Result<CycleResample> resample_cycle(const Clip& in, const ResampleOptions& opti
     if (keys.keys.size() == 1) {
       std::fill(rot.keys.begin(), rot.keys.end(), keys.keys.front());
     } else {
-      auto curve = loops[j] ? make_periodic_interpolator(method[j], keys, source_period) : make_interpolator(method[j], keys);
+      auto curve = make_joint_curve(method[j], keys, period_of(j));
       if (!curve) return curve.failure("joint '" + in.skeleton.joints[j].name + "': ");
       (*curve)->evaluate(eval_times.data(), eval_times.size(), rot.keys.data());
     }

@@ -1,10 +1,12 @@
-// eval's run: the clip files of this shard evaluated method by method on the work
-// queue, a bounded number of clips in flight, their rows handed on in input order.
+// eval's run: the clip files of this shard evaluated method by method on the folder
+// run's queue (io/folder_run.h), a bounded number of clips in flight, their rows
+// handed on in input order.
 #include "rotinterp/eval/batch.h"
 
 #include "batch_outputs.h"
 #include "rotinterp/core/work_queue.h"
 #include "rotinterp/io/dataset.h"
+#include "rotinterp/io/folder_run.h"
 #include "rotinterp/io/atomic_file.h"
 #include "rotinterp/io/info.h"
 #include "rotinterp/io/read.h"
@@ -12,15 +14,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
-#include <deque>
 #include <functional>
-#include <future>
 #include <memory>
 #include <mutex>
 #include <optional>
-#include <thread>
 
 namespace rotinterp {
 
@@ -71,28 +69,15 @@ Status check_options(const EvalOptions& opt) {
   if (opt.clip.keep_every.empty()) return make_error("no keep-every values");
   for (int n : opt.clip.keep_every)
     if (n < 1) return make_error("keep-every values must be at least 1");
-  if (opt.shard_count < 1 || opt.shard_index < 1 || opt.shard_index > opt.shard_count)
-    return make_error("shard must be I/N with 1 ≤ I ≤ N");
   return Ok{};
-}
-
-// The clip files of this run: the inputs found, then this shard's part of them.
-Result<std::vector<std::string>> files_of_shard(const EvalOptions& opt) {
-  auto all = discover_inputs(opt.inputs);
-  if (!all) return all.failure();
-  if (all->empty()) {
-    std::string where;
-    for (const fs::path& p : opt.inputs) where += (where.empty() ? "" : ", ") + p.string();
-    return make_error(where + ": no clip files found (looked for every format assimp imports)");
-  }
-  return shard_of(*all, opt.shard_index, opt.shard_count);
 }
 
 // The takes of `file` that `animation` selects (EvalOptions::animation), each with
 // its clip id, in the order of their ids.
 Result<std::vector<std::pair<std::string, Clip>>> read_takes(const std::string& file, const std::string& animation,
-                                                             std::optional<double> unit) {
+                                                             std::optional<double> unit, unsigned threads) {
   ReadOptions ro;
+  ro.threads = threads;
   ro.animation = animation == "all" ? "" : animation;
   ro.unit = unit;
   auto info = inspect_clip(file, ro);
@@ -120,8 +105,8 @@ Result<std::vector<std::pair<std::string, Clip>>> read_takes(const std::string& 
 
 
 // Reads a file's takes and prepares their references, into its slot.
-void prepare_clip(const std::string& file, const EvalOptions& opt, ClipSlot& slot) {
-  auto takes = read_takes(file, opt.animation, opt.unit);
+void prepare_clip(const std::string& file, const EvalOptions& opt, unsigned threads, ClipSlot& slot) {
+  auto takes = read_takes(file, opt.animation, opt.unit, threads);
   if (!takes) {
     // A mesh found next to the clips is not an error. The reader's error kind
     // says so: no second look at a file that may crash its importer.
@@ -182,50 +167,44 @@ Outcome clip_outcome(ClipSlot& slot, std::vector<MethodOutcome> methods) {
   return o;
 }
 
-// Evaluates every file × method on the work queue — (clip, method) tasks in input
-// order, so a long clip is shared by the workers too — with at most `window` clips
-// in flight, and hands each clip's outcome to `take` in input order. Stops early
-// when `take` returns false.
+// Evaluates every file × method on the folder run's queue (io/folder_run.h) —
+// (clip, method) tasks in input order, so a long clip is shared by the workers too —
+// with at most `window` clips in flight, and hands each clip's outcome to `take` in
+// input order. Stops early when `take` returns false.
 void evaluate_in_order(const std::vector<std::string>& files, const EvalOptions& opt, std::size_t jobs,
                        const std::function<bool(std::size_t, Outcome)>& take) {
   const std::size_t nm = opt.clip.methods.size(), window = 2 * jobs;
-  std::atomic<bool> stop{false};
-  struct InFlight {
-    std::shared_ptr<ClipSlot> slot;
-    std::vector<std::future<MethodOutcome>> methods;
-  };
-  WorkQueue queue(static_cast<unsigned>(std::min(jobs, std::max<std::size_t>(1, files.size() * nm))));
-  std::deque<InFlight> in_flight;  // after the queue: its futures go first, then the queue finishes its jobs
-  std::size_t submitted = 0;
-  for (std::size_t i = 0; i < files.size(); ++i) {
-    for (; submitted < files.size() && submitted < i + window; ++submitted) {
-      InFlight c{std::make_shared<ClipSlot>(), {}};
-      for (std::size_t m = 0; m < nm; ++m)
-        c.methods.push_back(queue.submit([&, i = submitted, m, slot = c.slot] {
-          MethodOutcome out;
-          if (stop) return out;
-          std::call_once(slot->prepared, prepare_clip, std::cref(files[i]), std::cref(opt), std::ref(*slot));
-          for (const auto& take : slot->takes) {
-            auto rows = evaluate_method(*take, opt.clip.methods[m], opt.clip);
-            if (!rows) {
-              out.failure = EvalFailure{files[i], rows.error()};
-              break;
-            }
-            out.takes.push_back(std::move(*rows));
+  // A read inside a worker takes no threads of its own, unless it is the run's only file.
+  const unsigned read_threads = files.size() == 1 ? static_cast<unsigned>(jobs) : 1u;
+  std::vector<std::shared_ptr<ClipSlot>> slots(files.size());
+  for (auto& slot : slots) slot = std::make_shared<ClipSlot>();
+  std::vector<MethodOutcome> methods;
+  run_in_order<MethodOutcome>(
+      files.size() * nm, static_cast<unsigned>(jobs), window * nm,
+      [&](std::size_t k) {
+        const std::size_t i = k / nm, m = k % nm;
+        ClipSlot& slot = *slots[i];
+        MethodOutcome out;
+        std::call_once(slot.prepared, prepare_clip, std::cref(files[i]), std::cref(opt), read_threads, std::ref(slot));
+        for (const auto& t : slot.takes) {
+          auto rows = evaluate_method(*t, opt.clip.methods[m], opt.clip);
+          if (!rows) {
+            out.failure = EvalFailure{files[i], rows.error()};
+            break;
           }
-          return out;
-        }));
-      in_flight.push_back(std::move(c));
-    }
-    InFlight c = std::move(in_flight.front());
-    in_flight.pop_front();
-    std::vector<MethodOutcome> methods;
-    for (auto& f : c.methods) methods.push_back(f.get());
-    if (!take(i, clip_outcome(*c.slot, std::move(methods)))) {
-      stop = true;
-      return;
-    }
-  }
+          out.takes.push_back(std::move(*rows));
+        }
+        return out;
+      },
+      [&](std::size_t k, MethodOutcome out) {
+        methods.push_back(std::move(out));
+        if (methods.size() < nm) return true;
+        const std::size_t i = k / nm;
+        Outcome o = clip_outcome(*slots[i], std::move(methods));
+        methods.clear();
+        slots[i].reset();  // its clip is written: its memory goes
+        return take(i, std::move(o));
+      });
 }
 
 std::size_t worker_count(int jobs) {
@@ -238,7 +217,7 @@ Result<EvalReport> run_eval(const EvalOptions& opt) {
   const auto t0 = std::chrono::steady_clock::now();
   const std::string started = utc_now();
   if (Status s = check_options(opt); !s) return s.failure();
-  auto shard = files_of_shard(opt);
+  auto shard = find_run_inputs(opt.inputs, opt.shard_index, opt.shard_count);
   if (!shard) return shard.failure();
   const std::vector<std::string>& files = *shard;
   if (Status s = make_dir(opt.output_dir); !s) return s.failure();

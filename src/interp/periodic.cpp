@@ -67,4 +67,9 @@ Result<std::unique_ptr<Interpolator>> make_periodic_interpolator(std::string_vie
       std::make_unique<PeriodicInterpolator>(std::move(made.value()), track.times.front(), period));
 }
 
+Result<std::unique_ptr<Interpolator>> make_joint_curve(std::string_view method, const RotationTrack& keys,
+                                                       std::optional<double> period) {
+  return period ? make_periodic_interpolator(method, keys, *period) : make_interpolator(method, keys);
+}
+
 }  // namespace rotinterp

@@ -47,14 +47,8 @@ Status Reducer::select_translation(std::size_t j, bool removal, std::vector<doub
 }
 
 Result<std::vector<Quat>> Reducer::rebuild(std::size_t j, const std::vector<std::size_t>& keys, std::size_t lo, std::size_t hi) const {
-  if (looped(j)) {
-    auto curve = make_periodic_interpolator(o_.method, decimated_track(times(), value_[j], in_period(keys)), cycle_->period);
-    if (!curve) return curve.failure();
-    std::vector<Quat> q(hi - lo + 1);
-    (*curve)->evaluate(times().data() + lo, q.size(), q.data());
-    return q;
-  }
-  auto curve = make_interpolator(o_.method, decimated_track(times(), value_[j], keys));
+  auto curve = looped(j) ? make_joint_curve(o_.method, decimated_track(times(), value_[j], in_period(keys)), cycle_->period)
+                         : make_joint_curve(o_.method, decimated_track(times(), value_[j], keys), std::nullopt);
   if (!curve) return curve.failure();
   std::vector<Quat> q(hi - lo + 1);
   (*curve)->evaluate(times().data() + lo, q.size(), q.data());

@@ -1,7 +1,8 @@
 // The batch behind `rotinterp eval`: many clips, in parallel, into DIR/errors.csv,
 // DIR/summary.json and PNG plots; and the merge of shard outputs.
 //
-// `jobs` worker threads (core/work_queue.h) take (clip, method) pairs in input order — a clip is read
+// `jobs` worker threads of the folder run (io/folder_run.h run_in_order) take
+// (clip, method) pairs in input order — a clip is read
 // and its reference prepared once, by the first of its pairs — so a long clip is
 // shared by the workers too. Results are written in input order as they complete,
 // and no worker starts clip i until clip i − 2·jobs has been written, so memory is

@@ -6,6 +6,7 @@
 
 #include "rotinterp/core/result.h"
 #include "rotinterp/eval/error_row.h"
+#include "rotinterp/io/folder_run.h"  // FileFailure
 
 #include <cstddef>
 #include <filesystem>
@@ -136,11 +137,8 @@ std::string format_summary_table(const Summary& summary, TableFormat format = Ta
 // clips.csv: its header and one line per ClipResult (numbers as in errors.csv).
 std::string clips_csv(const Summary& summary);
 
-struct EvalFailure {
-  std::string file;
-  std::string message;  // one line, names the file
-  ErrorKind kind = ErrorKind::other;  // the reader's kind where it failed to read (no_animation: a static mesh)
-};
+// A file that failed to load or evaluate (io/folder_run.h: the kind kept).
+using EvalFailure = FileFailure;
 
 // A clip evaluated at fewer spacings than asked, or at none: too few frames
 // (skipped_spacings in evaluate_clip.h).

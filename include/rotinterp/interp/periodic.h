@@ -23,6 +23,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <string_view>
 
 namespace rotinterp {
@@ -35,5 +36,12 @@ inline constexpr std::size_t kPeriodicPadding = 64;
 // an unknown method, a period that is not finite or not longer than tₙ₋₁ − t₀.
 Result<std::unique_ptr<Interpolator>> make_periodic_interpolator(std::string_view method, const RotationTrack& track,
                                                                  double period);
+
+// A joint's curve through its keys: the periodic one when `period` is given (a joint
+// that closes its cycle), otherwise the method's own (make_interpolator). The one
+// place that choice is made: resample --loop (clip/resample_loop.h), the rebuild
+// eval and render measure (clip/rebuild.h) and reduce --loop all call it.
+Result<std::unique_ptr<Interpolator>> make_joint_curve(std::string_view method, const RotationTrack& keys,
+                                                       std::optional<double> period);
 
 }  // namespace rotinterp

@@ -1,0 +1,151 @@
+// rotinterp reduce PATH... -o OUTDIR: a whole dataset reduced file by file on a folder
+// run (io/folder_run.h), its layout mirrored under OUTDIR, a progress line and the manifest.
+#include "cmd_reduce.h"
+#include "common.h"
+#include "rotinterp/core/work_queue.h"
+#include "rotinterp/io/atomic_file.h"
+#include "rotinterp/io/dataset.h"
+#include "rotinterp/io/folder_run.h"
+
+#include <fmt/core.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <mutex>
+#include <string>
+#include <tuple>
+#include <vector>
+
+namespace rotinterp::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// The output of each input: resample's mirrored path (io/dataset.h mirror_outputs),
+// with the extension of `format`, or else the input's own where reduce writes it
+// (fbx, glb, gltf), else json. Error when two inputs would share an output.
+Result<std::vector<MirroredOutput>> reduce_outputs(const std::vector<std::string>& files,
+                                                   const std::vector<fs::path>& named, const std::string& out_dir,
+                                                   const std::string& format) {
+  auto plan = mirror_outputs(files, named, out_dir, "");
+  if (!plan) return plan.failure();
+  std::map<fs::path, std::string> taken;
+  for (MirroredOutput& m : *plan) {
+    const std::string own = lower_extension(m.input);
+    const bool kept = own == ".fbx" || own == ".glb" || own == ".gltf";
+    m.output.replace_extension(!format.empty() ? "." + format : kept ? own : ".json");
+    auto [at, fresh] = taken.emplace(m.output, m.input);
+    if (!fresh)
+      return make_error("'" + at->second + "' and '" + m.input + "' would both be written to '" + m.output.string() +
+                        "'; give --format or rename one");
+  }
+  return plan;
+}
+
+Status write_reduce_manifest(const std::string& path, const FileRunReport& report, const std::vector<ReduceFileRun>& runs,
+                             const std::string& method, bool shell) {
+  static const std::vector<std::string> columns = {"method",     "frames",     "joints",
+                                                   "source_keys", "kept_keys", "kept_percent",
+                                                   "max_rotation_error_deg", "max_shell_error_mm", "seconds", "message"};
+  return write_manifest(path, report.outcomes, columns, [&](std::size_t i) -> std::vector<std::string> {
+    const ReduceFileRun& r = runs[i];
+    const FileOutcome& o = report.outcomes[i];
+    const bool ok = o.status == FileStatus::ok;
+    return {method,
+            ok ? std::to_string(r.frames) : "",
+            ok ? std::to_string(r.joints) : "",
+            ok ? std::to_string(r.source_keys) : "",
+            ok ? std::to_string(r.kept_keys) : "",
+            ok ? fmt::format("{:.4f}", 100.0 * static_cast<double>(r.kept_keys) /
+                                           static_cast<double>(std::max<std::size_t>(1, r.source_keys)))
+               : "",
+            ok ? fmt::format("{:.6g}", r.max_rotation_deg) : "",
+            ok && shell ? fmt::format("{:.6g}", r.max_shell_mm) : "",
+            ok ? fmt::format("{:.3f}", r.seconds) : "",
+            o.message};
+  });
+}
+
+}  // namespace
+
+int run_reduce_folder(const ReduceArgs& a, const ReduceSetup& s) {
+  std::error_code ec;
+  const std::string& method = s.methods.front();
+  if (a.output.empty()) return fail_usage("several inputs or a folder need an output directory (-o DIR)");
+  if (fs::exists(a.output, ec) ? !fs::is_directory(a.output, ec) : reduce_output_problem(a.output, "slerp", false).empty())
+    return fail_usage("output '" + a.output + "' is a file name; several inputs or a folder need an output directory");
+  if (s.methods.size() > 1)
+    return fail_usage("-m: a folder run writes one method's keys; the table of several is for one file");
+  if (!a.report.empty()) return fail_usage("--report is for one file; a folder run writes --manifest FILE.csv");
+  if (!a.format.empty()) {
+    if (a.format != "json" && a.format != "glb" && a.format != "gltf" && a.format != "fbx")
+      return fail_usage("--format '" + a.format + "': unknown format (use json, glb, gltf or fbx)");
+    if (std::string problem = reduce_output_problem("x." + a.format, method, s.loop.has_value()); !problem.empty())
+      return fail_usage(problem);
+  }
+  std::vector<fs::path> named(a.inputs.begin(), a.inputs.end());
+  int shard_index = 1, shard_count = 1;
+  if (!a.shard.empty()) {
+    auto shard = parse_shard(a.shard);
+    if (!shard) return fail_usage(shard.error());
+    std::tie(shard_index, shard_count) = *shard;
+  }
+  auto files = find_run_inputs(named, shard_index, shard_count);
+  if (!files) return fail(files.error());
+  auto plan = reduce_outputs(*files, named, a.output, a.format);
+  if (!plan) return fail(plan.error());
+  std::vector<RunFile> run_files_of;
+  for (const MirroredOutput& m : *plan) {
+    protect_input(m.input);
+    run_files_of.push_back({m.input, m.output});
+  }
+
+  std::vector<ReduceFileRun> runs(plan->size());
+  std::atomic<std::size_t> done{0};
+  const bool show = !a.quiet && ::isatty(STDERR_FILENO);
+  std::mutex progress_mutex;
+  const auto started = std::chrono::steady_clock::now();
+  FileRunOptions run_options;
+  run_options.named = named;
+  run_options.threads = thread_count(static_cast<unsigned>(a.jobs));
+  run_options.skip_existing = a.skip_existing;
+  run_options.finished = [&](std::size_t) {
+    ++done;
+    if (!show) return;
+    std::lock_guard<std::mutex> lock(progress_mutex);
+    std::fprintf(stderr, "\r\033[Kreduce  %zu/%zu files", done.load(), plan->size());
+  };
+  run_options.on_failure = [&](const FileFailure& f) { print_file_failure(f, a.quiet); };
+  const FileRunReport report = run_files(run_files_of, run_options, [&](std::size_t i, unsigned threads) -> Status {
+    const MirroredOutput& m = (*plan)[i];
+    if (Status mine = check_not_an_input(m.output); !mine) return mine;
+    if (std::string problem = reduce_output_problem(m.output.string(), method, s.loop.has_value()); !problem.empty())
+      return make_error(m.input + ": " + problem);
+    ReduceFileOptions o;
+    o.output = m.output.string();
+    o.threads = threads;
+    o.show_progress = false;
+    o.print = false;
+    return reduce_one_file(m.input, a, s, o, runs[i]);
+  });
+  end_progress(a.quiet);
+  if (!a.manifest.empty())
+    if (Status st = write_reduce_manifest(a.manifest, report, runs, method, s.mm > 0.0); !st) return fail(st.error());
+  const std::size_t failed = report.count(FileStatus::failed), written = report.count(FileStatus::ok),
+                    existing = report.count(FileStatus::exists);
+  if (!a.quiet) {
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    fmt::print("{} file{} → {}: {} written, {} already there, {} failed, {} skipped (no animation); method {}, "
+               "{:.2f} s, {} worker{}\n",
+               runs.size(), runs.size() == 1 ? "" : "s", a.output, written, existing, failed,
+               report.count(FileStatus::no_animation), method, seconds, report.threads, report.threads == 1 ? "" : "s");
+  }
+  return failed > 0 ? kExitPartial : kExitOk;
+}
+
+}  // namespace rotinterp::cli

@@ -100,6 +100,22 @@ TEST_F(ReduceFolder, FormatWritesThatFormatForEveryFileAsItsOwnReduceDoes) {
   EXPECT_TRUE(fs::exists(out() / "walks" / "clip0.glb"));
 }
 
+TEST_F(ReduceFolder, WithoutFormatAGlbInputStaysGlbAndAMethodItCannotReplayFailsThatFileAlone) {
+  const std::vector<std::string> inputs = make_inputs(1);
+  const std::string glb = (dir_ / "in" / "walks" / "g.glb").string();
+  ASSERT_EQ(run_cli("resample " + inputs.front() + " -o " + glb + " -q").exit_code, 0);
+  auto r = run_cli("reduce " + in() + " -o " + out().string() + " -q");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(out() / "walks" / "g.glb"));
+  EXPECT_TRUE(fs::exists(out() / "walk.json"));
+  fs::remove_all(out());
+  r = run_cli("reduce " + in() + " -o " + out().string() + " -m squad -q");
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_NE(r.err.find("g.glb: a glTF viewer replays only"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_EQ(files_under(out()).size(), 2u);
+}
+
 TEST_F(ReduceFolder, SkipExistingLeavesAnExistingOutputUntouched) {
   make_inputs(2);
   fs::create_directories(out());

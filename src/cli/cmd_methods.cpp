@@ -1,6 +1,7 @@
-// rotinterp methods [--json]: the registered interpolators.
+// rotinterp methods [--json]: the registered interpolators, and `source`, the file's own curves.
 #include "common.h"
 #include "rotinterp/interp/interpolator.h"
+#include "rotinterp/io/fbx_source.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
@@ -11,6 +12,16 @@
 #include <memory>
 
 namespace rotinterp::cli {
+
+namespace {
+
+// `source` is no interpolator of keys (interp/interpolator.h): it replays the curves
+// an FBX file stores, so the properties of a curve through keys do not apply.
+constexpr const char* kSourceDescription =
+    "the file's own FBX curves as the DCC evaluates them (resample, render; eval --truth source); "
+    "needs an FBX file with rotation curves";
+
+}  // namespace
 
 void add_methods_command(CLI::App& app, int& exit_code) {
   auto* sub = app.add_subcommand("methods", "List the interpolation methods: continuity and coordinate invariance");
@@ -25,7 +36,15 @@ void add_methods_command(CLI::App& app, int& exit_code) {
                        {"continuity", "C" + std::to_string(m.continuity)},
                        {"coordinate_invariant", m.coordinate_invariant},
                        {"exact_on_constant_velocity", m.exact_on_constant_velocity},
-                       {"preserves_holds", m.preserves_holds}});
+                       {"preserves_holds", m.preserves_holds},
+                       {"replays_file_curves", false}});
+      out.push_back({{"name", kSourceMethodName},
+                     {"description", kSourceDescription},
+                     {"continuity", "as keyed"},
+                     {"coordinate_invariant", nullptr},
+                     {"exact_on_constant_velocity", nullptr},
+                     {"preserves_holds", nullptr},
+                     {"replays_file_curves", true}});
       fmt::print("{}\n", out.dump(2));
     } else {
       std::size_t width = 6;  // "method"
@@ -34,6 +53,7 @@ void add_methods_command(CLI::App& app, int& exit_code) {
       for (const MethodInfo& m : methods())
         fmt::print("{:<{}} C{:<9} {:<10} {}\n", m.name, width, m.continuity, m.coordinate_invariant ? "yes" : "no",
                    m.description);
+      fmt::print("{:<{}} {:<10} {:<10} {}\n", kSourceMethodName, width, "as keyed", "-", kSourceDescription);
     }
     exit_code = kExitOk;
   });

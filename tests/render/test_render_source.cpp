@@ -4,11 +4,13 @@
 #include "png_pixels.h"
 #include "support/run_cli.h"
 
+#include "rotinterp/interp/interpolator.h"
 #include "rotinterp/io/fbx_source.h"
 #include "rotinterp/render/comparison.h"
 #include "rotinterp/render/layout.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <filesystem>
@@ -77,10 +79,21 @@ TEST(RenderSource, AFileWithoutCurvesIsRefusedInOneLineNamingItAndNothingIsWritt
   EXPECT_FALSE(fs::exists(dir));
 }
 
-TEST(RenderSource, SourceIsNoMethodOfTheRegistryAndNeedsTheFilesMotion) {
+TEST(RenderSource, SourceIsListedApartFromTheRegistryAndNeedsTheFilesMotion) {
   const fs::path dir = test::fresh_dir("source_none");
-  auto list = test::run_cli("methods");
-  EXPECT_EQ(list.out.find("source"), std::string::npos);
+  // `methods` lists it after the registry's, as the file's curves, not a curve through keys.
+  EXPECT_FALSE(find_method(kSourceMethodName));
+  auto list = test::run_cli("methods --json");
+  ASSERT_EQ(list.exit_code, 0) << list.err;
+  const auto doc = nlohmann::json::parse(list.out);
+  ASSERT_EQ(doc.size(), methods().size() + 1);
+  for (std::size_t i = 0; i < methods().size(); ++i) {
+    EXPECT_EQ(doc[i]["name"], methods()[i].name);
+    EXPECT_EQ(doc[i]["replays_file_curves"], false);
+  }
+  EXPECT_EQ(doc.back()["name"], "source");
+  EXPECT_EQ(doc.back()["replays_file_curves"], true);
+  EXPECT_TRUE(doc.back()["preserves_holds"].is_null());
   ReadOptions options;
   auto read = read_source_clip(kRun, options);
   ASSERT_TRUE(read.ok()) << read.error();

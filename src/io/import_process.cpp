@@ -48,9 +48,10 @@ bool executable(const fs::path& p) {
 
 // An importer whose resident memory passes this after a reply is replaced before
 // the next file: assimp leaks on malformed files (.ci/lsan.supp) and the heap keeps
-// what a large import grew to. A fresh importer holds about 12 MB and the
-// test corpus's largest FBX leaves it near 40 MB, so files like those never
-// restart it, while an idle importer per worker thread stays bounded.
+// what a large import grew to. A fresh importer holds about 14 MB, and reading
+// the test corpus's FBX folder (3.5 MB at most) peaks at 45 MB: 256 MiB leaves
+// such files room several times over, while N workers' idle importers stay
+// below N × 256 MiB.
 constexpr std::size_t kRestartAboveResidentBytes = std::size_t{256} << 20;
 
 std::atomic<long> started_count{0};

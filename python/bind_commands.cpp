@@ -8,6 +8,7 @@
 #include "rotinterp/eval/error_row.h"
 #include "rotinterp/eval/evaluate_clip.h"
 #include "rotinterp/interp/interpolator.h"
+#include "rotinterp/io/fbx_source.h"
 #include "rotinterp/io/info.h"
 #include "rotinterp/io/read.h"
 #include "rotinterp/io/write.h"
@@ -228,6 +229,17 @@ py::object info(const std::string& path, const py::object& anim, const py::objec
   }
   if (!r) raise_read_error(r.failure(), path);
   return py::module_::import("json").attr("loads")(text);
+}
+
+Clip read_path_with_source_motion(const std::string& path, SourceMotion& motion) {
+  const ReadOptions options = read_options(py::none(), py::none());
+  Result<Clip> c = make_error("");
+  {
+    py::gil_scoped_release release;
+    c = read_clip_with_source_motion(path, options, motion);
+  }
+  if (!c) raise_read_error(c.failure(), path);
+  return std::move(*c);
 }
 
 Clip clip_or_path(const py::object& input) {

@@ -27,14 +27,20 @@ std::vector<std::string> render(const py::object& input, const std::optional<std
                                 const std::optional<std::string>& backend) {
   render::ComparisonOptions o;
   if (!out_dir && !video) value_error("render: give out_dir (frame PNGs), video, or both");
+  bool source = false;  // "source": the file's own curves, a panel beside the methods
   if (method_names_in) {
-    o.methods = *method_names_in;
+    for (const std::string& m : *method_names_in) {
+      source = source || is_source_method(m);
+      o.methods.push_back(is_source_method(m) ? std::string(kSourceMethodName) : m);
+    }
   } else {
     for (const MethodInfo& m : methods()) o.methods.push_back(m.name);
   }
   if (o.methods.empty()) value_error("methods: no method given (valid: " + method_names() + ")");
   for (const std::string& m : o.methods)
-    if (!find_method(m)) value_error("methods: " + unknown_method_message(m));
+    if (!is_source_method(m) && !find_method(m)) value_error("methods: " + unknown_method_message(m));
+  if (source && py::isinstance<Clip>(input))
+    value_error("methods: 'source' replays a file's own curves: give the FBX file's path, not a Clip");
   if (keep_every < 1) value_error("keep_every must be a whole number >= 1, got " + std::to_string(keep_every));
   o.keep_every = static_cast<std::size_t>(keep_every);
   if (frames) o.frames = checked(render::parse_frame_range(*frames));
@@ -67,7 +73,8 @@ std::vector<std::string> render(const py::object& input, const std::optional<std
     o.video = *video;
     o.video_fps = video_fps;
   }
-  const Clip clip = clip_or_path(input);
+  const Clip clip = source ? read_path_with_source_motion(py::str(input).cast<std::string>(), o.source)
+                          : clip_or_path(input);
   Result<render::ComparisonResult> r = make_error("");
   {
     py::gil_scoped_release release;

@@ -9,6 +9,7 @@
 #pragma once
 
 #include "rotinterp/clip/clip.h"
+#include "rotinterp/io/fbx_source.h"
 #include "rotinterp/core/result.h"
 #include "rotinterp/core/rotation.h"
 
@@ -132,6 +133,9 @@ inline RotationTrack track_of(const double* times, const double* quats, std::siz
 // (None, a name or an index) and its unit (None: the file's or inferred; "cm", …, or
 // metres per unit as a number); raises OSError subclasses or ValueError.
 Clip read_path(const std::string& path, const py::object& anim, const py::object& unit = py::none());
+// read_path's reading of an FBX file, and its own motion (its curves) into `motion`:
+// render(methods=["source", ...]).
+Clip read_path_with_source_motion(const std::string& path, SourceMotion& motion);
 // A clip given as a rotinterp.Clip or read from a path.
 Clip clip_or_path(const py::object& input);
 

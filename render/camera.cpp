@@ -1,3 +1,4 @@
+// camera: the shared camera framed from the bounds of all panels, and the trail inset's.
 #include "rotinterp/render/camera.h"
 
 #include <Eigen/Eigenvalues>

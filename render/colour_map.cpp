@@ -1,3 +1,4 @@
+// colour_map: viridis and the error scale of error-coloured poses.
 #include "rotinterp/render/colour_map.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// context: choosing an offscreen OpenGL context backend (EGL or OSMesa).
 #include "rotinterp/render/context.h"
 
 #include "context_backends.h"

@@ -1,3 +1,4 @@
+// font: the Latin-1 glyph atlas and the quads that draw a string.
 #include "font.h"
 
 #include <cmath>

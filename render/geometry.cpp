@@ -1,3 +1,4 @@
+// geometry: the unit meshes, their placed instances and the line lists, on the CPU.
 #include "rotinterp/render/geometry.h"
 
 #include "rotinterp/render/axes.h"

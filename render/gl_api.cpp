@@ -1,3 +1,4 @@
+// gl_api: loading the OpenGL 3.3 entry points the renderer uses.
 #include "gl_api.h"
 
 #include <string>

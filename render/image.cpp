@@ -1,3 +1,4 @@
+// image: the RGB image and its atomic PNG write.
 #include "rotinterp/render/image.h"
 
 #include "rotinterp/io/atomic_file.h"

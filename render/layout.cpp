@@ -1,3 +1,4 @@
+// layout: the panel grid of an image and the parts of one panel.
 #include "rotinterp/render/layout.h"
 
 #include <algorithm>

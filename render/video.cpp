@@ -1,3 +1,4 @@
+// video: drawn frames piped raw to ffmpeg, the output committed atomically.
 #include "rotinterp/render/video.h"
 
 #include "rotinterp/io/atomic_file.h"

@@ -116,7 +116,9 @@ def render(input, out_dir=None, methods=None, keep_every=10, frames=None, size="
     the same options): the clip (a Clip or a path) rebuilt by each method from every
     ``keep_every``-th frame, side by side. Options as the command's, in its forms:
     ``frames`` "START:END:STEP", ``size`` "WxH", ``colour`` "error" or "method", ``camera``
-    "fixed" or "follow", ``backend`` "osmesa" or "egl". Returns the paths written (frames,
+    "fixed" or "follow", ``backend`` "osmesa" or "egl". ``methods`` may name "source" when
+    ``input`` is the path of an FBX file with curves: a panel of the file's own motion, as
+    ``render -m source`` draws it. Returns the paths written (frames,
     then the sheet, then the video). Raises RuntimeError where the module was built
     without the renderer. Releases the GIL."""
     if not hasattr(_rotinterp, "render"):

@@ -105,21 +105,6 @@ struct RenderArgs {
   std::string loop = "off";  // --loop as written
 };
 
-// The clip, and with `source` (-m source) the file's own motion into `motion`
-// (io/fbx_source.h). Errors (one line naming the file): not FBX, no curves, and
-// read_clip's.
-Result<Clip> read_render_clip(const std::string& input, const ReadOptions& read_options, bool source,
-                              SourceMotion& motion) {
-  if (!source) return read_clip(input, read_options);
-  auto read = read_source_clip(input, read_options);
-  if (!read) return read.failure();
-  auto file = std::make_shared<const SourceClip>(std::move(*read));
-  auto own = source_motion(file, input);
-  if (!own) return own.failure();
-  motion = std::move(*own);
-  return file->clip;
-}
-
 int run_render(const RenderArgs& a) {
   render::ComparisonOptions options;
   if (a.out_dir.empty() && a.video.empty()) return fail_usage("render: give -o DIR (frame PNGs), --video FILE, or both");
@@ -207,7 +192,7 @@ int run_render(const RenderArgs& a) {
   if (!unit) return fail_usage(unit.error());
   read_options.unit = *unit;
   read_options.on_warning = warn;
-  auto clip = read_render_clip(a.input, read_options, source, options.source);
+  auto clip = source ? read_clip_with_source_motion(a.input, read_options, options.source) : read_clip(a.input, read_options);
   if (!clip) return fail(clip.error());
   if (clip->skeleton.joints.size() > 1 && degenerate(*clip))
     warn(fmt::format("{}: all {} joints lie within 1e-6 units of one point; the frames will show {}", a.input,

@@ -1,3 +1,4 @@
+// foot_skating: finding foot contacts and measuring how far a contact foot slides.
 #include "rotinterp/eval/foot_skating.h"
 
 #include <algorithm>

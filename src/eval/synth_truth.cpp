@@ -1,3 +1,4 @@
+// synth_truth: eval's analytic reference for clips written by `rotinterp synth`.
 #include "rotinterp/eval/synth_truth.h"
 
 #include "rotinterp/clip/synth.h"

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cctype>
 #include <map>
+#include <memory>
 
 namespace rotinterp {
 
@@ -93,6 +94,17 @@ Result<SourceMotion> source_motion(std::shared_ptr<const SourceClip> source, con
     return c.model ? fbx_local_rotation(source->curves.takes.at(source->take), c, fbx_source_ticks(*source, t))
                    : sample_rotation(source->clip.rotations[j], t);
   });
+}
+
+Result<Clip> read_clip_with_source_motion(const std::filesystem::path& path, const ReadOptions& options,
+                                          SourceMotion& motion) {
+  auto read = read_source_clip(path, options);
+  if (!read) return read.failure();
+  auto file = std::make_shared<const SourceClip>(std::move(*read));
+  auto own = source_motion(file, path.string());
+  if (!own) return own.failure();
+  motion = std::move(*own);
+  return file->clip;
 }
 
 }  // namespace rotinterp

@@ -108,6 +108,30 @@ def test_render_refuses_options_as_the_command_does(tmp_path):
         rotinterp.render(clip, tmp_path, methods=["nope"])
 
 
+def test_render_draws_the_files_own_curves_as_the_command_does(tmp_path):
+    if not hasattr(rotinterp._rotinterp, "render"):
+        pytest.skip("built without the renderer")
+    run = DATA / "fbx" / "digitalrune_Marine_Run.fbx"
+    cli("render", run, "-o", tmp_path / "cli", "-q", "-m", "slerp,source", "--frames", "4:20:8", "--size", "192x108")
+    files = rotinterp.render(run, tmp_path / "py", methods=["slerp", "source"], frames="4:20:8", size="192x108")
+    names = sorted(p.name for p in (tmp_path / "cli").iterdir())
+    assert sorted(Path(f).name for f in files) == names and len(names) == 3
+    for name in names:
+        assert (tmp_path / "py" / name).read_bytes() == (tmp_path / "cli" / name).read_bytes(), name
+    # The source's panel is not slerp's: without it the frames differ.
+    rotinterp.render(run, tmp_path / "slerp2", methods=["slerp", "slerp"], frames="4:20:8", size="192x108")
+    assert (tmp_path / "slerp2" / names[0]).read_bytes() != (tmp_path / "py" / names[0]).read_bytes()
+
+
+def test_render_source_needs_a_file_with_curves(tmp_path):
+    if not hasattr(rotinterp._rotinterp, "render"):
+        pytest.skip("built without the renderer")
+    with pytest.raises(ValueError, match="give the FBX file's path"):
+        rotinterp.render(rotinterp.read_clip(SAMPLES / "walk.bvh"), tmp_path, methods=["source"])
+    with pytest.raises(ValueError, match="walk.bvh"):
+        rotinterp.render(SAMPLES / "walk.bvh", tmp_path, methods=["slerp", "source"])
+
+
 def largest_pause_of_another_thread(call):
     """Run call() in a thread while this one keeps stamping the clock; the longest gap
     between stamps: the whole call if it held the GIL, a scheduling slice if not."""

@@ -65,6 +65,11 @@ double fbx_source_ticks(const SourceClip& source, double t);
 using SourceMotion = std::function<Quat(std::size_t joint, double t)>;
 Result<SourceMotion> source_motion(std::shared_ptr<const SourceClip> source, const std::string& label);
 
+// The clip of `path` as read_source_clip() reads it, and its own motion (source_motion)
+// into `motion`: what render -m source draws beside the methods. Errors as theirs.
+Result<Clip> read_clip_with_source_motion(const std::filesystem::path& path, const ReadOptions& options,
+                                          SourceMotion& motion);
+
 // Replaces every rotation key of each joint of `clip` whose node has Lcl Rotation
 // curves in `source`'s take with the curves' value at the key's time (clip time t
 // is FBX time take start + t, assimp's re-basing) and makes the tracks

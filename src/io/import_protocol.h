@@ -33,7 +33,7 @@ std::string encode_request(const std::filesystem::path& path, const ReadOptions&
 std::optional<Request> decode_request(std::string_view body);
 
 // A reply: these 8 bytes, the payload's length (uint64), the payload
-// (wire::encode's bytes). Anything else on the pipe is not a reply.
+// (wire::encode's bytes). Anything else on the socket is not a reply.
 constexpr std::string_view kReplyMagic = "rimpREPL";
 constexpr std::size_t kReplyHeader = 16;
 

@@ -91,9 +91,10 @@ double eval_all(const std::vector<fs::path>& inputs, int jobs, const fs::path& o
 // CPU seconds of `method`'s curves alone over `refs`: for every clip, keep-every
 // 2, 4, 8, 16 and joint, built from the keys, evaluated at every frame and at the
 // key-jump stencils — what eval cannot skip whatever it measures; no reading, no
-// metrics. `stencils`: the part spent on the key-jump stencils.
+// metrics. `stencils`: the part spent on the key-jump stencils. Nothing is read:
+// this process's own CPU.
 double curves_alone(const std::vector<rotinterp::ClipReference>& refs, const std::string& method, double& stencils) {
-  const double c0 = cpu_seconds();
+  const double c0 = own_cpu_seconds();
   stencils = 0.0;
   std::vector<rotinterp::Quat> out, at_keys;
   for (const rotinterp::ClipReference& ref : refs)
@@ -106,13 +107,13 @@ double curves_alone(const std::vector<rotinterp::ClipReference>& refs, const std
         out.resize(ref.frames.size());  // no subframes here: the samples are the frames
         (*curve)->evaluate(ref.frames.data(), out.size(), out.data());
         // The stencils' centres are among the frames, as in evaluate_method.
-        const double s0 = cpu_seconds();
+        const double s0 = own_cpu_seconds();
         at_keys.resize(kf.size());
         for (std::size_t i = 0; i < kf.size(); ++i) at_keys[i] = out[kf[i]];
         (void)rotinterp::key_jumps(**curve, track.times, at_keys.data());
-        stencils += cpu_seconds() - s0;
+        stencils += own_cpu_seconds() - s0;
       }
-  return cpu_seconds() - c0;
+  return own_cpu_seconds() - c0;
 }
 
 }  // namespace

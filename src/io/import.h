@@ -1,12 +1,15 @@
-// The one import layer (private to src/io): every assimp import runs in the
+// The one import layer (private to src/io): every assimp import runs in an
 // importer process, rotinterp-import (src/importer/main.cpp), started with
 // posix_spawn — no fork of this process, so it is safe with threads and under the
-// sanitizers alike — and sends its whole reading back through a pipe in the wire
-// format of clip_wire.h. The parent never calls assimp's importers.
+// sanitizers alike. Each thread keeps its importer across files: a request in, the
+// whole reading back in the wire format of clip_wire.h (import_protocol.h frames
+// both). The parent never calls assimp's importers.
 #pragma once
 
 #include "clip_wire.h"
 #include "rotinterp/io/read.h"
+
+#include <sys/types.h>
 
 #include <filesystem>
 
@@ -17,14 +20,24 @@ namespace rotinterp::detail {
 // Warnings are kept in the outcome, not passed to options.on_warning.
 wire::ReadOutcome read_in_this_process(const std::filesystem::path& path, const ReadOptions& options);
 
-// read_in_this_process() run by the importer (find_importer()), with
-// options.animation, fold_fbx_helpers and cross_check_with_assimp. An error (of
-// kind crashed, timed_out, too_large, or other when the importer cannot be
-// started) when no whole reading came back; the importer is reaped either way.
+// read_in_this_process() run by the calling thread's importer (find_importer()),
+// with options.animation, fold_fbx_helpers, cross_check_with_assimp, read_curves
+// and unit. The importer is started on the thread's first read and kept for the
+// next; it is replaced after a crash, a timeout, a reply past max_import_bytes,
+// or once its resident memory passes a bound. An error (of kind crashed,
+// timed_out, too_large, or other when the importer cannot be started) when no
+// whole reading came back. A crash in an importer that had read other files is
+// retried once in a fresh one, so that only the file that crashes it fails.
 Result<wire::ReadOutcome> read_in_importer(const std::filesystem::path& path, const ReadOptions& options);
 
-// main() of the importer executable: `rotinterp-import PROTOCOL PARENT_PID PATH
-// ANIMATION FOLD CROSS_CHECK CURVES UNIT` writes the outcome to its standard output.
+// main() of the importer executable: `rotinterp-import VERSION PARENT_PID` answers
+// requests on its standard input with replies on its standard output until the
+// input ends.
 int importer_main(int argc, char** argv);
+
+// For tests: how many importers this process has started, and the calling
+// thread's running importer (-1 when it has none).
+long importers_started();
+pid_t importer_of_this_thread();
 
 }  // namespace rotinterp::detail

@@ -75,9 +75,11 @@ struct ReadOptions {
   // its reading back; this process never calls assimp's importers. assimp 5.2.5
   // aborts or corrupts memory on some malformed files (a failed internal assertion,
   // a segfault on a curve without keys, a double free in ~aiScene): such a file is
-  // one error (ErrorKind::crashed) instead of the end of a batch. The importer dies
-  // with this process, and is killed when it runs longer than this (the file is
-  // refused, ErrorKind::timed_out)…
+  // one error (ErrorKind::crashed) instead of the end of a batch. Each reading
+  // thread keeps one importer for file after file, replaced after a crash, a limit
+  // below, or past 256 MiB resident; it ends with its thread (killed and reaped)
+  // and with this process. It is killed when one file takes longer than this (the
+  // file is refused, ErrorKind::timed_out)…
   double import_timeout_seconds = 600.0;
   // … or when its reply (the clip, 40 bytes a key) passes this many bytes
   // (ErrorKind::too_large).

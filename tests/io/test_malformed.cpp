@@ -131,11 +131,12 @@ TEST(MalformedPaths, MissingFileAndDirectoryFailWithOneLine) {
   const test::CliResult missing = test::run_cli("info '" + (dir / "nope.bvh").string() + "'");
   EXPECT_EQ(missing.exit_code, 1);
   EXPECT_EQ(missing.err, "rotinterp: " + (dir / "nope.bvh").string() + ": no such file\n");
-  // reduce reads one clip (`info` and `resample` take a folder as a dataset: --summary, -o DIR).
+  // render reads one clip (info, resample and reduce take a folder as a dataset: --summary, -o DIR).
   const test::CliResult directory =
-      test::run_cli("reduce '" + dir.path().string() + "' -o '" + (dir / "r.json").string() + "'");
+      test::run_cli("render '" + dir.path().string() + "' -o '" + (dir / "frames").string() + "'");
   EXPECT_EQ(directory.exit_code, 1);
   EXPECT_EQ(directory.err, "rotinterp: " + dir.path().string() + ": is a directory, not a clip file\n");
+  EXPECT_FALSE(std::filesystem::exists(dir / "frames"));
 }
 
 TEST(MalformedPaths, UnknownAnimationIsAClearError) {

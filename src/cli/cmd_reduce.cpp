@@ -165,17 +165,10 @@ void add_reduce_command(CLI::App& app, int& exit_code) {
   add_anim_option(*sub, a->anim, false);
   add_quiet_option(*sub, a->quiet);
   add_jobs_option(*sub, a->jobs, "Folder runs: files reduced at once");
-  sub->add_option("--shard", a->shard,
-                  "Folder runs: only shard I of N (I/N) of the sorted inputs, for a cluster (default: all)");
-  sub->add_flag("--skip-existing", a->skip_existing,
-                "Folder runs: leave outputs that exist (an output is only ever complete), to resume a run "
-                "(default: replace them)");
-  sub->add_option("--format", a->format,
-                  "Folder runs: output format json, glb, gltf or fbx (default: the input's own where reduce writes "
-                  "it — fbx, glb, gltf — else json)");
-  sub->add_option("--manifest", a->manifest,
-                  "Folder runs: write a CSV row per file (frames, joints, keys kept of the source's, largest errors, "
-                  "method, time, status); default none");
+  add_folder_run_options(*sub, a->shard, a->skip_existing, a->format,
+                         "json, glb, gltf or fbx (default: the input's own where reduce writes it — fbx, glb, gltf "
+                         "— else json)",
+                         a->manifest, "frames, joints, keys kept of the source's, largest errors, method, time, status");
   sub->callback([a, &exit_code] { exit_code = run_reduce(*a); });
 }
 

@@ -284,16 +284,9 @@ void add_resample_command(CLI::App& app, int& exit_code) {
   sub->add_flag("--fbx-ascii", a->fbx_ascii, "FBX output as ASCII FBX 7.4 (default: binary FBX 7.4, which Blender needs)");
   add_quiet_option(*sub, a->quiet);
   add_jobs_option(*sub, a->jobs, "Folder runs: files resampled at once");
-  sub->add_option("--shard", a->shard,
-                  "Folder runs: only shard I of N (I/N) of the sorted inputs, for a cluster (default: all)");
-  sub->add_flag("--skip-existing", a->skip_existing,
-                "Folder runs: leave outputs that exist (an output is only ever complete), to resume a run "
-                "(default: replace them)");
-  sub->add_option("--format", a->format,
-                  "Folder runs: output format bvh, fbx, glb, gltf or dae (default: the input's own, else bvh)");
-  sub->add_option("--manifest", a->manifest,
-                  "Folder runs: write a CSV row per file (rate as written and as read, frames, duration, joints, "
-                  "output frames, method, time, status); default none");
+  add_folder_run_options(*sub, a->shard, a->skip_existing, a->format,
+                         "bvh, fbx, glb, gltf or dae (default: the input's own, else bvh)", a->manifest,
+                         "rate as written and as read, frames, duration, joints, output frames, method, time, status");
   sub->callback([a, &exit_code] { exit_code = run_resample(*a); });
 }
 

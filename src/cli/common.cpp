@@ -193,6 +193,16 @@ CLI::Option* add_quiet_option(CLI::App& sub, bool& quiet) {
   return sub.add_flag("-q,--quiet", quiet, "No progress and no summary (errors and warnings still print)");
 }
 
+void add_folder_run_options(CLI::App& sub, std::string& shard, bool& skip_existing, std::string& format,
+                            const std::string& formats, std::string& manifest, const std::string& manifest_row) {
+  sub.add_option("--shard", shard, "Folder runs: only shard I of N (I/N) of the sorted inputs, for a cluster (default: all)");
+  sub.add_flag("--skip-existing", skip_existing,
+               "Folder runs: leave outputs that exist (an output is only ever complete), to resume a run "
+               "(default: replace them)");
+  sub.add_option("--format", format, "Folder runs: output format " + formats);
+  sub.add_option("--manifest", manifest, "Folder runs: write a CSV row per file (" + manifest_row + "); default none");
+}
+
 CLI::Option* add_json_option(CLI::App& sub, bool& json) {
   return sub.add_flag("--json", json, "Print JSON on stdout instead of text");
 }

@@ -111,6 +111,11 @@ CLI::Option* add_anim_option(CLI::App& sub, std::string& anim, bool all_takes);
 CLI::Option* add_jobs_option(CLI::App& sub, int& jobs, const std::string& what);
 // -q,--quiet: no progress and no summary; errors and warnings still print.
 CLI::Option* add_quiet_option(CLI::App& sub, bool& quiet);
+// A folder run's --shard I/N, --skip-existing, --format (`formats`: the formats and
+// the default) and --manifest (`manifest_row`: what a row holds), as resample and
+// reduce take them.
+void add_folder_run_options(CLI::App& sub, std::string& shard, bool& skip_existing, std::string& format,
+                            const std::string& formats, std::string& manifest, const std::string& manifest_row);
 // --json: JSON on stdout instead of text.
 CLI::Option* add_json_option(CLI::App& sub, bool& json);
 

@@ -18,11 +18,11 @@ void PosePass::add(const ClipReference& R, const Block& block, std::size_t m0, s
   for (std::size_t c0 = 0; c0 < n; c0 += kPoseChunk) {
     const std::size_t cn = std::min(kPoseChunk, n - c0);
     // Which samples reproduce the reference bit for bit (at keys): their errors are 0.
-    std::fill(equal_.begin(), equal_.begin() + static_cast<std::ptrdiff_t>(cn), 1);
-    for (std::size_t j = 0; j < nj; ++j) {
-      const Quat* t = test[j] + c0;
-      const Quat* r = block.rotation(R, j) + c0;
-      for (std::size_t m = 0; m < cn; ++m) equal_[m] &= static_cast<unsigned char>(t[m].coeffs() == r[m].coeffs());
+    // Sample by sample, stopping at the first joint that differs (most do at once).
+    for (std::size_t m = 0; m < cn; ++m) {
+      bool equal = true;
+      for (std::size_t j = 0; j < nj && equal; ++j) equal = test[j][c0 + m].coeffs() == block.rotation(R, j)[c0 + m].coeffs();
+      equal_[m] = equal;
     }
     std::size_t nd = 0;
     for (std::size_t m = 0; m < cn; ++m) {

@@ -201,6 +201,7 @@ class Reducer {
     bool done = false;                      // its rotation selected once
     std::vector<std::size_t> rkeys, tkeys;  // the keys its curves were built through
     std::vector<Quat> values;               // the rotation keys' values then
+    std::shared_ptr<const Interpolator> curve;  // the rotation curve through them
     std::vector<double> error;              // [frame] the selection's rotation error
     std::vector<double> angle, shell;       // [frame] the result's local angle and shell error
     std::vector<char> floor;                // [frame] over budget with its own rotation exact
@@ -211,6 +212,9 @@ class Reducer {
   // Frames where j's rotation curve through its keys now can differ from the measured
   // one's, and those whose inputs moved.
   std::vector<char> to_measure(std::size_t j) const;
+  // j's rotation curve through its keys: the measured one while they are unchanged
+  // (a global spline's whole-track build is the costly part of a later pass).
+  Result<std::shared_ptr<const Interpolator>> current_curve(std::size_t j) const;
   // j's translation selected again if its keys changed (or never selected); the frames
   // where its rebuilt translation moved marked.
   Status update_translation(std::size_t j, bool first, std::vector<double>& e);

@@ -49,6 +49,17 @@ std::vector<char> Reducer::to_measure(std::size_t j) const {
   return mask;
 }
 
+Result<std::shared_ptr<const Interpolator>> Reducer::current_curve(std::size_t j) const {
+  const Measured& m = measured_[j];
+  bool same = m.curve && m.rkeys == rkeys_[j];
+  for (std::size_t i = 0; same && i < m.rkeys.size(); ++i)
+    same = m.values[i].coeffs() == value_[j][key_frame(j, m.rkeys[i])].coeffs();
+  if (same) return m.curve;
+  auto c = curve(j, rkeys_[j]);
+  if (!c) return c.failure();
+  return std::shared_ptr<const Interpolator>(std::move(*c));
+}
+
 Status Reducer::update_translation(std::size_t j, bool first, std::vector<double>& e) {
   Measured& m = measured_[j];
   // The same keys select and rebuild the same translation: nothing to do.
@@ -68,7 +79,7 @@ Status Reducer::settle_rotation(std::size_t j, const std::vector<char>& mask) {
     m.angle.assign(n_, 0.0);
     m.shell.assign(n_, 0.0);
   }
-  auto c = curve(j, rkeys_[j]);
+  auto c = current_curve(j);
   if (!c) return c.failure();
   const std::vector<Quat>& src = dense_.rotation[j];
   std::vector<Quat> q;
@@ -91,6 +102,7 @@ Status Reducer::settle_rotation(std::size_t j, const std::vector<char>& mask) {
   if (!s) return s;
   out_[j].max_rotation_error = *std::max_element(m.angle.begin(), m.angle.end());
   out_[j].max_shell_error = *std::max_element(m.shell.begin(), m.shell.end());
+  m.curve = std::move(*c);
   m.rkeys = rkeys_[j];
   m.values.clear();
   for (std::size_t k : m.rkeys) m.values.push_back(value_[j][key_frame(j, k)]);

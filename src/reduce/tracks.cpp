@@ -132,7 +132,7 @@ Status Reducer::select_rotation(std::size_t j, bool removal, std::vector<double>
   // again only where the curve or its inputs moved since.
   const bool again = shell_ && measured_[j].done, known = again && !looped(j) && n_ >= 3;
   if (known) {
-    auto c = curve(j, rkeys_[j]);
+    auto c = current_curve(j);
     if (!c) return c.failure();
     e = measured_[j].error;
     std::vector<Quat> q;

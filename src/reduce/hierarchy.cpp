@@ -95,10 +95,12 @@ std::vector<std::size_t> Reducer::floor_frames(std::size_t j) {
   std::vector<std::size_t> out;
   if (!(budget_[j].shell > 0.0)) return out;
   Measured& m = measured_[j];
-  const bool all = m.floor.empty();
-  if (all) m.floor.assign(n_, 0);
+  const bool all = m.floor.empty() || measure_everything_;
+  if (m.floor.empty()) m.floor.assign(n_, 0);
+  std::size_t measured = 0;
   for (std::size_t f = 0; f < n_; ++f) {
     if (all || m.moved[f]) {
+      ++measured;
       Quat r;
       Vec3 p;
       test_world(j, f, dense_.rotation[j][f], r, p);
@@ -107,6 +109,7 @@ std::vector<std::size_t> Reducer::floor_frames(std::size_t j) {
     }
     if (m.floor[f]) out.push_back(f);
   }
+  frames_measured_ += measured;
   return out;
 }
 

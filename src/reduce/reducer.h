@@ -6,6 +6,7 @@
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/reduce/reduce.h"
 
+#include <atomic>
 #include <cstddef>
 #include <functional>
 #include <memory>
@@ -120,6 +121,11 @@ class Reducer {
   // `cycle`: the clip's cycle check (reduce --loop), whose closing joints are looped.
   Reducer(const Clip& clip, const ReduceOptions& o, std::vector<ReduceBudget> budgets, std::optional<LoopCheck> cycle);
   Result<ReduceResult> run();
+  // For the tests: measure every frame again in every pass, and after every new key
+  // (the selection without remeasure.cpp and select_local.cpp: the same result); the
+  // frames at which a rotation's error, floor or final pose was measured.
+  void measure_everything() { measure_everything_ = true; }
+  std::size_t frames_measured() const { return frames_measured_; }
 
  private:
   // A cycle's frames: keys lie in [0, frames) — the period, the seam's image (closed: the
@@ -237,6 +243,8 @@ class Reducer {
   std::vector<std::vector<Quat>> ref_rot_, test_rot_;
   std::vector<std::vector<Vec3>> ref_pos_, test_pos_;
   std::vector<Measured> measured_;  // [joint], hierarchical runs
+  bool measure_everything_ = false;
+  std::atomic<std::size_t> frames_measured_{0};
   std::optional<Cycle> cycle_;
   Status setup_ = Ok{};  // an error found building the cycle, returned by run()
 };

@@ -22,9 +22,12 @@ void mark_span(const std::vector<std::size_t>& keys, std::size_t c, std::size_t 
 
 }  // namespace
 
-int Reducer::support(std::size_t j) const { return looped(j) ? 0 : find_method(o_.method)->support; }
+int Reducer::support(std::size_t j) const {
+  return looped(j) || measure_everything_ ? 0 : find_method(o_.method)->support;
+}
 
 std::vector<char> Reducer::to_measure(std::size_t j) const {
+  if (measure_everything_) return std::vector<char>(n_, 1);
   const Measured& m = measured_[j];
   std::vector<char> mask = m.moved;
   const std::vector<std::size_t>& now = rkeys_[j];
@@ -86,6 +89,7 @@ Status Reducer::settle_rotation(std::size_t j, const std::vector<char>& mask) {
   const Status s = for_each_run(mask, [&](std::size_t lo, std::size_t hi) -> Status {
     q.resize(hi - lo + 1);
     (*c)->evaluate(times().data() + lo, q.size(), q.data());
+    frames_measured_ += hi - lo + 1;
     for (std::size_t f = lo; f <= hi; ++f) {
       m.angle[f] = angular_distance(src[f], q[f - lo]);
       Quat r;

@@ -88,6 +88,7 @@ Status Reducer::select_rotation(std::size_t j, bool removal, std::vector<double>
     auto q = rebuild(j, keys, lo, hi);
     if (!q) return q.failure();
     for (std::size_t f = lo; f <= hi; ++f) out[f - lo] = frame_error(f, (*q)[f - lo]);
+    frames_measured_ += hi - lo + 1;
     return Ok{};
   };
   // The residuals behind frame_error, each block normalized by its budget (the
@@ -140,6 +141,7 @@ Status Reducer::select_rotation(std::size_t j, bool removal, std::vector<double>
       q.resize(hi - lo + 1);
       (*c)->evaluate(times().data() + lo, q.size(), q.data());
       for (std::size_t f = lo; f <= hi; ++f) e[f] = frame_error(f, q[f - lo]);
+      frames_measured_ += hi - lo + 1;
       return Ok{};
     });
     if (!s) return s;

@@ -1,6 +1,6 @@
 // bench_eval: the cost of `rotinterp eval` against assimp importing the same files.
 //
-//   bench_eval [--repeat R] [PATH...]      (default PATH: the shared real clips)
+//   bench_eval [--repeat R] [--metrics [--method M]] [PATH...]      (default PATH: the shared real clips)
 //
 // In one run, for the same files: (1) assimp alone — Assimp::Importer::ReadFile
 // with the flags read_clip uses, one file after another; (2) the whole evaluation
@@ -11,8 +11,11 @@
 // read_clip alone and each method alone beyond it (CPU seconds), and each method's
 // own ratio: read_clip plus that method, all four spacings and every metric,
 // against the import (goal ≤ 1.5, ≤ 3 for bf);
-// last, the floor: read_clip plus the seed methods' curves alone (built from the
-// keys, evaluated at every frame and key-jump stencil, no metric), against the import.
+// then the floor: read_clip plus the seed methods' curves alone (built from the
+// keys, evaluated at every frame and key-jump stencil, no metric), against the import;
+// last, eval's own cost per joint-frame: each method's evaluate_method over the
+// clips' references prepared beforehand (curves and every metric; no reading, no files).
+// --metrics: that last part alone (--method: for that method only).
 #include "rotinterp/eval/batch.h"
 #include "rotinterp/eval/evaluate_clip.h"
 #include "rotinterp/io/dataset.h"
@@ -116,15 +119,61 @@ double curves_alone(const std::vector<rotinterp::ClipReference>& refs, const std
   return own_cpu_seconds() - c0;
 }
 
+// Best CPU seconds of evaluate_method(`method`) over `refs` at keep-every 2, 4, 8, 16,
+// and the joint-frames it measured (joints × samples × spacings evaluated).
+double metrics_alone(const std::vector<rotinterp::ClipReference>& refs, const std::string& method, int repeat,
+                     double& joint_frames) {
+  rotinterp::ClipEvalOptions o;
+  o.methods = {method};
+  o.keep_every = {2, 4, 8, 16};
+  joint_frames = 0.0;
+  for (const rotinterp::ClipReference& ref : refs)
+    joint_frames += static_cast<double>(ref.skeleton.joints.size() * ref.samples *
+                                        (o.keep_every.size() - rotinterp::skipped_spacings(ref.frames.size(), o).size()));
+  double best = 1e300;
+  for (int r = 0; r < repeat; ++r) {
+    const double c0 = own_cpu_seconds();
+    for (const rotinterp::ClipReference& ref : refs)
+      if (!rotinterp::evaluate_method(ref, method, o)) std::exit(1);
+    best = std::min(best, own_cpu_seconds() - c0);
+  }
+  return best;
+}
+
+// The clips' references, prepared as eval prepares them (no options).
+std::vector<rotinterp::ClipReference> references(const std::vector<std::string>& files) {
+  std::vector<rotinterp::ClipReference> refs;
+  for (const std::string& f : files)
+    if (auto clip = rotinterp::read_clip(f))
+      if (auto ref = rotinterp::prepare_reference(*clip, f, {})) refs.push_back(std::move(*ref));
+  return refs;
+}
+
+void print_metrics_alone(const std::vector<rotinterp::ClipReference>& refs, int repeat, const std::string& only = "") {
+  std::printf("eval's own cost (evaluate_method on prepared references: curves and every metric), ns CPU per joint-frame and spacing:\n");
+  for (const rotinterp::MethodInfo& m : rotinterp::methods()) {
+    if (!only.empty() && m.name != only) continue;
+    double measured = 0.0;
+    const double cpu = metrics_alone(refs, m.name, repeat, measured);
+    std::printf("  %-10s %7.1f ns\n", m.name.c_str(), cpu / measured * 1e9);
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   int repeat = 3;
+  bool metrics_only = false;
+  std::string method;
   std::vector<fs::path> inputs;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--repeat" && i + 1 < argc)
       repeat = std::max(1, std::atoi(argv[++i]));
+    else if (a == "--metrics")
+      metrics_only = true;
+    else if (a == "--method" && i + 1 < argc)
+      method = argv[++i];
     else
       inputs.emplace_back(a);
   }
@@ -134,6 +183,10 @@ int main(int argc, char** argv) {
   if (!files || files->empty()) {
     std::fprintf(stderr, "bench_eval: %s\n", files ? "no input files" : files.error().c_str());
     return 1;
+  }
+  if (metrics_only) {
+    print_metrics_alone(references(*files), repeat, method);
+    return 0;
   }
   // Clip-frames: frames of every clip that loads.
   std::size_t clip_frames = 0, clips = 0;
@@ -169,10 +222,7 @@ int main(int argc, char** argv) {
     per_method.emplace_back(m.name, best - c_read);
   }
   // The floor: the seed methods' curves alone, read_clip's cost added.
-  std::vector<rotinterp::ClipReference> refs;
-  for (const std::string& f : *files)
-    if (auto clip = rotinterp::read_clip(f))
-      if (auto ref = rotinterp::prepare_reference(*clip, f, {})) refs.push_back(std::move(*ref));
+  const std::vector<rotinterp::ClipReference> refs = references(*files);
   std::vector<std::pair<std::string, double>> floor_per_method;
   double c_floor = 0.0, c_stencils = 0.0;
   for (const std::string& m : kSeedMethods) {
@@ -213,5 +263,6 @@ int main(int argc, char** argv) {
               c_read + c_floor, (c_read + c_floor) / c_import);
   std::printf("  without the key-jump stencils (%.3f s of it): ratio %.2f\n", c_stencils,
               (c_read + c_floor - c_stencils) / c_import);
+  print_metrics_alone(refs, repeat);
   return 0;
 }

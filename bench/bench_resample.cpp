@@ -82,7 +82,7 @@ void resample_once(benchmark::State& state, std::optional<Rate> fps, double& bes
     const auto t1 = clock::now();
     ResampleOptions o;
     o.fps = fps;
-    auto res = resample_clip(*clip, o);
+    auto res = resample_clip(std::move(*clip), o);  // as the command does: the read clip is given up
     if (!res) {
       state.SkipWithError("resample failed");
       break;

@@ -3,7 +3,9 @@
 # can be compared byte for byte (a refactoring must not change a single output):
 #   resample: every method, every clip, keys at every 4th frame, as BVH; and at 30 Hz;
 #   eval:     errors.csv and summary.json over the whole folder (subframes too);
-#   render:   the default frames of every clip, all methods, with a trail, as PNG.
+#   render:   the default frames of every clip, all methods, with a trail, as PNG;
+#   reduce:   every clip and the sample walk, every method, the kept keys as JSON; slerp's
+#             as GLB and FBX too (the default budget).
 # Usage: bash scripts/outputs.sh BUILD_DIR OUT_DIR
 #        bash scripts/outputs.sh --compare OLD_BUILD_DIR NEW_BUILD_DIR
 # --compare writes both sets under build-outputs/ and diffs them: exit 0 only if
@@ -45,7 +47,7 @@ fi
 bin=$(realpath "$1")/rotinterp
 out=$2
 [ -x "$bin" ] || { echo "$0: no rotinterp in $1" >&2; exit 2; }
-mkdir -p "$out/resample" "$out/render"
+mkdir -p "$out/resample" "$out/render" "$out/reduce"
 clips=$(find "$data" -type f \( -name '*.bvh' -o -name '*.fbx' \) | sort)
 methods=$("$bin" methods | awk 'NR > 1 { print $1 }')
 
@@ -69,6 +71,21 @@ for clip in $clips; do
   "$bin" render "$clip" -o "$out/render/$name" --size 320x180 ${joint:+--trail "$joint"} -q \
     >"$out/render/$name.out" 2>"$out/render/$name.err" || status=$?
   echo "$status" >>"$out/render/$name.err"
+done
+# reduce: the selection's keys (and, for slerp, the written GLB and FBX files).
+for clip in $clips samples/walk.bvh; do
+  name=$(basename "$clip")
+  for m in $methods; do
+    [ "$m" = source ] && continue  # the file's own curves: nothing to select keys for
+    status=0
+    "$bin" reduce "$clip" -o "$out/reduce/$name.$m.json" -m "$m" -q 2>"$out/reduce/$name.$m.err" || status=$?
+    echo "$status" >>"$out/reduce/$name.$m.err"
+  done
+  for ext in glb fbx; do
+    status=0
+    "$bin" reduce "$clip" -o "$out/reduce/$name.slerp.$ext" -q 2>"$out/reduce/$name.$ext.err" || status=$?
+    echo "$status" >>"$out/reduce/$name.$ext.err"
+  done
 done
 status=0
 "$bin" eval "$data" -o "$out/eval" --subframe 2 --no-plots -q -j 2 2>"$out/eval.err" || status=$?

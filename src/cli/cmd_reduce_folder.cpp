@@ -88,41 +88,29 @@ int run_reduce_folder(const ReduceArgs& a, const ReduceSetup& s) {
     if (std::string problem = reduce_output_problem("x." + a.format, method, s.loop.has_value()); !problem.empty())
       return fail_usage(problem);
   }
-  std::vector<fs::path> named(a.inputs.begin(), a.inputs.end());
-  int shard_index = 1, shard_count = 1;
-  if (!a.shard.empty()) {
-    auto shard = parse_shard(a.shard);
-    if (!shard) return fail_usage(shard.error());
-    std::tie(shard_index, shard_count) = *shard;
-  }
-  auto files = find_run_inputs(named, shard_index, shard_count);
-  if (!files) return fail(files.error());
-  auto plan = reduce_outputs(*files, named, a.output, a.format);
-  if (!plan) return fail(plan.error());
-  std::vector<RunFile> run_files_of;
-  for (const MirroredOutput& m : *plan) {
-    protect_input(m.input);
-    run_files_of.push_back({m.input, m.output});
-  }
+  int exit_code = kExitOk;
+  const std::optional<FolderPlan> plan = plan_folder_run(
+      a.inputs, a.shard,
+      [&](const std::vector<std::string>& files, const std::vector<fs::path>& named) {
+        return reduce_outputs(files, named, a.output, a.format);
+      },
+      exit_code);
+  if (!plan) return exit_code;
 
-  std::vector<ReduceFileRun> runs(plan->size());
+  std::vector<ReduceFileRun> runs(plan->outputs.size());
   std::atomic<std::size_t> done{0};
   const bool show = !a.quiet && ::isatty(STDERR_FILENO);
   std::mutex progress_mutex;
   const auto started = std::chrono::steady_clock::now();
-  FileRunOptions run_options;
-  run_options.named = named;
-  run_options.threads = thread_count(static_cast<unsigned>(a.jobs));
-  run_options.skip_existing = a.skip_existing;
+  FileRunOptions run_options = plan->run_options(a.jobs, a.skip_existing, a.quiet);
   run_options.finished = [&](std::size_t) {
     ++done;
     if (!show) return;
     std::lock_guard<std::mutex> lock(progress_mutex);
-    std::fprintf(stderr, "\r\033[Kreduce  %zu/%zu files", done.load(), plan->size());
+    std::fprintf(stderr, "\r\033[Kreduce  %zu/%zu files", done.load(), plan->outputs.size());
   };
-  run_options.on_failure = [&](const FileFailure& f) { print_file_failure(f, a.quiet); };
-  const FileRunReport report = run_files(run_files_of, run_options, [&](std::size_t i, unsigned threads) -> Status {
-    const MirroredOutput& m = (*plan)[i];
+  const FileRunReport report = run_files(plan->files, run_options, [&](std::size_t i, unsigned threads) -> Status {
+    const MirroredOutput& m = plan->outputs[i];
     if (Status mine = check_not_an_input(m.output); !mine) return mine;
     if (std::string problem = reduce_output_problem(m.output.string(), method, s.loop.has_value()); !problem.empty())
       return make_error(m.input + ": " + problem);

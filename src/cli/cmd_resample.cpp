@@ -120,7 +120,7 @@ Status resample_file(FileRun& run, const ResampleArgs& a, const ResampleOptions&
   } else {
     ResampleOptions base = opt;
     if (source) base.method = kDefaultResampleMethod;
-    out = resample_clip(*clip, base);
+    out = resample_clip(std::move(*clip), base);  // the clip is not needed after
   }
   if (!out) return out.failure(run.input + ": ");
   if (curves) {

@@ -67,41 +67,30 @@ int run_resample_folder(const ResampleArgs& a, const ResampleOptions& opt) {
     return fail_usage("output '" + a.output + "' is a file name; several inputs or a folder need an output directory");
   if (!a.format.empty() && !can_write_format(fs::path("x." + a.format)))
     return fail_usage("--format '" + a.format + "': unknown format (use bvh, fbx, glb, gltf or dae)");
-  std::vector<fs::path> named(a.inputs.begin(), a.inputs.end());
-  int shard_index = 1, shard_count = 1;
-  if (!a.shard.empty()) {
-    auto shard = parse_shard(a.shard);
-    if (!shard) return fail_usage(shard.error());
-    std::tie(shard_index, shard_count) = *shard;
-  }
-  auto files = find_run_inputs(named, shard_index, shard_count);
-  if (!files) return fail(files.error());
-  auto plan = mirror_outputs(*files, named, a.output, a.format);
-  if (!plan) return fail(plan.error());
-  std::vector<RunFile> run_files_of;
-  for (const MirroredOutput& m : *plan) {
-    protect_input(m.input);
-    run_files_of.push_back({m.input, m.output});
-  }
+  int exit_code = kExitOk;
+  const std::optional<FolderPlan> plan = plan_folder_run(
+      a.inputs, a.shard,
+      [&](const std::vector<std::string>& files, const std::vector<fs::path>& named) {
+        return mirror_outputs(files, named, a.output, a.format);
+      },
+      exit_code);
+  if (!plan) return exit_code;
 
-  std::vector<FileRun> runs(plan->size());
-  std::vector<std::uintmax_t> bytes(plan->size());
+  std::vector<FileRun> runs(plan->outputs.size());
+  std::vector<std::uintmax_t> bytes(plan->outputs.size());
   std::uintmax_t bytes_total = 0;
-  for (std::size_t i = 0; i < plan->size(); ++i) {
-    bytes[i] = fs::file_size((*plan)[i].input, ec) * !ec;
+  for (std::size_t i = 0; i < plan->outputs.size(); ++i) {
+    bytes[i] = fs::file_size(plan->outputs[i].input, ec) * !ec;
     bytes_total += bytes[i];
-    runs[i].input = (*plan)[i].input;
-    runs[i].output = (*plan)[i].output;
+    runs[i].input = plan->outputs[i].input;
+    runs[i].output = plan->outputs[i].output;
   }
   std::atomic<std::size_t> done{0};
   std::atomic<std::uintmax_t> bytes_done{0};
   const bool show = !a.quiet && ::isatty(STDERR_FILENO);
   std::mutex progress_mutex;
   const auto started = std::chrono::steady_clock::now();
-  FileRunOptions run_options;
-  run_options.named = named;
-  run_options.threads = thread_count(static_cast<unsigned>(a.jobs));
-  run_options.skip_existing = a.skip_existing;
+  FileRunOptions run_options = plan->run_options(a.jobs, a.skip_existing, a.quiet);
   run_options.finished = [&](std::size_t i) {
     ++done;
     bytes_done += bytes[i];
@@ -111,12 +100,11 @@ int run_resample_folder(const ResampleArgs& a, const ResampleOptions& opt) {
     const double rate = elapsed > 0 ? mb / elapsed : 0.0;
     const double left = static_cast<double>(bytes_total - std::min(bytes_total, bytes_done.load())) / 1e6;
     std::lock_guard<std::mutex> lock(progress_mutex);
-    std::fprintf(stderr, "\r\033[Kresample  %zu/%zu files  %.1f MB/s  ETA %s", done.load(), plan->size(), rate,
+    std::fprintf(stderr, "\r\033[Kresample  %zu/%zu files  %.1f MB/s  ETA %s", done.load(), plan->outputs.size(), rate,
                  rate > 0 ? duration_text(left / rate).c_str() : "?");
   };
-  run_options.on_failure = [&](const FileFailure& f) { print_file_failure(f, a.quiet); };
   auto no_stage = [](const std::string&) {};
-  const FileRunReport report = run_files(run_files_of, run_options, [&](std::size_t i, unsigned threads) -> Status {
+  const FileRunReport report = run_files(plan->files, run_options, [&](std::size_t i, unsigned threads) -> Status {
     if (Status mine = check_not_an_input(runs[i].output); !mine) return mine;
     ResampleOptions file_opt = opt;
     file_opt.threads = threads;

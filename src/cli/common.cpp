@@ -3,6 +3,7 @@
 
 #include "rotinterp/clip/units.h"
 #include "rotinterp/interp/interpolator.h"
+#include "rotinterp/io/atomic_file.h"
 #include "rotinterp/io/folder_run.h"
 
 #include <CLI/CLI.hpp>
@@ -201,6 +202,46 @@ void add_folder_run_options(CLI::App& sub, std::string& shard, bool& skip_existi
                "(default: replace them)");
   sub.add_option("--format", format, "Folder runs: output format " + formats);
   sub.add_option("--manifest", manifest, "Folder runs: write a CSV row per file (" + manifest_row + "); default none");
+}
+
+std::optional<FolderPlan> plan_folder_run(const std::vector<std::string>& inputs, const std::string& shard,
+                                          const PlanOutputs& plan_outputs, int& exit_code) {
+  FolderPlan run;
+  run.named.assign(inputs.begin(), inputs.end());
+  int shard_index = 1, shard_count = 1;
+  if (!shard.empty()) {
+    auto parsed = parse_shard(shard);
+    if (!parsed) {
+      exit_code = fail_usage(parsed.error());
+      return std::nullopt;
+    }
+    std::tie(shard_index, shard_count) = *parsed;
+  }
+  auto files = find_run_inputs(run.named, shard_index, shard_count);
+  if (!files) {
+    exit_code = fail(files.error());
+    return std::nullopt;
+  }
+  auto outputs = plan_outputs(*files, run.named);
+  if (!outputs) {
+    exit_code = fail(outputs.error());
+    return std::nullopt;
+  }
+  run.outputs = std::move(*outputs);
+  for (const MirroredOutput& m : run.outputs) {
+    protect_input(m.input);
+    run.files.push_back({m.input, m.output});
+  }
+  return run;
+}
+
+FileRunOptions FolderPlan::run_options(int jobs, bool skip_existing, bool quiet) const {
+  FileRunOptions o;
+  o.named = named;
+  o.threads = thread_count(static_cast<unsigned>(jobs));
+  o.skip_existing = skip_existing;
+  o.on_failure = [quiet](const FileFailure& f) { print_file_failure(f, quiet); };
+  return o;
 }
 
 CLI::Option* add_json_option(CLI::App& sub, bool& json) {

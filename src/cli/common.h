@@ -5,6 +5,11 @@
 #include "rotinterp/clip/sampling.h"
 #include "rotinterp/core/progress.h"
 #include "rotinterp/core/result.h"
+#include "rotinterp/io/dataset.h"
+#include "rotinterp/io/folder_run.h"
+
+#include <filesystem>
+#include <functional>
 
 #include <optional>
 #include <string>
@@ -116,6 +121,23 @@ CLI::Option* add_quiet_option(CLI::App& sub, bool& quiet);
 // reduce take them.
 void add_folder_run_options(CLI::App& sub, std::string& shard, bool& skip_existing, std::string& format,
                             const std::string& formats, std::string& manifest, const std::string& manifest_row);
+// What a folder run works on: the named inputs, the clip files found under them
+// (shard I/N of them, `shard` as --shard gave it), each one's output as `plan_outputs`
+// places it under -o DIR, and each as a run file. The inputs are protected from
+// being written over. On error it prints the line and sets `exit_code` (usage for a
+// bad --shard, failure otherwise).
+struct FolderPlan {
+  std::vector<std::filesystem::path> named;
+  std::vector<MirroredOutput> outputs;
+  std::vector<RunFile> files;
+  // How run_files runs it: its named inputs, -j workers, --skip-existing, and each
+  // failure printed as its one line (print_file_failure).
+  FileRunOptions run_options(int jobs, bool skip_existing, bool quiet) const;
+};
+using PlanOutputs = std::function<Result<std::vector<MirroredOutput>>(const std::vector<std::string>& files,
+                                                                      const std::vector<std::filesystem::path>& named)>;
+std::optional<FolderPlan> plan_folder_run(const std::vector<std::string>& inputs, const std::string& shard,
+                                          const PlanOutputs& plan_outputs, int& exit_code);
 // --json: JSON on stdout instead of text.
 CLI::Option* add_json_option(CLI::App& sub, bool& json);
 

@@ -101,9 +101,12 @@ struct Plan {
   bool keep_every = false;
 };
 
-Status resample_joint(const Clip& in, std::size_t j, const std::string& method, const ResampleOptions& opt,
-                      const std::optional<FrameGrid>& grid, const Plan& plan, Clip& out) {
-  RotationTrack source = in.rotations[j];
+// With `consumable` (the same clip as `in`, given up by the caller), joint j's
+// tracks are moved out of it instead of copied: at the same rate the output then
+// takes the source's key arrays as they are, without a first touch of new pages.
+Status resample_joint(const Clip& in, Clip* consumable, std::size_t j, const std::string& method,
+                      const ResampleOptions& opt, const std::optional<FrameGrid>& grid, const Plan& plan, Clip& out) {
+  RotationTrack source = consumable ? std::move(consumable->rotations[j]) : in.rotations[j];
   if (grid) snap_times(source, *grid);
 
   RotationTrack keys_track;
@@ -134,7 +137,9 @@ Status resample_joint(const Clip& in, std::size_t j, const std::string& method, 
   if (build_from->keys.size() == 1) {
     std::fill(rot.keys.begin(), rot.keys.end(), build_from->keys.front());
   } else if (frames_are_keys(*build_from, plan.eval_times)) {
-    rot.keys = build_from == &source ? std::move(source.keys) : build_from->keys;
+    // Not one conditional expression: its mixed const lvalue and xvalue operands make a copy.
+    if (build_from == &source) rot.keys = std::move(source.keys);
+    else rot.keys = build_from->keys;
   } else {
     auto made = make_interpolator(method, *build_from);
     if (!made) return made.failure();
@@ -143,7 +148,7 @@ Status resample_joint(const Clip& in, std::size_t j, const std::string& method, 
   rot.make_sign_continuous();
 
   if (in.translations[j]) {
-    TranslationTrack tsource = *in.translations[j];
+    TranslationTrack tsource = consumable ? std::move(*consumable->translations[j]) : *in.translations[j];
     if (grid) snap_times(tsource, *grid);
     TranslationTrack tkeys;
     const TranslationTrack* tbuild = &tsource;
@@ -163,7 +168,8 @@ Status resample_joint(const Clip& in, std::size_t j, const std::string& method, 
     TranslationTrack& tr = out.translations[j].emplace();
     tr.times = plan.out_times;
     if (frames_are_keys(*tbuild, plan.eval_times)) {
-      tr.keys = tbuild == &tsource ? std::move(tsource.keys) : tbuild->keys;
+      if (tbuild == &tsource) tr.keys = std::move(tsource.keys);
+      else tr.keys = tbuild->keys;
     } else {
       const TranslationCurve curve(*tbuild, opt.translation);
       tr.keys.resize(plan.eval_times.size());
@@ -204,7 +210,9 @@ Result<TimeRange> parse_time_range(std::string_view text) {
   return r;
 }
 
-Result<Clip> resample_clip(const Clip& in, const ResampleOptions& options) {
+namespace {
+
+Result<Clip> resample(const Clip& in, Clip* consumable, const ResampleOptions& options) {
   ResampleOptions opt = options;
   if (Status s = in.validate(); !s) return s.failure();
   if (opt.fps && opt.keep_every) return make_error("give either a frame rate or keep-every, not both");
@@ -310,7 +318,7 @@ Result<Clip> resample_clip(const Clip& in, const ResampleOptions& options) {
       joints.push_back(queue.submit([&, j] {
         if (stop) return;
         try {
-          status[j] = resample_joint(in, j, method[j], opt, grid, plan, out);
+          status[j] = resample_joint(in, consumable, j, method[j], opt, grid, plan, out);
         } catch (...) {
           stop = true;
           throw;
@@ -324,5 +332,11 @@ Result<Clip> resample_clip(const Clip& in, const ResampleOptions& options) {
     if (!status[j]) return status[j].failure("joint '" + in.skeleton.joints[j].name + "': ");
   return out;
 }
+
+}  // namespace
+
+Result<Clip> resample_clip(const Clip& clip, const ResampleOptions& options) { return resample(clip, nullptr, options); }
+
+Result<Clip> resample_clip(Clip&& clip, const ResampleOptions& options) { return resample(clip, &clip, options); }
 
 }  // namespace rotinterp

@@ -1,6 +1,7 @@
 // One method evaluated on a clip's reference: its rows of errors.csv, and its error at every sample (--per-frame).
 #include "rotinterp/eval/evaluate_clip.h"
 
+#include "pose_pass.h"
 #include "sample_block.h"
 #include "streamed_stats.h"
 
@@ -162,10 +163,10 @@ Result<std::vector<ErrorRow>> evaluate_method(const ClipReference& R, const std:
   rows.reserve(options.keep_every.size() * (nj + ne));
   // test[j]: two samples carried from the previous block (for smoothness), then the block.
   std::vector<std::vector<Quat>> test(nj, std::vector<Quat>(2 + std::min(ns, bs)));
+  std::vector<const Quat*> test_at(nj);  // test[j]'s block
+  for (std::size_t j = 0; j < nj; ++j) test_at[j] = test[j].data() + 2;
   std::vector<double> scratch;
-  std::vector<Quat> local_r(nj);
-  std::vector<Vec3> local_t(nj);
-  WorldPose test_world;
+  detail::PosePass poses;
   Block block;
   const std::vector<int> skipped = skipped_spacings(nf, options);
   const std::size_t nfeet = R.feet.size();
@@ -218,25 +219,7 @@ Result<std::vector<ErrorRow>> evaluate_method(const ClipReference& R, const std:
         test[j][0] = n >= 2 ? out[n - 2] : test[j][1];
         test[j][1] = out[n - 1];
       }
-      for (std::size_t m = 0; m < n; ++m) {
-        bool equal = true;  // the rebuilt pose is the reference's, bit for bit (at keys)
-        for (std::size_t j = 0; j < nj; ++j) {
-          local_r[j] = test[j][2 + m];
-          local_t[j] = block.translation(R, j)[m];
-          equal = equal && local_r[j].coeffs() == block.rotation(R, j)[m].coeffs();
-        }
-        const bool frame = (m0 + m) % R.per_frame == 0;
-        if (equal) {
-          accumulate_equal_poses(sums.pose);
-          if (frame)
-            for (std::size_t f = 0; f < nfeet; ++f) feet_at[f][(m0 + m) / R.per_frame] = block.world(R, m).position[R.feet[f]];
-          continue;
-        }
-        forward_kinematics(skel, local_r, local_t, test_world);
-        accumulate_pose_error(block.world(R, m), test_world, R.shell_distance, sums.pose);
-        if (frame)
-          for (std::size_t f = 0; f < nfeet; ++f) feet_at[f][(m0 + m) / R.per_frame] = test_world.position[R.feet[f]];
-      }
+      poses.add(R, block, m0, n, test_at.data(), sums.pose, feet_at);
     }
     if (!one_block)
       for (std::size_t j = 0; j < nj; ++j) finish_angles(R, j, *curves[j], sums.err[j].angle);

@@ -5,6 +5,7 @@
 #include "streamed_stats.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 namespace rotinterp {
@@ -17,10 +18,15 @@ namespace {
 
 constexpr double kRadToDeg = 180.0 / kPi;
 
+std::atomic<std::size_t> prepared{0};
+
 }  // namespace
+
+std::size_t references_prepared() { return prepared.load(); }
 
 Result<ClipReference> prepare_reference(const Clip& clip, const std::string& clip_id,
                                         const ClipEvalOptions& options) {
+  ++prepared;
   if (Status s = clip.validate(); !s) return s.failure(clip_id + ": ");
   if (options.subframe < 0 || options.subframe > 1000)
     return make_error(clip_id + ": subframe must be between 0 and 1000");

@@ -25,27 +25,27 @@ const std::vector<MethodInfo>& methods() {
   using Made = Result<std::unique_ptr<Interpolator>>;
   static const std::vector<MethodInfo> all = {
       {"slerp", "piecewise geodesic (shortest arc) between neighbouring keys", 0, true, true, true,
-       [](const RotationTrack& t) -> Made { return make_slerp(t); }},
+       1, [](const RotationTrack& t) -> Made { return make_slerp(t); }},
       {"squad", "Shoemake's spherical quadrangle, control points scaled for non-uniform times", 1, true, true, false,
-       [](const RotationTrack& t) -> Made { return make_squad(t); }},
+       2, [](const RotationTrack& t) -> Made { return make_squad(t); }},
       {"expmap", "Catmull-Rom spline of the unwrapped rotation vectors (Grassia), mapped back with exp", 1, false, false, false,
-       [](const RotationTrack& t) -> Made { return make_expmap(t); }},
+       0, [](const RotationTrack& t) -> Made { return make_expmap(t); }},
       {"nlerp", "normalized linear blend of neighbouring keys (not constant speed)", 0, true, false, true,
-       [](const RotationTrack& t) -> Made { return make_nlerp(t); }},
+       1, [](const RotationTrack& t) -> Made { return make_nlerp(t); }},
       {"bf", "Buss-Fillmore spherical cubic B-spline through the keys (weighted spherical averages)", 2, true, true, false,
-       [](const RotationTrack& t) -> Made { return make_bf(t); }},
+       0, [](const RotationTrack& t) -> Made { return make_bf(t); }},
       {"c2", "cubic in the local rotation vector with continuous angular acceleration (as scipy RotationSpline)", 2,
-       true, true, false, [](const RotationTrack& t) -> Made { return make_c2(t); }},
+       true, true, false, 0, [](const RotationTrack& t) -> Made { return make_c2(t); }},
       {"expmap-c2", "natural cubic spline of the unwrapped rotation vectors, mapped back with exp", 2, false, false, false,
-       [](const RotationTrack& t) -> Made {
+       0, [](const RotationTrack& t) -> Made {
          ExpmapOptions o;
          o.spline = ExpmapOptions::Spline::natural;
          return make_expmap(t, o);
        }},
       {"clamped", "shape-preserving C1 cubic (Steffen's limiter on SO(3)): holds stay still, no overshoot at stops", 1,
-       true, true, true, [](const RotationTrack& t) -> Made { return make_clamped(t); }},
+       true, true, true, 2, [](const RotationTrack& t) -> Made { return make_clamped(t); }},
       {"gltf-cubic", "glTF CUBICSPLINE: Hermite cubic of the quaternion components, normalized (clamped's key rates)", 1,
-       true, false, true, [](const RotationTrack& t) -> Made { return make_gltf_cubic(t); }},
+       true, false, true, 2, [](const RotationTrack& t) -> Made { return make_gltf_cubic(t); }},
   };
   return all;
 }

@@ -1,6 +1,7 @@
 // BVH text into a BvhFile: the header (bvh_header.cpp), then every data row,
 // validated, in double.
 #include "bvh_text.h"
+#include "huge_pages.h"
 
 #include <algorithm>
 #include <charconv>
@@ -98,6 +99,7 @@ Result<BvhFile> parse_bvh(std::string_view text, const std::string& label) {
   // Reserve by what the text can hold, never by the declared count.
   const std::size_t max_rows_in_text = static_cast<std::size_t>(std::count(text.begin() + pos, text.end(), '\n')) + 1;
   file.values.reserve(std::min(file.frames, max_rows_in_text) * file.columns);
+  advise_huge_pages(file.values.data(), file.values.capacity() * sizeof(double));
 
   // Which joint/channel owns each column, for messages.
   std::vector<std::pair<std::size_t, std::size_t>> owner(file.columns);

@@ -1,5 +1,6 @@
 // A parsed BVH file as a clip: its skeleton, layout and every frame's rotations
 // and translations (BvhFile's accessors; long files on two threads).
+#include "huge_pages.h"
 #include "rotinterp/io/bvh.h"
 #include "rotinterp/core/work_queue.h"
 
@@ -117,7 +118,8 @@ Clip bvh_to_clip(const BvhFile& file, const std::string& name, unsigned threads)
         layouts[j].axis.push_back(axis_of(joint.channels[c]));
       }
     clip.rotations[j].times = times;
-    clip.rotations[j].keys.resize(frames);
+    clip.rotations[j].keys.resize(frames);  // not touched yet: a Quat's default constructor leaves it
+    advise_huge_pages(clip.rotations[j].keys.data(), frames * sizeof(Quat));
     if (file.has_position_channels(j)) clip.translations[j] = TranslationTrack{times, std::vector<Vec3>(frames)};
   }
   // Long files convert on two threads, each half of the frames (the work is

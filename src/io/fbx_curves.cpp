@@ -124,6 +124,10 @@ Status read_keys(const FbxNode& node, FbxCurve& c, const std::string& where) {
   c.keys.resize(times.size());
   for (std::size_t i = 0; i < times.size(); ++i) {
     FbxKey& k = c.keys[i];
+    // Times stored as doubles (not the usual int64 ticks) must be whole tick counts in range.
+    if (i >= ticks.size() && !(std::abs(times[i]) < 9.2e18))
+      return make_error(where + ": key " + std::to_string(i) + " has a time of " + std::to_string(times[i]) +
+                        " ticks, out of range");
     k.ticks = i < ticks.size() ? ticks[i] : static_cast<std::int64_t>(times[i]);
     k.value = values[i];
     if (!std::isfinite(k.value)) return make_error(where + ": key " + std::to_string(i) + " has a non-finite value");

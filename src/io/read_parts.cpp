@@ -1,5 +1,6 @@
 // The steps both the dispatch and the importer's in-process read run (read_parts.h).
 #include "read_parts.h"
+#include "huge_pages.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -31,6 +32,7 @@ class FileText {
     struct stat st {};
     std::size_t capacity = (::fstat(fd, &st) == 0 && st.st_size > 0) ? static_cast<std::size_t>(st.st_size) : 0;
     buffer_.reset(new char[capacity + 1]);  // uninitialized: read(2) fills it
+    advise_huge_pages(buffer_.get(), capacity + 1);
     ++capacity;  // one byte more than fstat said, so a full buffer means the file grew
     for (;;) {
       if (size_ == capacity) {

@@ -89,18 +89,27 @@ std::vector<Reducer::Track> Reducer::tracks_to_key(std::size_t j, std::size_t f)
 }
 
 // Frames over budget at j even with j's own rotation exact (its translation and
-// its ancestors rebuilt).
-std::vector<std::size_t> Reducer::floor_frames(std::size_t j) const {
+// its ancestors rebuilt): measured at every frame the first time, then only where
+// those moved.
+std::vector<std::size_t> Reducer::floor_frames(std::size_t j) {
   std::vector<std::size_t> out;
   if (!(budget_[j].shell > 0.0)) return out;
+  Measured& m = measured_[j];
+  const bool all = m.floor.empty() || measure_everything_;
+  if (m.floor.empty()) m.floor.assign(n_, 0);
+  std::size_t measured = 0;
   for (std::size_t f = 0; f < n_; ++f) {
-    Quat r;
-    Vec3 p;
-    test_world(j, f, dense_.rotation[j][f], r, p);
-    const double limit = kFloorLimit * budget_[j].shell;
-    if (shell_error_above(ref_rot_[j][f], ref_pos_[j][f], r, p, o_.shell_distance, limit) > limit)
-      out.push_back(f);
+    if (all || m.moved[f]) {
+      ++measured;
+      Quat r;
+      Vec3 p;
+      test_world(j, f, dense_.rotation[j][f], r, p);
+      const double limit = kFloorLimit * budget_[j].shell;
+      m.floor[f] = shell_error_above(ref_rot_[j][f], ref_pos_[j][f], r, p, o_.shell_distance, limit) > limit;
+    }
+    if (m.floor[f]) out.push_back(f);
   }
+  frames_measured_ += measured;
   return out;
 }
 
@@ -126,7 +135,7 @@ Status Reducer::run_hierarchical() {
   auto process = [&](std::size_t j) {
     std::vector<double> e;
     escalate[j].clear();
-    status[j] = select_translation(j, !translated[j], e);
+    status[j] = update_translation(j, !translated[j], e);
     if (!status[j]) return;
     translated[j] = 1;
     for (std::size_t f : floor_frames(j))

@@ -83,6 +83,8 @@ Reducer::Reducer(const Clip& clip, const ReduceOptions& o, std::vector<ReduceBud
   test_translation_.resize(joints_);
   if (cycle) setup_ = set_cycle(std::move(*cycle));
   if (shell_) {
+    measured_.assign(joints_, Measured{});
+    for (Measured& m : measured_) m.moved.assign(n_, 0);
     ref_rot_.assign(joints_, std::vector<Quat>(n_));
     ref_pos_.assign(joints_, std::vector<Vec3>(n_));
     test_rot_ = ref_rot_;

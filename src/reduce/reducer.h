@@ -3,10 +3,13 @@
 #pragma once
 
 #include "rotinterp/clip/loop.h"
+#include "rotinterp/interp/interpolator.h"
 #include "rotinterp/reduce/reduce.h"
 
+#include <atomic>
 #include <cstddef>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -75,9 +78,15 @@ using ResidualFn = std::function<double(std::size_t f, const Quat& q, double* ou
 
 // The selection on one track of `frames` frames: insertion, then (with `removal`) removal
 // and insertion again (reduce/reduce.h, steps 1–3). `keys` holds the start keys, and the kept
-// ones on return; `e` is scratch.
+// ones on return; `e` holds every frame's error of the kept keys on return (frames ≥ 3) and,
+// with `known`, already on entry (the first measure over every frame is skipped). A
+// `support` > 0 (MethodInfo::support of the curve `err` rebuilds) measures only the
+// frames a new key moves (select_local.cpp); 0, every frame when the new keys' spans
+// cover most of them and once more at the end.
 Status select_keys(std::vector<std::size_t>& keys, std::size_t frames, const ErrorFn& err, const KeyValues* values,
-                   bool removal, std::vector<double>& e);
+                   bool removal, std::vector<double>& e, bool known = false, std::size_t support = 0);
+Status insert_worst_local(std::vector<std::size_t>& keys, std::size_t frames, const ErrorFn& err, const KeyValues* values,
+                          std::vector<double>& e, bool known, std::size_t support);
 // The same on a cycle of `frames` frames (select_cycle.cpp): keys[0] = 0 is the seam, the
 // one key the cycle keeps; the last key is its image one period on (closed: frames − 1,
 // open: frames), no key of its own. The last interval runs round the seam, and removals
@@ -88,6 +97,18 @@ Status select_cycle_keys(std::vector<std::size_t>& keys, std::size_t frames, con
 std::vector<std::size_t> ends(std::size_t frames);
 // The worst frame over budget (error `e` above 1) inside each key interval, into `add`.
 void worst_frames(const std::vector<std::size_t>& keys, const std::vector<double>& e, std::vector<std::size_t>& add);
+// f(lo, hi) for each run [lo, hi] of set frames in `mask`.
+template <class F>
+Status for_each_run(const std::vector<char>& mask, const F& f) {
+  for (std::size_t lo = 0; lo < mask.size(); ++lo) {
+    if (!mask[lo]) continue;
+    std::size_t hi = lo;
+    while (hi + 1 < mask.size() && mask[hi + 1]) ++hi;
+    if (Status s = f(lo, hi); !s) return s;
+    lo = hi;
+  }
+  return Ok{};
+}
 bool has(const std::vector<std::size_t>& keys, std::size_t f);
 void add_key(std::vector<std::size_t>& keys, std::size_t f);
 TranslationTrack translation_keys(const std::vector<double>& times, const std::vector<Vec3>& source,
@@ -100,6 +121,11 @@ class Reducer {
   // `cycle`: the clip's cycle check (reduce --loop), whose closing joints are looped.
   Reducer(const Clip& clip, const ReduceOptions& o, std::vector<ReduceBudget> budgets, std::optional<LoopCheck> cycle);
   Result<ReduceResult> run();
+  // For the tests: measure every frame again in every pass, and after every new key
+  // (the selection without remeasure.cpp and select_local.cpp: the same result); the
+  // frames at which a rotation's error, floor or final pose was measured.
+  void measure_everything() { measure_everything_ = true; }
+  std::size_t frames_measured() const { return frames_measured_; }
 
  private:
   // A cycle's frames: keys lie in [0, frames) — the period, the seam's image (closed: the
@@ -124,8 +150,9 @@ class Reducer {
     return cycle_->check.form == LoopForm::closed ? dense_.grid.times[n_ - 1] : dense_.grid.times[0] + cycle_->period;
   }
   Status select_track_keys(std::size_t j, std::vector<std::size_t>& keys, const ErrorFn& err, const KeyValues* values,
-                           bool removal, std::vector<double>& e) {
-    return looped(j) ? select_cycle_keys(keys, n_, err, values, removal, e) : select_keys(keys, n_, err, values, removal, e);
+                           bool removal, std::vector<double>& e, bool known = false, std::size_t support = 0) {
+    return looped(j) ? select_cycle_keys(keys, n_, err, values, removal, e)
+                     : select_keys(keys, n_, err, values, removal, e, known, support);
   }
 
   const std::vector<double>& times() const { return dense_.grid.times; }
@@ -150,6 +177,8 @@ class Reducer {
     p = test_pos_[pu][f] + test_rot_[pu][f] * test_translation(j, f);
   }
 
+  // j's rotation curve through its keys at the frames `keys`.
+  Result<std::unique_ptr<Interpolator>> curve(std::size_t j, const std::vector<std::size_t>& keys) const;
   // j's rotation at the frames [lo, hi], rebuilt through its keys at the frames `keys`.
   Result<std::vector<Quat>> rebuild(std::size_t j, const std::vector<std::size_t>& keys, std::size_t lo, std::size_t hi) const;
   // Fitted values at the key frames `free` (refit.cpp).
@@ -169,8 +198,35 @@ class Reducer {
   bool exact_at(const Track& t, std::size_t f) const;
   double floor_with_exact(std::size_t j, std::size_t f, const std::vector<Track>& exact) const;
   std::vector<Track> tracks_to_key(std::size_t j, std::size_t f) const;
-  std::vector<std::size_t> floor_frames(std::size_t j) const;
+  std::vector<std::size_t> floor_frames(std::size_t j);
   Status run_hierarchical();
+
+  // What a joint's last evaluation left (hierarchical runs), so that a later pass
+  // measures again only the frames that moved since (remeasure.cpp).
+  struct Measured {
+    bool done = false;                      // its rotation selected once
+    std::vector<std::size_t> rkeys, tkeys;  // the keys its curves were built through
+    std::vector<Quat> values;               // the rotation keys' values then
+    std::shared_ptr<const Interpolator> curve;  // the rotation curve through them
+    std::vector<double> error;              // [frame] the selection's rotation error
+    std::vector<double> angle, shell;       // [frame] the result's local angle and shell error
+    std::vector<char> floor;                // [frame] over budget with its own rotation exact
+    std::vector<char> moved;                // [frame] its parent's pose or its translation moved since
+  };
+  // The method's support (interpolator.h); 0 (every frame) for a looped joint.
+  int support(std::size_t j) const;
+  // Frames where j's rotation curve through its keys now can differ from the measured
+  // one's, and those whose inputs moved.
+  std::vector<char> to_measure(std::size_t j) const;
+  // j's rotation curve through its keys: the measured one while they are unchanged
+  // (a global spline's whole-track build is the costly part of a later pass).
+  Result<std::shared_ptr<const Interpolator>> current_curve(std::size_t j) const;
+  // j's translation selected again if its keys changed (or never selected); the frames
+  // where its rebuilt translation moved marked.
+  Status update_translation(std::size_t j, bool first, std::vector<double>& e);
+  // j's rebuilt rotation, world pose and errors at the frames `mask` (every frame the
+  // first time); the children's frames whose parent pose moved marked; the maxima.
+  Status settle_rotation(std::size_t j, const std::vector<char>& mask);
 
   const Clip& clip_;
   const ReduceOptions& o_;
@@ -186,6 +242,9 @@ class Reducer {
   std::vector<std::vector<Vec3>> test_translation_;
   std::vector<std::vector<Quat>> ref_rot_, test_rot_;
   std::vector<std::vector<Vec3>> ref_pos_, test_pos_;
+  std::vector<Measured> measured_;  // [joint], hierarchical runs
+  bool measure_everything_ = false;
+  std::atomic<std::size_t> frames_measured_{0};
   std::optional<Cycle> cycle_;
   Status setup_ = Ok{};  // an error found building the cycle, returned by run()
 };

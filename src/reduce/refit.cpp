@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
+#include <utility>
 
 namespace rotinterp::detail {
 
@@ -23,25 +25,45 @@ Result<bool> Reducer::refit_values(std::size_t j, const std::vector<std::size_t>
   // Residuals and frame errors of the values as they are now; the worst error.
   Eigen::VectorXd r(frames * rows), rp(frames * rows), err(frames), errp(frames);
   Eigen::MatrixXd jac(frames * rows, params);
-  auto measure = [&](Eigen::VectorXd& out, Eigen::VectorXd& e) -> Result<double> {
-    auto q = rebuild(j, keys, lo, hi);
+  // The frames [a, b] measured again (the others' residuals as `out` and `e` hold them).
+  auto measure = [&](Eigen::VectorXd& out, Eigen::VectorXd& e, std::size_t a, std::size_t b) -> Result<double> {
+    auto q = rebuild(j, keys, a, b);
     if (!q) return q.failure();
-    for (std::size_t f = 0; f < frames; ++f)
-      e[static_cast<Eigen::Index>(f)] = residual(lo + f, (*q)[f], out.data() + f * rows);
+    for (std::size_t f = a; f <= b; ++f)
+      e[static_cast<Eigen::Index>(f - lo)] = residual(f, (*q)[f - a], out.data() + (f - lo) * rows);
     return e.maxCoeff();
   };
-  auto first = measure(r, err);
+  // The frames of [lo, hi] a change of the values at the key frames `changed` moves:
+  // within the method's support of each (MethodInfo::support), or all of them.
+  const auto s = static_cast<std::size_t>(support(j));
+  auto moved = [&](std::initializer_list<std::size_t> changed) {
+    std::size_t a = hi, b = lo;
+    for (std::size_t k : changed) {
+      const auto i = static_cast<std::size_t>(std::lower_bound(keys.begin(), keys.end(), k) - keys.begin());
+      a = std::min(a, s > 0 && i >= s ? std::max(lo, keys[i - s]) : lo);
+      b = std::max(b, s > 0 && i + s < keys.size() ? std::min(hi, keys[i + s]) : hi);
+    }
+    return std::pair(a, b);
+  };
+  const auto [moved_lo, moved_hi] = free.size() == 1 ? moved({free[0]}) : moved({free.front(), free.back()});
+  auto first = measure(r, err, lo, hi);
   if (!first) return first.failure();
   double worst = *first;
   constexpr double kStep = 1e-6;  // rad: the forward difference
   for (int iteration = 0; iteration < kRefitIterations; ++iteration) {
+    rp = r;
+    errp = err;
     for (std::size_t p = 0; p < params; ++p) {
       Quat& v = value_[j][free[p / 3]];
       const Quat keep = v;
       v = apply_moving(keep, RotVec(Vec3::Unit(static_cast<Eigen::Index>(p % 3)) * kStep));
-      if (auto m = measure(rp, errp); !m) return m.failure();
+      const auto [a, b] = moved({free[p / 3]});
+      if (auto m = measure(rp, errp, a, b); !m) return m.failure();
       v = keep;
+      // Rows outside [a, b] are the same residuals: a zero difference, as measuring them gives.
       jac.col(static_cast<Eigen::Index>(p)) = (rp - r) / kStep;
+      const auto at = static_cast<Eigen::Index>((a - lo) * rows), count = static_cast<Eigen::Index>((b - a + 1) * rows);
+      rp.segment(at, count) = r.segment(at, count);
     }
     Eigen::MatrixXd normal = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(params), static_cast<Eigen::Index>(params));
     Eigen::VectorXd g = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(params));
@@ -54,6 +76,7 @@ Result<bool> Reducer::refit_values(std::size_t j, const std::vector<std::size_t>
     normal.diagonal().array() += 1e-9 * normal.diagonal().maxCoeff() + 1e-300;
     const Eigen::VectorXd step = -normal.ldlt().solve(g);
     if (!step.allFinite()) break;
+    errp = err;
     // The step, else a half, a quarter, … of it: the first that lowers the worst error.
     std::vector<Quat> before(free.size());
     for (std::size_t k = 0; k < free.size(); ++k) before[k] = value_[j][free[k]];
@@ -61,7 +84,7 @@ Result<bool> Reducer::refit_values(std::size_t j, const std::vector<std::size_t>
     for (double t = 1.0; t >= 1.0 / 16 && !better; t *= 0.5) {
       for (std::size_t k = 0; k < free.size(); ++k)
         value_[j][free[k]] = apply_moving(before[k], RotVec(t * step.segment<3>(static_cast<Eigen::Index>(3 * k))));
-      auto now = measure(rp, errp);
+      auto now = measure(rp, errp, moved_lo, moved_hi);
       if (!now) return now.failure();
       if (*now <= 1.0) return true;
       if (*now < worst) better = true, worst = *now;

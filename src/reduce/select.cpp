@@ -13,16 +13,17 @@ namespace rotinterp::detail {
 // confirmed over every frame with the whole track. A new key takes its start value
 // (rotations: the source smoothed by kStartSmoothing); a key frame over budget (a
 // fitted value that its ancestors' later keys moved away from) gets the source's
-// value back.
+// value back. With `known`, `e` holds every frame's error already.
 Status insert_worst(std::vector<std::size_t>& keys, std::size_t frames, const ErrorFn& err, const KeyValues* values,
-                    std::vector<double>& e) {
+                    std::vector<double>& e, bool known = false) {
   e.resize(frames);
   std::vector<std::size_t> add, merged, window;
   std::vector<std::pair<std::size_t, std::size_t>> spans;  // key index ranges to measure again
   bool full = true;
   for (;;) {
-    if (full)
+    if (full && !known)
       if (Status s = err(keys, 0, frames - 1, e.data()); !s) return s;
+    known = false;
     worst_frames(keys, e, add);
     if (add.empty()) {
       if (!full) {
@@ -89,12 +90,16 @@ Status remove_keys(std::vector<std::size_t>& keys, const ErrorFn& err, const Key
 }
 
 Status select_keys(std::vector<std::size_t>& keys, std::size_t frames, const ErrorFn& err, const KeyValues* values,
-                   bool removal, std::vector<double>& e) {
+                   bool removal, std::vector<double>& e, bool known, std::size_t support) {
   if (frames < 3) return Ok{};
-  if (Status s = insert_worst(keys, frames, err, values, e); !s) return s;
+  auto insert = [&](bool e_known) {
+    return support > 0 ? insert_worst_local(keys, frames, err, values, e, e_known, support)
+                       : insert_worst(keys, frames, err, values, e, e_known);
+  };
+  if (Status s = insert(known); !s) return s;
   if (!removal) return Ok{};
   if (Status s = remove_keys(keys, err, values, e); !s) return s;
-  return insert_worst(keys, frames, err, values, e);
+  return insert(false);
 }
 
 std::vector<std::size_t> ends(std::size_t frames) {

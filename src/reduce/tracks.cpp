@@ -46,12 +46,16 @@ Status Reducer::select_translation(std::size_t j, bool removal, std::vector<doub
   return Ok{};
 }
 
+Result<std::unique_ptr<Interpolator>> Reducer::curve(std::size_t j, const std::vector<std::size_t>& keys) const {
+  return looped(j) ? make_joint_curve(o_.method, decimated_track(times(), value_[j], in_period(keys)), cycle_->period)
+                   : make_joint_curve(o_.method, decimated_track(times(), value_[j], keys), std::nullopt);
+}
+
 Result<std::vector<Quat>> Reducer::rebuild(std::size_t j, const std::vector<std::size_t>& keys, std::size_t lo, std::size_t hi) const {
-  auto curve = looped(j) ? make_joint_curve(o_.method, decimated_track(times(), value_[j], in_period(keys)), cycle_->period)
-                         : make_joint_curve(o_.method, decimated_track(times(), value_[j], keys), std::nullopt);
-  if (!curve) return curve.failure();
+  auto c = curve(j, keys);
+  if (!c) return c.failure();
   std::vector<Quat> q(hi - lo + 1);
-  (*curve)->evaluate(times().data() + lo, q.size(), q.data());
+  (*c)->evaluate(times().data() + lo, q.size(), q.data());
   return q;
 }
 
@@ -84,6 +88,7 @@ Status Reducer::select_rotation(std::size_t j, bool removal, std::vector<double>
     auto q = rebuild(j, keys, lo, hi);
     if (!q) return q.failure();
     for (std::size_t f = lo; f <= hi; ++f) out[f - lo] = frame_error(f, (*q)[f - lo]);
+    frames_measured_ += hi - lo + 1;
     return Ok{};
   };
   // The residuals behind frame_error, each block normalized by its budget (the
@@ -124,19 +129,36 @@ Status Reducer::select_rotation(std::size_t j, bool removal, std::vector<double>
                      std::size_t hi) -> Result<bool> {
     return refit_values(j, keys, free, lo, hi, blocks, residual);
   };
-  if (Status s = select_track_keys(j, rkeys_[j], err, &values, removal, e); !s) return s;
+  // A later pass of a hierarchical run: every frame's error is the last pass's, measured
+  // again only where the curve or its inputs moved since.
+  const bool again = shell_ && measured_[j].done, known = again && !looped(j) && n_ >= 3;
+  if (known) {
+    auto c = current_curve(j);
+    if (!c) return c.failure();
+    e = measured_[j].error;
+    std::vector<Quat> q;
+    const Status s = for_each_run(to_measure(j), [&](std::size_t lo, std::size_t hi) -> Status {
+      q.resize(hi - lo + 1);
+      (*c)->evaluate(times().data() + lo, q.size(), q.data());
+      for (std::size_t f = lo; f <= hi; ++f) e[f] = frame_error(f, q[f - lo]);
+      frames_measured_ += hi - lo + 1;
+      return Ok{};
+    });
+    if (!s) return s;
+  }
+  if (Status s = select_track_keys(j, rkeys_[j], err, &values, removal, e, known, static_cast<std::size_t>(support(j))); !s)
+    return s;
+  if (shell_) {
+    out_[j].budget = b;
+    if (!looped(j) && n_ >= 3) measured_[j].error = e;
+    return settle_rotation(j, again ? to_measure(j) : std::vector<char>(n_, 1));
+  }
   auto q = rebuild(j, rkeys_[j], 0, n_ - 1);
   if (!q) return q.failure();
   ReducedJoint& out = out_[j];
   out.budget = b;
   out.max_rotation_error = out.max_shell_error = 0.0;
-  for (std::size_t f = 0; f < n_; ++f) {
-    out.max_rotation_error = std::max(out.max_rotation_error, angular_distance(src[f], (*q)[f]));
-    if (shell_) {
-      test_world(j, f, (*q)[f], test_rot_[j][f], test_pos_[j][f]);
-      out.max_shell_error = std::max(out.max_shell_error, shell_error(ref_rot_[j][f], ref_pos_[j][f], test_rot_[j][f], test_pos_[j][f], d));
-    }
-  }
+  for (std::size_t f = 0; f < n_; ++f) out.max_rotation_error = std::max(out.max_rotation_error, angular_distance(src[f], (*q)[f]));
   return Ok{};
 }
 

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -335,4 +336,37 @@ TEST(Resample, AbsurdOutputSizesAreRefusedBeforeAllocating) {
   auto r = resample_clip(in, at("1000000000"));  // 2e9 frames × 31 joints
   ASSERT_FALSE(r.ok());
   EXPECT_NE(r.error().find("more than"), std::string::npos) << r.error();
+}
+
+// The command gives up the clip it read: the overload that takes it must give the
+// same clip, and at the same rate keep the source's key arrays instead of copying.
+TEST(Resample, AClipGivenUpResamplesAsACopyAndKeepsItsKeyArraysAtTheSameRate) {
+  for (const std::optional<Rate> fps : {std::optional<Rate>{}, std::optional<Rate>{Rate{30, 1}}}) {
+    for (const char* method : {"slerp", "c2"}) {
+      ResampleOptions o;
+      o.fps = fps;
+      o.method = method;
+      o.threads = 2;
+      const Clip source = synth(SynthKind::walk, Rate{120, 1}, 2.0);
+      Clip given = source;
+      const Quat* root_keys = given.rotations[0].keys.data();
+      const Vec3* root_positions = given.translations[0]->keys.data();
+      const Result<Clip> copied = resample_clip(source, o);
+      const Result<Clip> moved = resample_clip(std::move(given), o);
+      ASSERT_TRUE(copied.ok() && moved.ok()) << method;
+      ASSERT_EQ(copied->rotations.size(), moved->rotations.size());
+      for (std::size_t j = 0; j < copied->rotations.size(); ++j) {
+        EXPECT_EQ(copied->rotations[j].times, moved->rotations[j].times);
+        ASSERT_EQ(copied->rotations[j].keys.size(), moved->rotations[j].keys.size());
+        for (std::size_t k = 0; k < copied->rotations[j].keys.size(); ++k)
+          ASSERT_EQ(copied->rotations[j].keys[k].coeffs(), moved->rotations[j].keys[k].coeffs()) << method << " " << j;
+        ASSERT_EQ(copied->translations[j].has_value(), moved->translations[j].has_value());
+        if (copied->translations[j]) {
+          EXPECT_EQ(copied->translations[j]->keys, moved->translations[j]->keys);
+        }
+      }
+      EXPECT_EQ(moved->rotations[0].keys.data() == root_keys, !fps) << method;
+      EXPECT_EQ(moved->translations[0]->keys.data() == root_positions, !fps) << method;
+    }
+  }
 }

@@ -168,5 +168,27 @@ TEST(FbxLayers, AKeyedLayerWeightBlendsByItsValueAtEachTime) {
   EXPECT_EQ(layered, 6u);
 }
 
+// Found by fuzz_read_fbx: key times stored as doubles beyond the range of int64 ticks
+// were converted regardless (undefined behaviour); now one line naming the curve.
+TEST(FbxLayers, AKeyTimeBeyondTheTickRangeIsOneLineNamingTheCurve) {
+  const std::string path = (test::kData / kFbx).string();
+  std::string text = test::read_text(path);
+  const std::string first_times = "a: 1924423250,38488465000";
+  const std::size_t at = text.find(first_times);
+  ASSERT_NE(at, std::string::npos);
+  for (const char* time : {"5.5e33", "-9.3e18", "nan"}) {
+    std::string hostile = text;
+    hostile.replace(at, first_times.size(), std::string("a: ") + time + ",38488465000");
+    auto doc = parse_fbx_nodes(hostile, "hostile.fbx");
+    ASSERT_TRUE(doc.ok()) << doc.error();
+    auto anim = read_fbx_animation(*doc, "hostile.fbx");
+    ASSERT_FALSE(anim.ok()) << time;
+    EXPECT_EQ(anim.error().rfind("hostile.fbx", 0), 0u) << anim.error();
+    EXPECT_NE(anim.error().find("key 0 has a time of"), std::string::npos) << anim.error();
+    EXPECT_NE(anim.error().find("out of range"), std::string::npos) << anim.error();
+    EXPECT_EQ(anim.error().find('\n'), std::string::npos);
+  }
+}
+
 }  // namespace
 }  // namespace rotinterp

@@ -79,5 +79,9 @@ struct ResampleOptions {
 // clip, runs past its end (the message gives the end in seconds and frames) or is empty,
 // a range in frames on a clip without a frame rate.
 Result<Clip> resample_clip(const Clip& clip, const ResampleOptions& options);
+// The same result from a clip the caller gives up: its key arrays move into the
+// output where they are kept as they are (the same rate), instead of being copied.
+// `clip` is left with its tracks moved out.
+Result<Clip> resample_clip(Clip&& clip, const ResampleOptions& options);
 
 }  // namespace rotinterp

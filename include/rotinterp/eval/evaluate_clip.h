@@ -89,6 +89,11 @@ double sample_time(const ClipReference& reference, std::size_t m);
 Result<ClipReference> prepare_reference(const Clip& clip, const std::string& clip_id,
                                         const ClipEvalOptions& options);
 
+// How many times prepare_reference has run in this process (from any
+// thread): eval builds one per clip and shares it, read-only, among every method and
+// spacing and the worker threads running them; tests hold it to that.
+std::size_t references_prepared();
+
 // Rows of one method for every keep_every × joint, then End Site; none for the
 // spacings skipped_spacings() names. Errors name the clip, the joint and the method.
 Result<std::vector<ErrorRow>> evaluate_method(const ClipReference& reference, const std::string& method,

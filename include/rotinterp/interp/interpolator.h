@@ -48,6 +48,12 @@ struct MethodInfo {
   bool coordinate_invariant;  // left/right multiplying all keys by a fixed rotation maps the curve alike
   bool exact_on_constant_velocity;  // keys of exp(ωt)·q₀ give exactly that curve, at any spacing
   bool preserves_holds;             // a segment between two equal keys is exactly still
+  // Keys on each side of a segment that its curve depends on, bit for bit up to the
+  // sign of the result (segment i is a function of keys i−support+1 … i+support): a
+  // key added, removed or changed moves only the curve between the support-th keys
+  // before and after it. 0: every key (a global spline, or a method whose values
+  // carry a chain from the first key).
+  int support;
   std::function<Result<std::unique_ptr<Interpolator>>(const RotationTrack&)> make;
 };
 

@@ -6,9 +6,11 @@
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/reduce/reduce.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cstddef>
 #include <functional>
+#include <iterator>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -73,6 +75,16 @@ struct KeyValues {
                              std::size_t hi)>
       refit;
 };
+// Merges the sorted new key frames `add` into the sorted `keys` (`scratch`: reused
+// storage), each new key's value started first where values are fitted.
+inline void add_keys(std::vector<std::size_t>& keys, const std::vector<std::size_t>& add, const KeyValues* values,
+                     std::vector<std::size_t>& scratch) {
+  if (values)
+    for (std::size_t f : add) values->start(f);
+  scratch.clear();
+  std::merge(keys.begin(), keys.end(), add.begin(), add.end(), std::back_inserter(scratch));
+  keys.swap(scratch);
+}
 // The residuals of a frame with value q (see Reducer::refit_values).
 using ResidualFn = std::function<double(std::size_t f, const Quat& q, double* out)>;
 

@@ -37,11 +37,7 @@ Status insert_worst(std::vector<std::size_t>& keys, std::size_t frames, const Er
       if (!reset) return Ok{};
       continue;
     }
-    if (values)
-      for (std::size_t f : add) values->start(f);
-    merged.clear();
-    std::merge(keys.begin(), keys.end(), add.begin(), add.end(), std::back_inserter(merged));
-    keys.swap(merged);
+    add_keys(keys, add, values, merged);
     spans.clear();
     std::size_t covered = 0;
     for (std::size_t f : add) {

@@ -96,11 +96,7 @@ Status insert_worst_local(std::vector<std::size_t>& keys, std::size_t frames, co
       if (Status s = errors.measure(); !s) return s;
       continue;
     }
-    if (values)
-      for (std::size_t f : add) values->start(f);
-    merged.clear();
-    std::merge(keys.begin(), keys.end(), add.begin(), add.end(), std::back_inserter(merged));
-    keys.swap(merged);
+    add_keys(keys, add, values, merged);
     for (std::size_t f : add) errors.moved_at(static_cast<std::size_t>(std::lower_bound(keys.begin(), keys.end(), f) - keys.begin()));
     if (Status s = errors.measure(); !s) return s;
   }

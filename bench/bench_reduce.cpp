@@ -65,15 +65,6 @@ struct Kept {
   std::vector<std::vector<std::size_t>> translation;
 };
 
-// The frames' times as reduce keys them: on the recognized rate's exact grid (a CMU
-// file's written .0083333 s is 120 Hz: by frame 2 700 the written times lag the
-// grid's by 9e-5 s, which measured against keys on the grid reads as 0.2 mm of error).
-std::vector<double> frame_times(const FrameGrid& grid) {
-  std::vector<double> t(grid.size());
-  for (std::size_t f = 0; f < t.size(); ++f) t[f] = grid.exact_time(f);
-  return t;
-}
-
 // RDP on frames [a, b] of one track: `error(f, a, b)` is the error at f of the span's
 // straight rebuild (slerp / lerp between the frames a and b).
 template <class Error>
@@ -106,7 +97,7 @@ Kept ozz_baseline(const Clip& clip, const DenseClip& d, double tol, double shell
   for (std::size_t j = 0; j < n; ++j) {
     const auto& q = d.rotation[j];
     std::vector<std::size_t> keep = {0, frames - 1};
-    const std::vector<double> t = frame_times(d.grid);
+    const std::vector<double>& t = d.grid.times;
     rdp(0, frames - 1, tol, [&](std::size_t f, std::size_t a, std::size_t b) {
       const Quat r = slerp(q[a], q[b], (t[f] - t[a]) / (t[b] - t[a]));
       return 2.0 * std::sin(0.5 * angular_distance(q[f], r)) * length[j];
@@ -139,7 +130,7 @@ void measure(const Input& in, const DenseClip& d, const Kept& kept, const std::s
              double tol, double shell, Quality& q) {
   const Clip& clip = in.clip;
   const std::size_t n = clip.skeleton.joints.size(), frames = d.grid.size();
-  const std::vector<double> times = frame_times(d.grid);
+  const std::vector<double>& times = d.grid.times;
   std::vector<std::vector<Quat>> rot(n);
   std::vector<std::vector<Vec3>> pos(n);
   for (std::size_t j = 0; j < n; ++j) {
@@ -258,7 +249,7 @@ int main(int argc, char** argv) {
 
   // Quality, and each method's time (CPU, reduce_clip alone, one run).
   std::vector<DenseClip> dense;
-  for (const Input& in : inputs) dense.push_back(dense_clip(in.clip));
+  for (const Input& in : inputs) dense.push_back(exact_dense_clip(in.clip));  // at the frames' times, as reduce keys them
   Quality base;
   for (std::size_t i = 0; i < inputs.size(); ++i) {
     const Input& in = inputs[i];

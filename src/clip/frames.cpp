@@ -64,6 +64,15 @@ DenseClip dense_clip(const Clip& clip) {
   return d;
 }
 
+DenseClip exact_dense_clip(const Clip& clip) {
+  DenseClip d = dense_clip(clip);
+  if (d.grid.rate) {
+    for (std::size_t k = 0; k < d.grid.size(); ++k) d.grid.times[k] = d.grid.exact_time(k);
+    d.grid.frame_time = d.grid.rate->period();
+  }
+  return d;
+}
+
 std::vector<std::size_t> keep_every_indices(std::size_t frames, std::size_t n) {
   std::vector<std::size_t> out;
   if (frames == 0) return out;

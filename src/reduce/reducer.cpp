@@ -53,18 +53,6 @@ std::vector<std::vector<Quat>> smoothed(const DenseClip& d) {
   return out;
 }
 
-// The source's frames at their exact times, start + k/rate (BVH "Frame Time:
-// 0.0333333" is 1/30 s, not 0.0333333 s): kept keys sit where resample puts frames,
-// and a long clip's last key is not 1e-7·k early.
-DenseClip exact_dense_clip(const Clip& clip) {
-  DenseClip d = dense_clip(clip);
-  if (d.grid.rate) {
-    for (std::size_t k = 0; k < d.grid.size(); ++k) d.grid.times[k] = d.grid.exact_time(k);
-    d.grid.frame_time = d.grid.rate->period();
-  }
-  return d;
-}
-
 Reducer::Reducer(const Clip& clip, const ReduceOptions& o, std::vector<ReduceBudget> budgets,
                  std::optional<LoopCheck> cycle)
     : clip_(clip), o_(o), budget_(std::move(budgets)), dense_(exact_dense_clip(clip)), value_(dense_.rotation),

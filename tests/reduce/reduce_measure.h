@@ -23,15 +23,6 @@ struct Measured {
   std::vector<double> angle;  // per joint, rad
   std::vector<double> shell;  // per joint, clip units
 };
-// The source's frames with each frame k at its exact time, start + k/rate (BVH's
-// printed "Frame Time: 0.0333333" is 1/30 s), where reduce and resample place frames;
-// the values are the source's own.
-inline DenseClip exact_frames(const Clip& clip) {
-  DenseClip d = dense_clip(clip);
-  for (std::size_t k = 0; k < d.grid.size(); ++k) d.grid.times[k] = d.grid.exact_time(k);
-  return d;
-}
-
 inline Measured measure(const Clip& source, const DenseClip& ref, const Motion& test, double shell_distance) {
   const std::size_t n = source.skeleton.joints.size(), frames = ref.grid.size();
   Measured m;

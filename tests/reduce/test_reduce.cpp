@@ -19,7 +19,6 @@
 namespace rotinterp {
 namespace {
 
-using test::exact_frames;
 using test::max_of;
 using test::measure;
 using test::Measured;
@@ -167,7 +166,7 @@ TEST(Reduce, AHandDriftingBeyondTheShellBudgetIsCaughtThoughEveryJointIsWithinIt
     return m;
   });
   const Clip clip = motion.sample(3.0, Rate{60, 1}, "arm");
-  const DenseClip ref = exact_frames(clip);
+  const DenseClip ref = exact_dense_clip(clip);
   auto rebuilt = [&](const ReduceResult& r) {
     Motion m{ref.rotation, ref.translation};
     for (std::size_t j = 0; j < r.joints.size(); ++j)

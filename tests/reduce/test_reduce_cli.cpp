@@ -29,7 +29,6 @@ namespace rotinterp {
 namespace {
 
 namespace fs = std::filesystem;
-using test::exact_frames;
 using test::max_of;
 using test::measure;
 using test::Measured;
@@ -162,7 +161,7 @@ TEST(ReduceCli, EveryMethodKeepsEveryFrameWithinBothBudgetsRebuiltFromTheWritten
   const fs::path dir = temp_dir("json");
   auto source = read_clip(kBandai);
   ASSERT_TRUE(source) << source.error();
-  const DenseClip ref = exact_frames(*source);
+  const DenseClip ref = exact_dense_clip(*source);
   const double unit = source->unit.metres_per_unit;  // inferred: centimetres
   EXPECT_EQ(unit, 0.01);
   for (const MethodInfo& method : methods()) {
@@ -203,7 +202,7 @@ TEST(ReduceCli, GltfReplayedWithTheSpecsInterpolationStaysWithinBudget) {
   const fs::path dir = temp_dir("gltf");
   auto source = read_clip(kBandai);
   ASSERT_TRUE(source) << source.error();
-  const DenseClip ref = exact_frames(*source);
+  const DenseClip ref = exact_dense_clip(*source);
   const double unit = source->unit.metres_per_unit;  // inferred: centimetres
   for (const std::string method : {"slerp", "gltf-cubic"})
     for (const std::string translation : {"linear", "cubic"}) {

@@ -56,6 +56,10 @@ struct DenseClip {
   std::vector<std::vector<Vec3>> translation;  // [joint][frame]: the track, or the rest offset
 };
 DenseClip dense_clip(const Clip& clip);
+// The same at the frames' exact times, start + k/rate (a BVH "Frame Time: 0.0333333" is
+// 1/30 s): where resample puts frames and reduce keys them. A clip without a rate keeps
+// its times.
+DenseClip exact_dense_clip(const Clip& clip);
 
 // Frame indices kept as keys when keeping every nth of `frames` frames:
 // 0, n, 2n, … and always the last frame (frames − 1). n < 1 reads as 1; empty for

@@ -35,7 +35,7 @@ py::list method_list() {
 // ---- interpolate ------------------------------------------------------------------
 
 // quats (K, 4) or (K, J, 4) against times (K,): the joint count (0 for a single track).
-std::size_t joints_of(const Doubles& q, std::size_t k) {
+std::size_t joints_of(const py::array& q, std::size_t k) {
   const bool single = q.ndim() == 2 && q.shape(1) == 4;
   const bool many = q.ndim() == 3 && q.shape(2) == 4;
   if (!single && !many) value_error("quats must have shape (K, 4) or (K, J, 4), got " + shape_text(q));
@@ -47,13 +47,17 @@ std::size_t joints_of(const Doubles& q, std::size_t k) {
 // Joint j's track from times (K,) and raw quaternions (K, J, 4), each key made unit
 // (unit_quat) on the way: the one copy of the keys, which make_interpolator then takes
 // over. False at the first key unit_quat refuses.
-bool gather_unit_track(const double* times, const double* quats, std::size_t k, std::size_t joints, std::size_t j,
+// Components are float64 or float32 (read as they are: each is exactly a double).
+template <class Component>
+bool gather_unit_track(const double* times, const Component* quats, std::size_t k, std::size_t joints, std::size_t j,
                        bool scalar_first, RotationTrack& track) {
   track.times.assign(times, times + k);
   track.keys.resize(k);
   Eigen::Vector4d u = Eigen::Vector4d::Zero();
   for (std::size_t i = 0; i < k; ++i) {
-    if (!unit_quat(quats + 4 * (i * joints + j), u)) return false;
+    const Component* p = quats + 4 * (i * joints + j);
+    const double raw[4] = {p[0], p[1], p[2], p[3]};
+    if (!unit_quat(raw, u)) return false;
     track.keys[i] = quat_at(u.data(), scalar_first);
   }
   return true;
@@ -73,7 +77,8 @@ bool curve_is_its_keys(const std::string& method) {
 // interpolate's work, without the GIL: the (N, J, 4) output `o` (J = joints, 1 for a
 // single track) of `method` on the raw quaternions q (K, J, 4). Returns false on a
 // quaternion that unit_quat refuses, or with a joint's error in `error`.
-bool interpolate_joints(const double* t, const double* q, std::size_t k, std::size_t joints, const double* nt,
+template <class Component>
+bool interpolate_joints(const double* t, const Component* q, std::size_t k, std::size_t joints, const double* nt,
                         std::size_t n, const std::string& method, bool in_scalar_first, bool out_scalar_first,
                         double* o, std::string& error) {
   constexpr std::size_t kBlock = 64;  // output times per evaluate call (measured: 64 to 1024 alike)
@@ -110,14 +115,24 @@ py::array interpolate(const py::handle& times_in, const py::handle& quats_in, co
   const Doubles times = times_array(times_in, "times");
   const Doubles new_times = times_array(new_times_in, "new_times");
   bool in_scalar_first = scalar_first;  // a scipy Rotation comes scalar-last
-  const Doubles quats = quat_array(quats_in, in_scalar_first, "quats");
+  // C-contiguous float32 keys (glTF, PyTorch) are read as they are, like float64: no
+  // converted copy. Anything else comes through quat_array.
+  using Floats = py::array_t<float, py::array::c_style>;
+  const bool floats = !py::hasattr(quats_in, "as_quat") && Floats::check_(quats_in);
+  py::array quats;
+  if (floats) {
+    quats = py::reinterpret_borrow<py::array>(quats_in);
+    require_quat_shape(quats, "quats");
+  } else {
+    quats = quat_array(quats_in, in_scalar_first, "quats");
+  }
   const auto k = static_cast<std::size_t>(times.shape(0));
   std::size_t joints = 0;
   try {
     joints = joints_of(quats, k);
     if (!find_method(method)) value_error(unknown_method_message(method));
   } catch (const py::value_error&) {
-    refuse_bad_quats(quats, "quats");  // a bad quaternion is named first, whatever else is wrong
+    refuse_bad_quats(Doubles::ensure(quats), "quats");  // a bad quaternion is named first, whatever else is wrong
     throw;
   }
   const auto n = static_cast<std::size_t>(new_times.shape(0));
@@ -130,12 +145,14 @@ py::array interpolate(const py::handle& times_in, const py::handle& quats_in, co
   bool keys_unit;
   {
     py::gil_scoped_release release;
-    keys_unit = interpolate_joints(times.data(), quats.data(), k, joints, new_times.data(), n, method, in_scalar_first,
-                                   scalar_first, o, error);
+    keys_unit = floats ? interpolate_joints(times.data(), static_cast<const float*>(quats.data()), k, joints,
+                                            new_times.data(), n, method, in_scalar_first, scalar_first, o, error)
+                       : interpolate_joints(times.data(), static_cast<const double*>(quats.data()), k, joints,
+                                            new_times.data(), n, method, in_scalar_first, scalar_first, o, error);
   }
   // A bad quaternion anywhere is named before a joint's error, as when all keys were
   // made unit before any joint was built.
-  if (!keys_unit || !error.empty()) refuse_bad_quats(quats, "quats");
+  if (!keys_unit || !error.empty()) refuse_bad_quats(Doubles::ensure(quats), "quats");
   if (!error.empty()) value_error(error);
   return out;
 }

@@ -90,6 +90,12 @@ inline std::string quat_index_text(const char* what, const py::array& a, py::ssi
 // library itself keeps its unit-norm contract (RotationTrack rule 3): this is the
 // boundary where rounded data becomes unit.
 //
+inline void require_quat_shape(const py::array& raw, const char* what) {
+  if (raw.ndim() < 1 || raw.shape(raw.ndim() - 1) != 4)
+    value_error(std::string(what) + " must be quaternions: an array of shape (..., 4) or a scipy Rotation, got shape " +
+                shape_text(raw));
+}
+
 // quat_array: the array as float64 (converted only when it is not C-contiguous
 // float64), its last axis 4; scalar_first is set to the layout of its data.
 inline Doubles quat_array(const py::handle& h, bool& scalar_first, const char* what) {
@@ -101,9 +107,7 @@ inline Doubles quat_array(const py::handle& h, bool& scalar_first, const char* w
     raw = Doubles::ensure(h);
   }
   if (!raw) value_error(std::string(what) + " must be quaternions: a numeric array of shape (..., 4) or a scipy Rotation");
-  if (raw.ndim() < 1 || raw.shape(raw.ndim() - 1) != 4)
-    value_error(std::string(what) + " must be quaternions: an array of shape (..., 4) or a scipy Rotation, got shape " +
-                shape_text(raw));
+  require_quat_shape(raw, what);
   return raw;
 }
 

@@ -71,12 +71,13 @@ def test_the_input_arrays_are_left_as_they_were():
 
 
 @pytest.mark.parametrize("method", ["slerp", "c2"])
-def test_a_float64_call_allocates_no_array_but_its_output(method):
-    # numpy reports the arrays it allocates to tracemalloc: a normalized copy of the
-    # (K, J, 4) input would show as a second array of its size at the peak.
+@pytest.mark.parametrize("dtype", [np.float64, np.float32])
+def test_a_call_allocates_no_array_but_its_output(method, dtype):
+    # numpy reports the arrays it allocates to tracemalloc: a normalized (or float64)
+    # copy of the (K, J, 4) input would show as a second array at the peak.
     rng = np.random.default_rng(8)
     t = np.arange(4000) / 120
-    q = rng.normal(size=(4000, J, 4))
+    q = rng.normal(size=(4000, J, 4)).astype(dtype)
     new_t = np.linspace(0, t[-1], 500)
     out_bytes = new_t.size * J * 4 * 8
     rotinterp.interpolate(t, q, new_t, method)  # warm up: first-call allocations

@@ -86,7 +86,7 @@ def main():
     print(f"{'method':7} {'rotinterp M/s':>14} {'scipy M/s':>10} {'C++ M/s':>9} {'vs scipy':>9} {'vs C++':>7}")
     for method, scipy_name, r, s, c, speedup, overhead, goal in rows:
         print(f"{method:7} {r / 1e6:14.2f} {s / 1e6:10.3f} {c / 1e6:9.2f} {speedup:8.1f}x {overhead:6.2f}x"
-              f"   (scipy {scipy_name}; goals: >= {goal}x scipy, <= 1.2x C++)")
+              f"   (scipy {scipy_name}; goals: >= {goal}x scipy, <= 1.1x C++)")
 
 
 if __name__ == "__main__":

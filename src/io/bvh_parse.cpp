@@ -66,80 +66,95 @@ std::string excerpt(std::string_view t) {
   return out;
 }
 
-Result<RowCursor> read_to_rows(std::string_view text, const std::string& label, BvhFile& file) {
+}  // namespace bvh_text
+
+using namespace bvh_text;
+
+Result<BvhFile> parse_bvh(std::string_view text, const std::string& label) {
   // Text encodings: a UTF-8 byte order mark is skipped; UTF-16 (a BOM, or the NUL
   // bytes of ASCII text in it) is named rather than quoted.
   if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
   if (text.substr(0, 2) == "\xFF\xFE" || text.substr(0, 2) == "\xFE\xFF" ||
       (text.size() >= 2 && (text[0] == '\0' || text[1] == '\0')))
     return make_error(label + ": the file is UTF-16 text; BVH is read as UTF-8 or ASCII");
+  BvhFile file;
   const Result<DataStart> start = parse_header(text, label, file);
   if (!start) return start.failure();
-  RowCursor c{text.data() + start->position, text.data() + text.size(), start->line};
-  const char* const rest = c.p;
-  skip_rest_of_row(c);
-  for (const char* i = rest; i < c.p; ++i)
-    if (!is_space(*i))
-      return make_error(label + ": line " + std::to_string(c.line) + ": unexpected text after the Frame Time");
-  return c;
-}
 
-RowParser::RowParser(const BvhFile& file, const std::string& label) : file_(file), label_(label), owner_(file.columns) {
-  for (std::size_t j = 0; j < file.joints.size(); ++j)
-    for (std::size_t c = 0; c < file.joints[j].channels.size(); ++c) owner_[file.joints[j].first_column + c] = {j, c};
-}
-
-// Messages are built only on failure: parse() runs once per value (millions).
-std::string RowParser::where(std::size_t frame, int line) const {
-  return label_ + ": frame " + std::to_string(frame) + " (line " + std::to_string(line) + ")";
-}
-
-std::string RowParser::what(std::size_t column) const {
-  const auto [joint, channel] = owner_[column];
-  return "joint '" + excerpt(file_.joints[joint].name) + "' " + channel_name(file_.joints[joint].channels[channel]);
-}
-
-Status RowParser::parse(RowCursor& c, std::size_t frame, double* row) const {
-  const char* const end = c.end;
-  const char* p = c.p;
-  std::size_t n = 0;
-  while (p < end && *p != '\n') {
-    const char* q = p;
-    while (q < end && !is_space(*q)) ++q;
-    const std::string_view token(p, static_cast<std::size_t>(q - p));
-    if (n >= file_.columns)
-      return make_error(where(frame, c.line) + ": more than the " + std::to_string(file_.columns) +
-                        " values the HIERARCHY declares");
-    double v = 0.0;
-    if (!parse_double(token, v))
-      return make_error(where(frame, c.line) + ", " + what(n) + ": not a number: '" + excerpt(token) + "'");
-    if (!std::isfinite(v))
-      return make_error(where(frame, c.line) + ", " + what(n) + ": value is " + excerpt(token) + " (not finite)");
-    row[n++] = v;
-    p = q;
-    while (p < end && *p != '\n' && is_space(*p)) ++p;
+  // Data rows: one frame per non-blank line, exactly `columns` values each.
+  std::size_t pos = start->position;
+  int line = start->line;
+  // The rest of the Frame Time line must be blank.
+  auto line_end = [&](std::size_t from) {
+    const std::size_t e = text.find('\n', from);
+    return e == std::string_view::npos ? text.size() : e;
+  };
+  {
+    const std::size_t e = line_end(pos);
+    for (std::size_t i = pos; i < e; ++i)
+      if (!is_space(text[i]))
+        return make_error(label + ": line " + std::to_string(line) + ": unexpected text after the Frame Time");
+    pos = e;
   }
-  c.p = p;
-  if (n != file_.columns)
-    return make_error(label_ + ": frame " + std::to_string(frame) + " (line " + std::to_string(c.line) + ") has " +
-                      std::to_string(n) + " values, the HIERARCHY declares " + std::to_string(file_.columns));
-  return Ok{};
-}
-
-}  // namespace bvh_text
-
-using namespace bvh_text;
-
-Result<BvhFile> parse_bvh(std::string_view text, const std::string& label) {
-  BvhFile file;
-  const Result<RowCursor> rows = read_to_rows(text, label, file);
-  if (!rows) return rows.failure();
   // Reserve by what the text can hold, never by the declared count.
-  file.values.reserve(std::min(file.frames, max_rows(*rows, file.columns)) * file.columns);
+  const std::size_t max_rows_in_text = static_cast<std::size_t>(std::count(text.begin() + pos, text.end(), '\n')) + 1;
+  file.values.reserve(std::min(file.frames, max_rows_in_text) * file.columns);
   advise_huge_pages(file.values.data(), file.values.capacity() * sizeof(double));
-  const RowParser parser(file, label);
-  auto append = [&](std::size_t, const double* row) { file.values.insert(file.values.end(), row, row + file.columns); };
-  if (Status s = read_rows(*rows, 0, file.frames, parser, append, file.extra_rows); !s) return s.failure();
+
+  // Which joint/channel owns each column, for messages.
+  std::vector<std::pair<std::size_t, std::size_t>> owner(file.columns);
+  for (std::size_t j = 0; j < file.joints.size(); ++j)
+    for (std::size_t c = 0; c < file.joints[j].channels.size(); ++c) owner[file.joints[j].first_column + c] = {j, c};
+
+  // Messages are built only on failure: this loop runs once per value (millions).
+  auto where = [&](std::size_t at_frame, int at_line) {
+    return label + ": frame " + std::to_string(at_frame) + " (line " + std::to_string(at_line) + ")";
+  };
+  auto what = [&](std::size_t column) {
+    const auto [joint, channel] = owner[column];
+    return "joint '" + excerpt(file.joints[joint].name) + "' " + channel_name(file.joints[joint].channels[channel]);
+  };
+  const char* const end = text.data() + text.size();
+  const char* p = text.data() + pos;
+  std::size_t frame = 0;
+  while (p < end) {
+    ++p;  // past '\n'
+    ++line;
+    // Values up to the end of the line; '\n' is the only line break.
+    while (p < end && *p != '\n' && is_space(*p)) ++p;
+    if (p == end || *p == '\n') continue;  // blank line
+    if (frame == file.frames) {
+      ++file.extra_rows;
+      const void* nl = std::memchr(p, '\n', static_cast<std::size_t>(end - p));
+      p = nl ? static_cast<const char*>(nl) : end;
+      continue;
+    }
+    std::size_t n = 0;
+    while (p < end && *p != '\n') {
+      const char* q = p;
+      while (q < end && !is_space(*q)) ++q;
+      const std::string_view token(p, static_cast<std::size_t>(q - p));
+      if (n >= file.columns)
+        return make_error(where(frame, line) + ": more than the " + std::to_string(file.columns) +
+                          " values the HIERARCHY declares");
+      double v = 0.0;
+      if (!parse_double(token, v))
+        return make_error(where(frame, line) + ", " + what(n) + ": not a number: '" + excerpt(token) + "'");
+      if (!std::isfinite(v))
+        return make_error(where(frame, line) + ", " + what(n) + ": value is " + excerpt(token) + " (not finite)");
+      file.values.push_back(v);
+      ++n;
+      p = q;
+      while (p < end && *p != '\n' && is_space(*p)) ++p;
+    }
+    if (n != file.columns)
+      return make_error(label + ": frame " + std::to_string(frame) + " (line " + std::to_string(line) + ") has " +
+                        std::to_string(n) + " values, the HIERARCHY declares " + std::to_string(file.columns));
+    ++frame;
+  }
+  if (frame < file.frames)
+    return make_error(label + ": 'Frames: " + std::to_string(file.frames) + "' but the file has only " +
+                      std::to_string(frame) + (frame == 1 ? " data row" : " data rows"));
   return file;
 }
 

@@ -1,14 +1,11 @@
 // A parsed BVH file as a clip: its skeleton, layout and every frame's rotations
-// and translations (BvhFile's accessors; long files on two threads), and the steps
-// the streamed read shares with it (bvh_clip.h).
-#include "bvh_clip.h"
+// and translations (BvhFile's accessors; long files on two threads).
 #include "huge_pages.h"
 #include "rotinterp/io/bvh.h"
 #include "rotinterp/core/work_queue.h"
 
 #include <cmath>
 #include <exception>
-#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -63,9 +60,43 @@ BvhLayout bvh_layout(const BvhFile& file) {
   return layout;
 }
 
-namespace bvh_clip {
+namespace {
 
-Clip empty_clip(const BvhFile& file, const std::string& name, std::size_t frames) {
+struct RotationLayout {
+  std::vector<std::size_t> column;  // value column of each rotation channel, in order
+  std::vector<int> axis;
+};
+
+// Frames [f0, f1) of every joint, row by row (the values are row-major: going
+// joint by joint would stream the whole table once per joint). Each rotation is
+// the product of the joint's rotation channels (as BvhFile::rotation), normalized
+// and on the side of the previous frame's key within the range.
+void convert_frames(const BvhFile& file, const std::vector<RotationLayout>& layouts, std::size_t f0, std::size_t f1,
+                    Clip& clip) {
+  const std::size_t n = file.joints.size();
+  for (std::size_t f = f0; f < f1; ++f) {
+    const double* row = file.values.data() + f * file.columns;
+    for (std::size_t j = 0; j < n; ++j) {
+      const RotationLayout& l = layouts[j];
+      Quat q = Quat::Identity();
+      for (std::size_t i = 0; i < l.column.size(); ++i) {
+        const double half = 0.5 * (row[l.column[i]] * (kPi / 180.0));
+        Quat a(std::cos(half), 0.0, 0.0, 0.0);
+        a.vec()[l.axis[i]] = std::sin(half);
+        q = q * a;
+      }
+      q.normalize();  // a product of unit quaternions: its norm is 1 up to round-off
+      std::vector<Quat>& keys = clip.rotations[j].keys;
+      if (f > f0 && q.dot(keys[f - 1]) < 0.0) q.coeffs() = -q.coeffs();
+      keys[f] = q;
+      if (clip.translations[j]) clip.translations[j]->keys[f] = file.translation(f, j);
+    }
+  }
+}
+
+}  // namespace
+
+Clip bvh_to_clip(const BvhFile& file, const std::string& name, unsigned threads) {
   Clip clip;
   clip.name = name;
   clip.skeleton = bvh_skeleton(file);
@@ -73,70 +104,36 @@ Clip empty_clip(const BvhFile& file, const std::string& name, std::size_t frames
   clip.bvh_layout = std::make_shared<const BvhLayout>(bvh_layout(file));
   clip.source_format = "bvh";
   const std::size_t n = file.joints.size();
+  const std::size_t frames = file.frames;
   std::vector<double> times(frames);
   for (std::size_t f = 0; f < frames; ++f) times[f] = static_cast<double>(f) * file.frame_time;
+  std::vector<RotationLayout> layouts(n);
   clip.rotations.resize(n);
   clip.translations.resize(n);
   for (std::size_t j = 0; j < n; ++j) {
+    const BvhJoint& joint = file.joints[j];
+    for (std::size_t c = 0; c < joint.channels.size(); ++c)
+      if (is_rotation(joint.channels[c])) {
+        layouts[j].column.push_back(joint.first_column + c);
+        layouts[j].axis.push_back(axis_of(joint.channels[c]));
+      }
     clip.rotations[j].times = times;
     clip.rotations[j].keys.resize(frames);  // not touched yet: a Quat's default constructor leaves it
     advise_huge_pages(clip.rotations[j].keys.data(), frames * sizeof(Quat));
     if (file.has_position_channels(j)) clip.translations[j] = TranslationTrack{times, std::vector<Vec3>(frames)};
   }
-  return clip;
-}
-
-RowToKeys::RowToKeys(const BvhFile& file) : joints_(file.joints.size()) {
-  for (std::size_t j = 0; j < file.joints.size(); ++j) {
-    const BvhJoint& joint = file.joints[j];
-    JointColumns& l = joints_[j];
-    for (std::size_t c = 0; c < joint.channels.size(); ++c) {
-      const bool rotation = is_rotation(joint.channels[c]);
-      (rotation ? l.rotation_column : l.position_column).push_back(joint.first_column + c);
-      (rotation ? l.rotation_axis : l.position_axis).push_back(axis_of(joint.channels[c]));
-    }
-    l.offset = joint.offset;
-  }
-}
-
-void RowToKeys::operator()(const double* row, std::size_t f, bool first_of_range, Clip& clip) const {
-  for (std::size_t j = 0; j < joints_.size(); ++j) {
-    const JointColumns& l = joints_[j];
-    Quat q = Quat::Identity();
-    for (std::size_t i = 0; i < l.rotation_column.size(); ++i) {
-      const double half = 0.5 * (row[l.rotation_column[i]] * (kPi / 180.0));
-      Quat a(std::cos(half), 0.0, 0.0, 0.0);
-      a.vec()[l.rotation_axis[i]] = std::sin(half);
-      q = q * a;
-    }
-    q.normalize();  // a product of unit quaternions: its norm is 1 up to round-off
-    std::vector<Quat>& keys = clip.rotations[j].keys;
-    if (!first_of_range && q.dot(keys[f - 1]) < 0.0) q.coeffs() = -q.coeffs();
-    keys[f] = q;
-    if (clip.translations[j]) {
-      Vec3 t = l.offset;
-      for (std::size_t i = 0; i < l.position_column.size(); ++i) t[l.position_axis[i]] = row[l.position_column[i]];
-      clip.translations[j]->keys[f] = t;
-    }
-  }
-}
-
-bool worth_two_threads(std::size_t frames, std::size_t columns, unsigned threads) {
-  // The work is trigonometry and first-touch page faults of the new tracks.
+  // Long files convert on two threads, each half of the frames (the work is
+  // trigonometry and first-touch page faults of the new tracks).
   constexpr std::size_t kMinValuesForThreads = 200000;
-  return frames >= 2 && frames * columns >= kMinValuesForThreads && thread_count(threads) > 1;
-}
-
-std::size_t run_in_halves(std::size_t frames, bool two_threads, const std::function<void(std::size_t, std::size_t)>& work) {
   std::size_t split = frames;
   std::exception_ptr helper_error;  // e.g. bad_alloc, rethrown here for read_clip to report
   std::optional<std::thread> helper;
-  if (two_threads) {
+  if (file.values.size() >= kMinValuesForThreads && thread_count(threads) > 1) {
     split = frames / 2;
     try {
       helper.emplace([&] {
         try {
-          work(split, frames);
+          convert_frames(file, layouts, split, frames, clip);
         } catch (...) {
           helper_error = std::current_exception();
         }
@@ -146,37 +143,18 @@ std::size_t run_in_halves(std::size_t frames, bool two_threads, const std::funct
     }
   }
   try {
-    work(0, split);
+    convert_frames(file, layouts, 0, split, clip);
   } catch (...) {
     if (helper) helper->join();
     throw;
   }
   if (helper) helper->join();
   if (helper_error) std::rethrow_exception(helper_error);
-  return split;
-}
-
-void join_halves(Clip& clip, std::size_t split) {
-  for (RotationTrack& r : clip.rotations) {
-    const std::size_t frames = r.keys.size();
-    if (split > 0 && split < frames && r.keys[split].dot(r.keys[split - 1]) < 0.0)
-      for (std::size_t f = split; f < frames; ++f) r.keys[f].coeffs() = -r.keys[f].coeffs();
-  }
-}
-
-}  // namespace bvh_clip
-
-// Frames row by row (the values are row-major: going joint by joint would stream the
-// whole table once per joint).
-Clip bvh_to_clip(const BvhFile& file, const std::string& name, unsigned threads) {
-  using namespace bvh_clip;
-  Clip clip = empty_clip(file, name, file.frames);
-  const RowToKeys to_keys(file);
-  const std::size_t split = run_in_halves(
-      file.frames, worth_two_threads(file.frames, file.columns, threads), [&](std::size_t f0, std::size_t f1) {
-        for (std::size_t f = f0; f < f1; ++f) to_keys(file.values.data() + f * file.columns, f, f == f0, clip);
-      });
-  join_halves(clip, split);
+  // The second half joins the first one's sign.
+  if (split > 0 && split < frames)
+    for (RotationTrack& r : clip.rotations)
+      if (r.keys[split].dot(r.keys[split - 1]) < 0.0)
+        for (std::size_t f = split; f < frames; ++f) r.keys[f].coeffs() = -r.keys[f].coeffs();
   return clip;
 }
 

@@ -22,8 +22,9 @@ namespace fs = std::filesystem;
 // BVH by our own pass, in this process.
 Status read_bvh(const fs::path& path, const ReadOptions& options, ClipFileInfo& info) {
   const Warnings warn{&options.on_warning, &info.warnings};
-  if (Status st = read_bvh_file(path, options, info, warn); !st) return st;
-  if (Status st = summarize_bvh_animation("", path, options, info); !st) return st;
+  Result<BvhFile> bvh = read_bvh_file(path, info, warn);
+  if (!bvh) return bvh.failure();
+  if (Status st = bvh_file_to_clip(*bvh, "", path, options, info); !st) return st;
   return check_clip(info, path.string(), options);
 }
 

@@ -134,24 +134,23 @@ constexpr double kAssimpAgreementRadians = 1e-3 * kPi / 180.0;
 
 // assimp's reading of a BVH against ours: same joints and one key per frame (else
 // an error), same rotations within float precision (else a warning).
-Status compare_with_assimp(const Clip& clip, const aiAnimation* anim, const Warnings& warn,
+Status compare_with_assimp(const BvhFile& bvh, const Clip& clip, const aiAnimation* anim, const Warnings& warn,
                            const std::string& label) {
   std::map<std::string, const aiNodeAnim*> channels;
   for (unsigned c = 0; c < anim->mNumChannels; ++c) channels[anim->mChannels[c]->mNodeName.C_Str()] = anim->mChannels[c];
-  const std::size_t frames = bvh_frames(clip);
-  for (std::size_t j = 0; j < clip.skeleton.joints.size(); ++j) {
-    const std::string& name = clip.skeleton.joints[j].name;
+  for (std::size_t j = 0; j < bvh.joints.size(); ++j) {
+    const std::string& name = bvh.joints[j].name;
     const auto it = channels.find(name);
     if (it == channels.end())
       return make_error(label + ": assimp and rotinterp disagree about the HIERARCHY: no animation channel for joint '" +
                         name + "'");
     const aiNodeAnim* ch = it->second;
-    if (ch->mNumRotationKeys != frames)
+    if (ch->mNumRotationKeys != bvh.frames)
       return make_error(label + ": assimp read " + std::to_string(ch->mNumRotationKeys) + " frames for joint '" + name +
-                        "', rotinterp " + std::to_string(frames));
+                        "', rotinterp " + std::to_string(bvh.frames));
     double worst = 0.0;
     std::size_t worst_frame = 0;
-    for (std::size_t f = 0; f < frames; ++f) {
+    for (std::size_t f = 0; f < bvh.frames; ++f) {
       const aiQuaternion& q = ch->mRotationKeys[f].mValue;
       const double d = angular_distance(clip.rotations[j].keys[f], normalized_or_identity(Quat(q.w, q.x, q.y, q.z)));
       if (d > worst) worst = d, worst_frame = f;
@@ -167,7 +166,8 @@ Status compare_with_assimp(const Clip& clip, const aiAnimation* anim, const Warn
 // reading (which names the animation), compared.
 Status read_bvh_checked(const fs::path& path, const ReadOptions& options, ClipFileInfo& info, const Warnings& warn) {
   const std::string label = path.string();
-  if (Status st = read_bvh_file(path, options, info, warn); !st) return st;
+  Result<BvhFile> bvh = read_bvh_file(path, info, warn);
+  if (!bvh) return bvh.failure();
   Assimp::Importer importer;
   configure(importer, options);
   std::string assimp_error;
@@ -181,9 +181,9 @@ Status read_bvh_checked(const fs::path& path, const ReadOptions& options, ClipFi
     warn(label + ": assimp could not read the motion (" + (assimp_error.empty() ? "no animation" : assimp_error) +
          "); read with rotinterp's own BVH pass");
   }
-  if (Status st = summarize_bvh_animation(anim ? anim->mName.C_Str() : "", path, options, info); !st) return st;
+  if (Status st = bvh_file_to_clip(*bvh, anim ? anim->mName.C_Str() : "", path, options, info); !st) return st;
   if (!anim) return Ok{};
-  if (Status st = compare_with_assimp(info.clip, anim, warn, label); !st)
+  if (Status st = compare_with_assimp(*bvh, info.clip, anim, warn, label); !st)
     return make_error(st.error(), ErrorKind::unreadable);
   return Ok{};
 }

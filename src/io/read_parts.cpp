@@ -1,6 +1,5 @@
 // The steps both the dispatch and the importer's in-process read run (read_parts.h).
 #include "read_parts.h"
-#include "bvh_clip.h"
 #include "huge_pages.h"
 
 #include <fcntl.h>
@@ -13,7 +12,6 @@
 #include <fstream>
 #include <memory>
 #include <string_view>
-#include <utility>
 #include <system_error>
 
 namespace rotinterp {
@@ -117,31 +115,28 @@ bool is_bvh(const fs::path& path, const std::string& ext) {
 
 // The clip comes from our pass: the file's values in double precision (assimp's
 // float keys would use up half of the 1e-4° round-trip budget).
-Status read_bvh_file(const fs::path& path, const ReadOptions& options, ClipFileInfo& info, const Warnings& warn) {
+Result<BvhFile> read_bvh_file(const fs::path& path, ClipFileInfo& info, const Warnings& warn) {
   const std::string label = path.string();
   FileText text;
   if (Status st = text.open(path, label); !st) return make_error(st.error(), ErrorKind::unreadable);
-  Result<StreamedBvh> bvh = read_bvh_text(text.text(), label, path.stem().string(), options.threads);
+  Result<BvhFile> bvh = parse_bvh(text.text(), label);
   if (!bvh) return make_error(bvh.error(), ErrorKind::unreadable);
   info.format = "bvh";
-  info.clip = std::move(bvh->clip);
   if (bvh->extra_rows > 0)
-    warn(label + ": " + std::to_string(bvh->extra_rows) + " data row(s) after the " +
-         std::to_string(bvh_frames(info.clip)) + " declared frames ignored");
-  return Ok{};
+    warn(label + ": " + std::to_string(bvh->extra_rows) + " data row(s) after the " + std::to_string(bvh->frames) +
+         " declared frames ignored");
+  return bvh;
 }
 
-std::size_t bvh_frames(const Clip& clip) { return clip.rotations.front().keys.size(); }
-
-Status summarize_bvh_animation(const std::string& animation_name, const fs::path& path, const ReadOptions& options,
-                               ClipFileInfo& info) {
-  const Clip& clip = info.clip;
-  const AnimationSummary s{animation_name, static_cast<double>(bvh_frames(clip) - 1) * clip.frame_time,
-                           1.0 / clip.frame_time, false, clip.skeleton.joints.size()};
+Status bvh_file_to_clip(const BvhFile& bvh, const std::string& animation_name, const fs::path& path,
+                        const ReadOptions& options, ClipFileInfo& info) {
+  const AnimationSummary s{animation_name, static_cast<double>(bvh.frames - 1) * bvh.frame_time, 1.0 / bvh.frame_time,
+                           false, bvh.joints.size()};
   info.animations.push_back(s);
   if (!options.animation.empty() && options.animation != "0" && options.animation != s.name)
     return make_error(path.string() + ": a BVH file has one animation (0); there is no animation '" +
                       options.animation + "'");
+  info.clip = bvh_to_clip(bvh, path.stem().string(), options.threads);
   return Ok{};
 }
 

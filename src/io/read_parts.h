@@ -38,19 +38,15 @@ Status check_file(const std::filesystem::path& path, const std::string& label);
 // BVH content: by extension, or a HIERARCHY first under another one.
 bool is_bvh(const std::filesystem::path& path, const std::string& ext);
 
-// Our BVH pass, first half: the file read straight into info.clip (named after the
-// file; info.format set, extra data rows a warning).
-Status read_bvh_file(const std::filesystem::path& path, const ReadOptions& options, ClipFileInfo& info,
-                     const Warnings& warn);
+// Our BVH pass, first half: the file parsed (info.format set, extra data rows a
+// warning).
+Result<BvhFile> read_bvh_file(const std::filesystem::path& path, ClipFileInfo& info, const Warnings& warn);
 
-// The frame count of a clip that read_bvh_file made (every track has a key per frame).
-std::size_t bvh_frames(const Clip& clip);
-
-// Our BVH pass, second half: the file's one animation (named `animation_name`, which
-// only assimp's reading gives) summarized in `info`, options.animation checked
-// against it.
-Status summarize_bvh_animation(const std::string& animation_name, const std::filesystem::path& path,
-                               const ReadOptions& options, ClipFileInfo& info);
+// Our BVH pass, second half: the file's one animation (named `animation_name`,
+// which only assimp's reading gives) summarized in `info`, options.animation
+// checked against it, and the clip.
+Status bvh_file_to_clip(const BvhFile& bvh, const std::string& animation_name, const std::filesystem::path& path,
+                        const ReadOptions& options, ClipFileInfo& info);
 
 // What every read checks last: a valid clip whose joints nest no deeper than BVH
 // allows (scene_to_clip takes any depth assimp gives; callers may walk the tree).

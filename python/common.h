@@ -88,10 +88,17 @@ inline std::string quat_index_text(const char* what, const py::array& a, py::ssi
 // finite non-zero quaternion normalized; or any object with as_quat() (a scipy
 // Rotation), whose scalar-last layout is used whatever scalar_first says. The
 // library itself keeps its unit-norm contract (RotationTrack rule 3): this is the
-// boundary where rounded data becomes unit. A zero, NaN or infinite quaternion is
-// refused by its index. Returns the normalized float64 copy; scalar_first is set to
-// the layout of its data.
-inline Doubles unit_quats(const py::handle& h, bool& scalar_first, const char* what) {
+// boundary where rounded data becomes unit.
+//
+inline void require_quat_shape(const py::array& raw, const char* what) {
+  if (raw.ndim() < 1 || raw.shape(raw.ndim() - 1) != 4)
+    value_error(std::string(what) + " must be quaternions: an array of shape (..., 4) or a scipy Rotation, got shape " +
+                shape_text(raw));
+}
+
+// quat_array: the array as float64 (converted only when it is not C-contiguous
+// float64), its last axis 4; scalar_first is set to the layout of its data.
+inline Doubles quat_array(const py::handle& h, bool& scalar_first, const char* what) {
   Doubles raw;
   if (py::hasattr(h, "as_quat")) {
     raw = Doubles::ensure(h.attr("as_quat")());
@@ -100,21 +107,45 @@ inline Doubles unit_quats(const py::handle& h, bool& scalar_first, const char* w
     raw = Doubles::ensure(h);
   }
   if (!raw) value_error(std::string(what) + " must be quaternions: a numeric array of shape (..., 4) or a scipy Rotation");
-  if (raw.ndim() < 1 || raw.shape(raw.ndim() - 1) != 4)
-    value_error(std::string(what) + " must be quaternions: an array of shape (..., 4) or a scipy Rotation, got shape " +
-                shape_text(raw));
+  require_quat_shape(raw, what);
+  return raw;
+}
+
+// The 4 components at p made unit into `unit`, in the same layout; false for a zero,
+// NaN or infinite quaternion. Scaled by the largest component first: no overflow or
+// underflow in the norm for finite components of any size (1e300 or 1e-320).
+inline bool unit_quat(const double* p, Eigen::Vector4d& unit) {
+  const Eigen::Map<const Eigen::Vector4d> q(p);
+  if (!q.allFinite()) return false;
+  const double largest = q.cwiseAbs().maxCoeff();
+  if (largest == 0.0) return false;
+  const Eigen::Vector4d scaled = q / largest;
+  unit = scaled / scaled.norm();
+  return true;
+}
+
+// Raises the error for the first quaternion of `raw` that unit_quat refuses, by its
+// index (numpy's order); returns if there is none.
+inline void refuse_bad_quats(const Doubles& raw, const char* what) {
+  Eigen::Vector4d unused = Eigen::Vector4d::Zero();
+  for (py::ssize_t i = 0; i < raw.size() / 4; ++i) {
+    const double* p = raw.data() + 4 * i;
+    if (unit_quat(p, unused)) continue;
+    if (!Eigen::Map<const Eigen::Vector4d>(p).allFinite()) value_error(quat_index_text(what, raw, i) + " is not finite");
+    value_error(quat_index_text(what, raw, i) + " is zero: a rotation needs a non-zero quaternion");
+  }
+}
+
+// quat_array normalized into a float64 copy (for the calls that keep the whole array).
+inline Doubles unit_quats(const py::handle& h, bool& scalar_first, const char* what) {
+  const Doubles raw = quat_array(h, scalar_first, what);
   Doubles out(shape_of(raw));
   const double* p = raw.data();
   double* o = out.mutable_data();
+  Eigen::Vector4d unit = Eigen::Vector4d::Zero();
   for (py::ssize_t i = 0; i < raw.size() / 4; ++i) {
-    const Eigen::Map<const Eigen::Vector4d> q(p + 4 * i);
-    if (!q.allFinite()) value_error(quat_index_text(what, raw, i) + " is not finite");
-    // Scaled by the largest component first: no overflow or underflow in the norm
-    // for finite components of any size (1e300 or 1e-320).
-    const double largest = q.cwiseAbs().maxCoeff();
-    if (largest == 0.0) value_error(quat_index_text(what, raw, i) + " is zero: a rotation needs a non-zero quaternion");
-    const Eigen::Vector4d scaled = q / largest;
-    Eigen::Map<Eigen::Vector4d>(o + 4 * i) = scaled / scaled.norm();
+    if (!unit_quat(p + 4 * i, unit)) refuse_bad_quats(raw, what);
+    Eigen::Map<Eigen::Vector4d>(o + 4 * i) = unit;
   }
   return out;
 }

@@ -332,8 +332,8 @@ bool needs_refinement(const detail::Keys& k, double max_step) {
 
 }  // namespace
 
-Result<std::unique_ptr<Interpolator>> make_bf(const RotationTrack& track, const BfSplineOptions& options) {
-  auto keys = detail::prepare(track);
+Result<std::unique_ptr<Interpolator>> make_bf(RotationTrack track, const BfSplineOptions& options) {
+  auto keys = detail::prepare(std::move(track));
   if (!keys) return keys.failure();
   RotationTrack original;
   original.times = keys->t;

@@ -68,8 +68,8 @@ std::vector<Vec3> c2_rates(const detail::Keys& k, const std::vector<Vec3>& rho, 
 
 }  // namespace
 
-Result<std::unique_ptr<Interpolator>> make_c2(const RotationTrack& track, const C2Options& options) {
-  auto keys = detail::prepare(track);
+Result<std::unique_ptr<Interpolator>> make_c2(RotationTrack track, const C2Options& options) {
+  auto keys = detail::prepare(std::move(track));
   if (!keys) return keys.failure();
   std::vector<Vec3> rho = detail::segment_logs(*keys);
   const std::vector<Vec3> w = rho.empty() ? std::vector<Vec3>{} : c2_rates(*keys, rho, options);

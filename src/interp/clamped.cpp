@@ -31,8 +31,8 @@ std::vector<Vec3> clamped_rates(const detail::Keys& k, const std::vector<Vec3>& 
 
 }  // namespace
 
-Result<std::unique_ptr<Interpolator>> make_clamped(const RotationTrack& track) {
-  auto keys = detail::prepare(track);
+Result<std::unique_ptr<Interpolator>> make_clamped(RotationTrack track) {
+  auto keys = detail::prepare(std::move(track));
   if (!keys) return keys.failure();
   std::vector<Vec3> rho = detail::segment_logs(*keys);
   const std::vector<Vec3> w = rho.empty() ? std::vector<Vec3>{} : clamped_rates(*keys, rho);

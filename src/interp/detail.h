@@ -34,21 +34,20 @@ struct Keys {
   std::size_t size() const { return t.size(); }
 };
 
-inline Result<Keys> prepare(const RotationTrack& track) {
-  RotationTrack aligned = track;
+// Works in place on the track it is given: a track passed with std::move (the
+// Python module's, built per call) becomes the interpolator's keys without a copy.
+inline Result<Keys> prepare(RotationTrack track) {
+  std::vector<Quat>& q = track.keys;
   // Align signs first so that only rules 1–3 can fail: interpolators accept keys
   // in either hemisphere and take the short way (rule 4 is established here).
-  for (std::size_t k = 1; k < aligned.keys.size() && k < aligned.times.size(); ++k)
-    if (aligned.keys[k].coeffs().allFinite()) aligned.keys[k] = align_pair(aligned.keys[k - 1], aligned.keys[k]);
-  if (Status s = aligned.validate(); !s) return s.failure();
-  Keys out;
-  out.t = std::move(aligned.times);
-  out.q.reserve(aligned.keys.size());
-  for (std::size_t k = 0; k < aligned.keys.size(); ++k) {
-    out.q.push_back(normalized_or_identity(aligned.keys[k]));
-    if (k > 0) out.q[k] = align_pair(out.q[k - 1], out.q[k]);
+  for (std::size_t k = 1; k < q.size() && k < track.times.size(); ++k)
+    if (q[k].coeffs().allFinite()) q[k] = align_pair(q[k - 1], q[k]);
+  if (Status s = track.validate(); !s) return s.failure();
+  for (std::size_t k = 0; k < q.size(); ++k) {
+    q[k] = normalized_or_identity(q[k]);
+    if (k > 0) q[k] = align_pair(q[k - 1], q[k]);
   }
-  return out;
+  return Keys{std::move(track.times), std::move(q)};
 }
 
 // Position of t on a key timeline with ≥ 2 keys: segment i ∈ [0, n−2] and the

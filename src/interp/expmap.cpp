@@ -97,8 +97,8 @@ class ExpmapInterpolator final : public detail::SegmentInterpolator<ExpmapInterp
 
 }  // namespace
 
-Result<std::unique_ptr<Interpolator>> make_expmap(const RotationTrack& track, const ExpmapOptions& options) {
-  auto keys = detail::prepare(track);
+Result<std::unique_ptr<Interpolator>> make_expmap(RotationTrack track, const ExpmapOptions& options) {
+  auto keys = detail::prepare(std::move(track));
   if (!keys) return keys.failure();
   return std::unique_ptr<Interpolator>(new ExpmapInterpolator(std::move(*keys), options));
 }

@@ -93,14 +93,14 @@ Quat gltf_cubic_segment(const Quat& q0, const Eigen::Vector4d& b0, const Quat& q
   return q;
 }
 
-Result<GltfCubicKeys> gltf_cubic_keys(const RotationTrack& track) {
-  auto keys = detail::prepare(track);
+Result<GltfCubicKeys> gltf_cubic_keys(RotationTrack track) {
+  auto keys = detail::prepare(std::move(track));
   if (!keys) return keys.failure();
   return tangents_for(std::move(*keys));
 }
 
-Result<std::unique_ptr<Interpolator>> make_gltf_cubic(const RotationTrack& track) {
-  auto keys = gltf_cubic_keys(track);
+Result<std::unique_ptr<Interpolator>> make_gltf_cubic(RotationTrack track) {
+  auto keys = gltf_cubic_keys(std::move(track));
   if (!keys) return keys.failure();
   detail::Keys k{std::move(keys->times), std::move(keys->keys)};
   return std::unique_ptr<Interpolator>(new GltfCubicInterpolator(std::move(k), std::move(keys->tangents)));

@@ -11,6 +11,7 @@
 #include "rotinterp/interp/squad.h"
 
 #include <algorithm>
+#include <utility>
 
 namespace rotinterp {
 
@@ -25,27 +26,27 @@ const std::vector<MethodInfo>& methods() {
   using Made = Result<std::unique_ptr<Interpolator>>;
   static const std::vector<MethodInfo> all = {
       {"slerp", "piecewise geodesic (shortest arc) between neighbouring keys", 0, true, true, true,
-       1, [](const RotationTrack& t) -> Made { return make_slerp(t); }},
+       1, [](RotationTrack t) -> Made { return make_slerp(std::move(t)); }},
       {"squad", "Shoemake's spherical quadrangle, control points scaled for non-uniform times", 1, true, true, false,
-       2, [](const RotationTrack& t) -> Made { return make_squad(t); }},
+       2, [](RotationTrack t) -> Made { return make_squad(std::move(t)); }},
       {"expmap", "Catmull-Rom spline of the unwrapped rotation vectors (Grassia), mapped back with exp", 1, false, false, false,
-       0, [](const RotationTrack& t) -> Made { return make_expmap(t); }},
+       0, [](RotationTrack t) -> Made { return make_expmap(std::move(t)); }},
       {"nlerp", "normalized linear blend of neighbouring keys (not constant speed)", 0, true, false, true,
-       1, [](const RotationTrack& t) -> Made { return make_nlerp(t); }},
+       1, [](RotationTrack t) -> Made { return make_nlerp(std::move(t)); }},
       {"bf", "Buss-Fillmore spherical cubic B-spline through the keys (weighted spherical averages)", 2, true, true, false,
-       0, [](const RotationTrack& t) -> Made { return make_bf(t); }},
+       0, [](RotationTrack t) -> Made { return make_bf(std::move(t)); }},
       {"c2", "cubic in the local rotation vector with continuous angular acceleration (as scipy RotationSpline)", 2,
-       true, true, false, 0, [](const RotationTrack& t) -> Made { return make_c2(t); }},
+       true, true, false, 0, [](RotationTrack t) -> Made { return make_c2(std::move(t)); }},
       {"expmap-c2", "natural cubic spline of the unwrapped rotation vectors, mapped back with exp", 2, false, false, false,
-       0, [](const RotationTrack& t) -> Made {
+       0, [](RotationTrack t) -> Made {
          ExpmapOptions o;
          o.spline = ExpmapOptions::Spline::natural;
-         return make_expmap(t, o);
+         return make_expmap(std::move(t), o);
        }},
       {"clamped", "shape-preserving C1 cubic (Steffen's limiter on SO(3)): holds stay still, no overshoot at stops", 1,
-       true, true, true, 2, [](const RotationTrack& t) -> Made { return make_clamped(t); }},
+       true, true, true, 2, [](RotationTrack t) -> Made { return make_clamped(std::move(t)); }},
       {"gltf-cubic", "glTF CUBICSPLINE: Hermite cubic of the quaternion components, normalized (clamped's key rates)", 1,
-       true, false, true, 2, [](const RotationTrack& t) -> Made { return make_gltf_cubic(t); }},
+       true, false, true, 2, [](RotationTrack t) -> Made { return make_gltf_cubic(std::move(t)); }},
   };
   return all;
 }
@@ -103,12 +104,12 @@ std::string method_names() {
   return s;
 }
 
-Result<std::unique_ptr<Interpolator>> make_interpolator(std::string_view method, const RotationTrack& track) {
+Result<std::unique_ptr<Interpolator>> make_interpolator(std::string_view method, RotationTrack track) {
   const MethodInfo* m = find_method(method);
   if (!m) return make_error(unknown_method_message(method));
   // Every method validates the track itself (rules 1–3 of RotationTrack; signs
   // are aligned there, so keys may come in either hemisphere).
-  return m->make(track);
+  return m->make(std::move(track));
 }
 
 }  // namespace rotinterp

@@ -39,8 +39,8 @@ class NlerpInterpolator final : public detail::SegmentInterpolator<NlerpInterpol
 
 }  // namespace
 
-Result<std::unique_ptr<Interpolator>> make_nlerp(const RotationTrack& track) {
-  auto keys = detail::prepare(track);
+Result<std::unique_ptr<Interpolator>> make_nlerp(RotationTrack track) {
+  auto keys = detail::prepare(std::move(track));
   if (!keys) return keys.failure();
   return std::unique_ptr<Interpolator>(new NlerpInterpolator(std::move(*keys)));
 }

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace rotinterp {
@@ -61,7 +62,7 @@ Result<std::unique_ptr<Interpolator>> make_periodic_interpolator(std::string_vie
     unrolled.times.push_back(track.times[i] + static_cast<double>(cycles) * period);
     unrolled.keys.push_back(track.keys[i]);
   }
-  auto made = m->make(unrolled);
+  auto made = m->make(std::move(unrolled));
   if (!made) return made.failure();
   return std::unique_ptr<Interpolator>(
       std::make_unique<PeriodicInterpolator>(std::move(made.value()), track.times.front(), period));

@@ -30,8 +30,8 @@ class SlerpInterpolator final : public detail::SegmentInterpolator<SlerpInterpol
 
 }  // namespace
 
-Result<std::unique_ptr<Interpolator>> make_slerp(const RotationTrack& track) {
-  auto keys = detail::prepare(track);
+Result<std::unique_ptr<Interpolator>> make_slerp(RotationTrack track) {
+  auto keys = detail::prepare(std::move(track));
   if (!keys) return keys.failure();
   return std::unique_ptr<Interpolator>(new SlerpInterpolator(std::move(*keys)));
 }

@@ -85,8 +85,8 @@ class SquadInterpolator final : public detail::SegmentInterpolator<SquadInterpol
 
 }  // namespace
 
-Result<std::unique_ptr<Interpolator>> make_squad(const RotationTrack& track) {
-  auto keys = detail::prepare(track);
+Result<std::unique_ptr<Interpolator>> make_squad(RotationTrack track) {
+  auto keys = detail::prepare(std::move(track));
   if (!keys) return keys.failure();
   return std::unique_ptr<Interpolator>(new SquadInterpolator(std::move(*keys)));
 }

@@ -57,6 +57,6 @@ struct BfSplineOptions {
 // Errors: invalid track; control points that do not converge to 1e-9 rad even at
 // the finest refinement (not seen in the test suite, which includes 10⁶
 // adversarial key pairs).
-Result<std::unique_ptr<Interpolator>> make_bf(const RotationTrack& track, const BfSplineOptions& options = {});
+Result<std::unique_ptr<Interpolator>> make_bf(RotationTrack track, const BfSplineOptions& options = {});
 
 }  // namespace rotinterp

@@ -32,6 +32,6 @@ struct C2Options {
   int max_iterations = 100;
 };
 
-Result<std::unique_ptr<Interpolator>> make_c2(const RotationTrack& track, const C2Options& options = {});
+Result<std::unique_ptr<Interpolator>> make_c2(RotationTrack track, const C2Options& options = {});
 
 }  // namespace rotinterp

@@ -40,6 +40,6 @@
 
 namespace rotinterp {
 
-Result<std::unique_ptr<Interpolator>> make_clamped(const RotationTrack& track);
+Result<std::unique_ptr<Interpolator>> make_clamped(RotationTrack track);
 
 }  // namespace rotinterp

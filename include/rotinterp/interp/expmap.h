@@ -36,6 +36,6 @@ struct ExpmapOptions {
   bool relative_to_mean = false;
 };
 
-Result<std::unique_ptr<Interpolator>> make_expmap(const RotationTrack& track, const ExpmapOptions& options = {});
+Result<std::unique_ptr<Interpolator>> make_expmap(RotationTrack track, const ExpmapOptions& options = {});
 
 }  // namespace rotinterp

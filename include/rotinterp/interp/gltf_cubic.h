@@ -45,7 +45,7 @@ struct GltfCubicKeys {
 };
 
 // The keys and tangents of `track` (rules 1–3 of RotationTrack; signs are aligned here).
-Result<GltfCubicKeys> gltf_cubic_keys(const RotationTrack& track);
+Result<GltfCubicKeys> gltf_cubic_keys(RotationTrack track);
 
 // glTF's CUBICSPLINE rotation at s ∈ [0, 1] of a segment of length dt: the Hermite
 // cubic of the components, normalized (a zero p — which our tangents never give —
@@ -53,6 +53,6 @@ Result<GltfCubicKeys> gltf_cubic_keys(const RotationTrack& track);
 Quat gltf_cubic_segment(const Quat& q0, const Eigen::Vector4d& b0, const Quat& q1, const Eigen::Vector4d& a1, double dt,
                         double s);
 
-Result<std::unique_ptr<Interpolator>> make_gltf_cubic(const RotationTrack& track);
+Result<std::unique_ptr<Interpolator>> make_gltf_cubic(RotationTrack track);
 
 }  // namespace rotinterp

@@ -54,7 +54,7 @@ struct MethodInfo {
   // before and after it. 0: every key (a global spline, or a method whose values
   // carry a chain from the first key).
   int support;
-  std::function<Result<std::unique_ptr<Interpolator>>(const RotationTrack&)> make;
+  std::function<Result<std::unique_ptr<Interpolator>>(RotationTrack)> make;
 };
 
 // All methods, in a stable order: slerp, squad, expmap, nlerp, bf, c2, expmap-c2, clamped,
@@ -73,7 +73,8 @@ std::string unknown_method_message(std::string_view name);
 // (times strictly increasing, finite unit keys); rule 4 (sign continuity) is not
 // required: every method aligns neighbouring keys to one hemisphere itself and
 // so always takes the short way (a key pair 338° apart "as stored" is followed
-// as the 22° it is).
-Result<std::unique_ptr<Interpolator>> make_interpolator(std::string_view method, const RotationTrack& track);
+// as the 22° it is). The track is taken by value and its storage becomes the
+// interpolator's keys: pass std::move(track) to build without copying it.
+Result<std::unique_ptr<Interpolator>> make_interpolator(std::string_view method, RotationTrack track);
 
 }  // namespace rotinterp

@@ -18,6 +18,6 @@ namespace rotinterp {
 // exactly 180°). a, b unit; t in [0, 1].
 Quat nlerp(const Quat& a, const Quat& b, double t);
 
-Result<std::unique_ptr<Interpolator>> make_nlerp(const RotationTrack& track);
+Result<std::unique_ptr<Interpolator>> make_nlerp(RotationTrack track);
 
 }  // namespace rotinterp

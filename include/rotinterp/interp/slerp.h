@@ -15,6 +15,6 @@
 namespace rotinterp {
 
 // Builds the slerp interpolator (track validated; keys may be in either hemisphere).
-Result<std::unique_ptr<Interpolator>> make_slerp(const RotationTrack& track);
+Result<std::unique_ptr<Interpolator>> make_slerp(RotationTrack track);
 
 }  // namespace rotinterp

@@ -43,6 +43,6 @@ namespace rotinterp {
 // `mix`), never flipped to the short side.
 Quat squad(const Quat& q0, const Quat& q1, const Quat& a, const Quat& b, double h);
 
-Result<std::unique_ptr<Interpolator>> make_squad(const RotationTrack& track);
+Result<std::unique_ptr<Interpolator>> make_squad(RotationTrack track);
 
 }  // namespace rotinterp

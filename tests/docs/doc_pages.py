@@ -4,7 +4,7 @@ import re
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
-PAGES = [ROOT / "README.md"] + sorted((ROOT / "docs").glob("*.md"))
+PAGES = [ROOT / "README.md"] + sorted((ROOT / "docs").rglob("*.md"))
 
 # A fence may be indented (a block inside a list item); its info string is the language and,
 # for a block that must not run, the word "no-run".

@@ -88,8 +88,9 @@ inline std::string quat_index_text(const char* what, const py::array& a, py::ssi
 // finite non-zero quaternion normalized; or any object with as_quat() (a scipy
 // Rotation), whose scalar-last layout is used whatever scalar_first says. The
 // library itself keeps its unit-norm contract (RotationTrack rule 3): this is the
-// boundary where rounded data becomes unit.
-//
+// boundary where rounded data becomes unit (unit_quat, below).
+
+// Refuses an array whose last axis is not 4, naming `what` and its shape.
 inline void require_quat_shape(const py::array& raw, const char* what) {
   if (raw.ndim() < 1 || raw.shape(raw.ndim() - 1) != 4)
     value_error(std::string(what) + " must be quaternions: an array of shape (..., 4) or a scipy Rotation, got shape " +

@@ -14,6 +14,7 @@
 #include "rotinterp/io/write.h"
 
 #include <cerrno>
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -81,6 +82,8 @@ Clip resample(const Clip& clip, const py::object& fps, const py::object& keep_ev
   o.translation = checked(parse_translation_interp(translation));
   if (!range.is_none()) {
     const auto r = range.cast<std::pair<std::optional<double>, std::optional<double>>>();
+    for (const std::optional<double>& end : {r.first, r.second})
+      if (end && !std::isfinite(*end)) value_error("range has a non-finite value: " + std::to_string(*end));
     TimeRange tr;
     if (r.first) tr.start = *r.first;
     if (r.second) tr.end = *r.second;

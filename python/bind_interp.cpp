@@ -36,6 +36,8 @@ py::list method_list() {
 
 // quats (K, 4) or (K, J, 4) against times (K,): the joint count (0 for a single track).
 std::size_t joints_of(const py::array& q, std::size_t k) {
+  if (q.ndim() >= 1 && q.shape(0) == 0 && k == 0)
+    value_error("times and quats are empty (quats of shape " + shape_text(q) + "): a track needs at least one key");
   const bool single = q.ndim() == 2 && q.shape(1) == 4;
   const bool many = q.ndim() == 3 && q.shape(2) == 4;
   if (!single && !many) value_error("quats must have shape (K, 4) or (K, J, 4), got " + shape_text(q));
@@ -111,9 +113,11 @@ bool interpolate_joints(const double* t, const Component* q, std::size_t k, std:
 }
 
 py::array interpolate(const py::handle& times_in, const py::handle& quats_in, const py::handle& new_times_in,
-                      const std::string& method, bool scalar_first) {
+                      const std::string& method, bool scalar_first, const std::string& extrapolate) {
   const Doubles times = times_array(times_in, "times");
-  const Doubles new_times = times_array(new_times_in, "new_times");
+  const Extrapolate ends = extrapolate_of(extrapolate);
+  const double first = times.size() ? times.data()[0] : 0.0, last = times.size() ? times.data()[times.size() - 1] : 0.0;
+  const Doubles new_times = sample_times(new_times_in, "new_times", ends, first, last);
   bool in_scalar_first = scalar_first;  // a scipy Rotation comes scalar-last
   // C-contiguous float32 keys (glTF, PyTorch) are read as they are, like float64: no
   // converted copy. Anything else comes through quat_array.
@@ -130,13 +134,14 @@ py::array interpolate(const py::handle& times_in, const py::handle& quats_in, co
   std::size_t joints = 0;
   try {
     joints = joints_of(quats, k);
-    if (!find_method(method)) value_error(unknown_method_message(method));
+    method_of(method);
   } catch (const py::value_error&) {
     refuse_bad_quats(Doubles::ensure(quats), "quats");  // a bad quaternion is named first, whatever else is wrong
     throw;
   }
-  const auto n = static_cast<std::size_t>(new_times.shape(0));
-  std::vector<py::ssize_t> shape = {static_cast<py::ssize_t>(n)};
+  const auto n = static_cast<std::size_t>(new_times.size());
+  std::vector<py::ssize_t> shape;  // a number gives one sample's shape: (4,) or (J, 4)
+  if (new_times.ndim() == 1) shape.push_back(static_cast<py::ssize_t>(n));
   if (joints) shape.push_back(static_cast<py::ssize_t>(joints));
   shape.push_back(4);
   py::array_t<double> out(shape);
@@ -160,8 +165,9 @@ py::array interpolate(const py::handle& times_in, const py::handle& quats_in, co
 // One track's interpolator, callable on times.
 class PyInterpolator {
  public:
-  PyInterpolator(const py::handle& times_in, const py::handle& quats_in, std::string method, bool scalar_first)
-      : method_(std::move(method)), scalar_first_(scalar_first) {
+  PyInterpolator(const py::handle& times_in, const py::handle& quats_in, const std::string& method, bool scalar_first,
+                 const std::string& extrapolate)
+      : method_(method_of(method).name), scalar_first_(scalar_first), extrapolate_(extrapolate_of(extrapolate)) {
     const Doubles times = times_array(times_in, "times");
     bool in_scalar_first = scalar_first;  // a scipy Rotation comes scalar-last
     const Doubles quats = unit_quats(quats_in, in_scalar_first, "quats");
@@ -207,8 +213,7 @@ class PyInterpolator {
 
   template <class Fill>
   py::object apply(const py::handle& t, py::ssize_t width, Fill fill) const {
-    const Doubles x = Doubles::ensure(t);
-    if (!x || x.ndim() > 1) value_error("t must be a number or a 1-D array of seconds");
+    const Doubles x = sample_times(t, "t", extrapolate_, track_.times.front(), track_.times.back());
     const bool scalar = x.ndim() == 0;  // a number of any type, numpy's float32 included
     const auto n = static_cast<std::size_t>(x.size());
     py::array_t<double> out(scalar ? std::vector<py::ssize_t>{width}
@@ -224,6 +229,7 @@ class PyInterpolator {
 
   std::string method_;
   bool scalar_first_;
+  Extrapolate extrapolate_;
   RotationTrack track_;
   std::unique_ptr<Interpolator> curve_;
 };
@@ -269,6 +275,14 @@ py::tuple swing_twist_split(const py::handle& q_in, const py::handle& axis_in, b
 void bind_interp(py::module_& m) {
   py::class_<PyInterpolator>(m, "Interpolator")
       .def("__call__", &PyInterpolator::call, py::arg("t"))
+      .def(
+          "__call__",  // scipy's RotationSpline(t, order): the derivatives have their own names here
+          [](const PyInterpolator&, const py::handle&, const py::handle&) -> py::object {
+            throw py::type_error(
+                "an Interpolator takes only t: for scipy's RotationSpline(t, 1) and (t, 2) call "
+                "f.angular_velocity(t, frame=\"body\") and f.angular_acceleration(t, frame=\"body\")");
+          },
+          py::arg("t"), py::arg("order"))
       .def("angular_velocity", &PyInterpolator::angular_velocity, py::arg("t"), py::arg("frame") = "fixed")
       .def("angular_acceleration", &PyInterpolator::angular_acceleration, py::arg("t"), py::arg("frame") = "fixed")
       .def_property_readonly("method", &PyInterpolator::method)
@@ -277,13 +291,13 @@ void bind_interp(py::module_& m) {
   m.def("methods", &method_list);
   m.def(
       "make_interpolator",
-      [](const py::handle& times, const py::handle& quats, const std::string& method, bool scalar_first) {
-        return PyInterpolator(times, quats, method, scalar_first);
-      },
+      [](const py::handle& times, const py::handle& quats, const std::string& method, bool scalar_first,
+         const std::string& extrapolate) { return PyInterpolator(times, quats, method, scalar_first, extrapolate); },
       py::arg("times"), py::arg("quats"), py::arg("method") = std::string(kDefaultResampleMethod),
-      py::arg("scalar_first") = false);
+      py::arg("scalar_first") = false, py::arg("extrapolate") = "clamp");
   m.def("interpolate", &interpolate, py::arg("times"), py::arg("quats"), py::arg("new_times"),
-        py::arg("method") = std::string(kDefaultResampleMethod), py::arg("scalar_first") = false);
+        py::arg("method") = std::string(kDefaultResampleMethod), py::arg("scalar_first") = false,
+        py::arg("extrapolate") = "clamp");
   m.def("angle", &angle_between, py::arg("a"), py::arg("b"), py::arg("scalar_first") = false);
   m.def("swing_twist", &swing_twist_split, py::arg("q"), py::arg("axis"), py::arg("scalar_first") = false);
 }

@@ -12,6 +12,7 @@
 #include "rotinterp/io/fbx_source.h"
 #include "rotinterp/core/result.h"
 #include "rotinterp/core/rotation.h"
+#include "rotinterp/interp/interpolator.h"
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -70,6 +71,40 @@ inline Doubles times_array(const py::handle& h, const char* what) {
   if (!t || t.ndim() != 1) value_error(std::string(what) + " must be a 1-D array of seconds");
   require_finite(t, what);
   return t;
+}
+
+// Times a curve is asked at, by every entry point (interpolate, an Interpolator's call and
+// derivatives): a number (ndim 0) or a 1-D array, finite (a NaN raises, never a quiet
+// answer), and, with extrapolate "raise", within [first, last].
+enum class Extrapolate { clamp, raise };
+inline Extrapolate extrapolate_of(const std::string& name) {
+  if (name == "clamp") return Extrapolate::clamp;
+  if (name == "raise") return Extrapolate::raise;
+  value_error("extrapolate must be \"clamp\" or \"raise\", got \"" + name + "\"");
+}
+inline Doubles sample_times(const py::handle& h, const char* what, Extrapolate extrapolate, double first,
+                            double last) {
+  Doubles t = Doubles::ensure(h);
+  if (!t || t.ndim() > 1) value_error(std::string(what) + " must be a number or a 1-D array of seconds");
+  require_finite(t, what);
+  if (extrapolate == Extrapolate::raise)
+    for (py::ssize_t i = 0; i < t.size(); ++i)
+      if (t.data()[i] < first || t.data()[i] > last)
+        value_error(std::string(what) + " = " + py::str(py::float_(t.data()[i])).cast<std::string>() +
+                    " is outside the key range [" + py::str(py::float_(first)).cast<std::string>() + ", " +
+                    py::str(py::float_(last)).cast<std::string>() + "] (extrapolate=\"raise\")");
+  return t;
+}
+
+// The method called `name`, or ValueError: the library's message, and for scipy's class
+// names the method that is their curve ("RotationSpline" is c2, "Slerp" slerp).
+inline const MethodInfo& method_of(const std::string& name) {
+  if (const MethodInfo* m = find_method(name)) return *m;
+  std::string lower;
+  for (char c : name) lower += static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
+  if (lower == "rotationspline")
+    value_error("unknown method '" + name + "': scipy's RotationSpline is method=\"c2\" here (the same curve)");
+  value_error(unknown_method_message(name));
 }
 
 // numpy's text for the index of the i-th quaternion of an array of shape (..., 4):

@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
-# Command (1): install what is missing, build in Release, run the main job on the
+# Command (1): install what is missing, build in Release (the CLI and the Python module), run the main job on the
 # bundled sample (resample + eval + render) and print the paths of what it wrote.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build -j "$(nproc)" --target rotinterp
+# The CLI, and the Python module (rotinterp_python) that the README's and docs/' python blocks
+# import with PYTHONPATH=build/python.
+cmake --build build -j "$(nproc)" --target rotinterp rotinterp_python
 out=out/demo
 rm -rf "$out"
 mkdir -p "$out"

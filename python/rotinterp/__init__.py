@@ -18,7 +18,14 @@ Times are seconds. Angles are radians, except in ``evaluate``'s columns and
 are metres. Errors raise ``ValueError`` (bad input) or ``OSError`` (files) carrying
 the same one-line message as the ``rotinterp`` command.
 """
-from . import _rotinterp
+try:
+    from . import _rotinterp
+except ImportError as e:
+    if (getattr(e, "name", None) or "").startswith("rotinterp._rotinterp") or "_rotinterp" in str(e):
+        raise ImportError("rotinterp: the compiled module rotinterp._rotinterp is not built here (" + __path__[0] +
+                          "): build it with `cmake --build build --target rotinterp_python` (scripts/demo.sh "
+                          "does), then PYTHONPATH=build/python") from e
+    raise
 from ._rotinterp import Clip, Interpolator
 
 __version__ = _rotinterp.__version__
@@ -36,21 +43,28 @@ def methods():
     return _rotinterp.methods()
 
 
-def interpolate(times, quats, new_times, method=default_method, scalar_first=False):
+def interpolate(times, quats, new_times, method=default_method, scalar_first=False, extrapolate="clamp"):
     """Interpolate key orientations at new times.
 
     times: (K,) strictly increasing seconds. quats: (K, 4) for one track, or
     (K, J, 4) for J joints keyed at the same times (all joints in one call).
-    new_times: (N,) seconds, any order; outside [times[0], times[-1]] the ends hold.
-    Returns (N, 4) or (N, J, 4). Keys may come in either hemisphere (q and -q);
-    every method takes the short way and never returns NaN. Releases the GIL.
+    new_times: (N,) seconds, any order, or a number. A NaN or infinite time raises
+    ValueError, as everywhere here. method: a name of ``methods()``, any case
+    (scipy's ``Slerp`` is "slerp"; its ``RotationSpline`` is "c2", which the message
+    for "RotationSpline" names). extrapolate: outside [times[0], times[-1]],
+    "clamp" (the default) holds the end keys, "raise" raises ValueError (scipy's Slerp).
+    Returns (N, 4) or (N, J, 4); (4,) or (J, 4) for a number. Keys may come in either
+    hemisphere (q and -q); every method takes the short way and never returns NaN.
+    Releases the GIL.
     """
-    return _rotinterp.interpolate(times, quats, new_times, method, scalar_first)
+    return _rotinterp.interpolate(times, quats, new_times, method, scalar_first, extrapolate)
 
 
-def make_interpolator(times, quats, method=default_method, scalar_first=False):
+def make_interpolator(times, quats, method=default_method, scalar_first=False, extrapolate="clamp"):
     """Build one track's interpolator: ``f(t)`` gives (4,) for a number or (N, 4) for an
-    array of times.
+    array of times. Times and ``method`` as ``interpolate`` takes them; ``extrapolate``
+    as there, for ``f(t)`` and both derivatives alike. ``f(t, 1)`` (scipy's derivative
+    order) raises TypeError: the derivatives have their own names.
 
     ``f.angular_velocity(t, frame="fixed")`` is the angular velocity in rad/s and
     ``f.angular_acceleration(t, frame="fixed")`` its time derivative in rad/s², each (3,)
@@ -61,8 +75,13 @@ def make_interpolator(times, quats, method=default_method, scalar_first=False):
     acceleration in closed form for "c2", "clamped" and "slerp" (zero inside segments),
     for the others the difference quotient of the closed-form velocity inside the
     segment (relative error about 1e-10). At a key both belong to the segment starting
-    there; outside the key range both are zero (the curve holds its end keys)."""
-    return _rotinterp.make_interpolator(times, quats, method, scalar_first)
+    there; outside the key range both are zero with extrapolate="clamp" (the curve holds
+    its end keys) and raise with "raise".
+
+    The default frame is "fixed", unlike scipy: ``RotationSpline(t, 1)`` is
+    ``f.angular_velocity(t, frame="body")`` here, ``RotationSpline(t, 2)``
+    ``f.angular_acceleration(t, frame="body")``."""
+    return _rotinterp.make_interpolator(times, quats, method, scalar_first, extrapolate)
 
 
 def read_clip(path, anim=None, unit=None):

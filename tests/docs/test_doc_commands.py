@@ -69,6 +69,9 @@ def test_the_readme_tour_writes_what_it_names_and_shows(tmp_path, monkeypatch, c
 def test_the_python_page_prints_what_it_says(tmp_path, monkeypatch, capsys):
     out = run_page(ROOT / "docs" / "python.md", tmp_path, monkeypatch, capsys)
     assert "31 joints" in out and "keys kept" in out
+    for said in ("same velocity as scipy: True", "same acceleration:      True", "fixed frame is q(t) applied: True",
+                 "raise: t = 1.1333333333333333 is outside the key range", "one time, one sample: (4,)"):
+        assert said in out, said
     try:
         import matplotlib  # noqa: F401
     except ImportError:
@@ -83,3 +86,30 @@ def test_only_install_build_and_corpus_blocks_are_kept_from_running():
     for page in PAGES:
         kept = [line for language, runs, _, line in blocks(page.read_text()) if language == "sh" and not runs]
         assert len(kept) <= allowed.get(page_name(page), 0), f"{page_name(page)}: no-run blocks at lines {kept}"
+
+
+def demo_targets():
+    """The targets command (1), scripts/demo.sh, builds: every `--target` list of its cmake --build lines."""
+    targets = set()
+    for line in (ROOT / "scripts" / "demo.sh").read_text().splitlines():
+        if re.match(r"\s*cmake --build\b", line):
+            m = re.search(r"--target((?:\s+[\w.-]+)+)", line)
+            targets |= set(m.group(1).split()) if m else {"all"}
+    return targets
+
+
+def test_command_1_builds_what_every_page_runs():
+    """The pages' blocks run after exactly what (1) builds, not after a full build: the CLI for the sh
+    blocks, and the Python module for any python block (its target as python/CMakeLists.txt names it).
+    Tested here on the script's text, since CI builds everything and a second, demo-only build costs
+    minutes."""
+    targets = demo_targets()
+    if "all" in targets:
+        return
+    module = re.search(r"pybind11_add_module\((\S+)", (ROOT / "python" / "CMakeLists.txt").read_text()).group(1)
+    for page in PAGES:
+        languages = {language for language, runs, _, _ in blocks(page.read_text()) if runs}
+        if "python" in languages:
+            assert module in targets, f"{page_name(page)} runs Python, but scripts/demo.sh builds only {targets}"
+        if "sh" in languages:
+            assert "rotinterp" in targets, f"{page_name(page)} runs rotinterp, but scripts/demo.sh builds {targets}"

@@ -1,0 +1,107 @@
+"""What a scipy user types gets a right answer or a clear error, never a quiet wrong one:
+NaN times raise from every entry point, the ends of the key range are a choice
+(extrapolate=), scipy's call forms and names are pointed to ours."""
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+from scipy.spatial.transform import Rotation
+
+import rotinterp
+
+T = np.arange(6) / 5.0
+Q = Rotation.random(6, random_state=3).as_quat()
+
+
+def entry_points(extrapolate="clamp", method="c2"):
+    """Every way to ask the curve at times t, as name -> f(t)."""
+    f = rotinterp.make_interpolator(T, Q, method=method, extrapolate=extrapolate)
+    return {
+        "call": f,
+        "angular_velocity": f.angular_velocity,
+        "angular_velocity body": lambda t: f.angular_velocity(t, frame="body"),
+        "angular_acceleration": f.angular_acceleration,
+        "interpolate": lambda t: rotinterp.interpolate(T, Q, t, method=method, extrapolate=extrapolate),
+        "interpolate joints": lambda t: rotinterp.interpolate(T, Q[:, None, :], t, method=method,
+                                                              extrapolate=extrapolate),
+    }
+
+
+@pytest.mark.parametrize("t", [np.nan, [0.1, np.nan], np.inf, -np.inf])
+def test_a_non_finite_time_raises_from_every_entry_point(t):
+    for name, f in entry_points().items():
+        with pytest.raises(ValueError, match="non-finite"):
+            f(t)
+            pytest.fail(f"{name} answered for t = {t}")
+
+
+def test_a_non_finite_resample_range_raises():
+    clip = rotinterp.read_clip(Path(__file__).resolve().parents[2] / "samples" / "walk.bvh")
+    with pytest.raises(ValueError, match="non-finite"):
+        rotinterp.resample(clip, fps=60, range=(np.nan, None))
+
+
+def test_clamp_is_the_default_and_holds_the_end_keys():
+    for name, f in entry_points().items():
+        assert np.array_equal(f(T[-1] + 1.0), f(T[-1])) or name.startswith("angular"), name
+    f = rotinterp.make_interpolator(T, Q, method="c2")
+    assert rotinterp.angle(f(-3.0), Q[0]) < 1e-15
+    assert np.all(f.angular_velocity(T[-1] + 0.5) == 0.0)
+
+
+def test_extrapolate_raise_refuses_times_outside_the_keys_and_answers_inside():
+    for name, f in entry_points(extrapolate="raise").items():
+        f(np.array([T[0], 0.5, T[-1]]))  # the ends themselves are inside
+        for outside in (T[0] - 1e-9, [0.5, T[-1] + 1e-9]):
+            with pytest.raises(ValueError, match=r"outside the key range \[0.0, 1.0\]"):
+                f(outside)
+                pytest.fail(f"{name} answered outside the keys")
+    with pytest.raises(ValueError, match="extrapolate must be"):
+        rotinterp.interpolate(T, Q, 0.5, extrapolate="extend")
+
+
+def test_scipys_derivative_order_argument_points_to_the_named_derivatives():
+    f = rotinterp.make_interpolator(T, Q, method="c2")
+    with pytest.raises(TypeError, match=r"angular_velocity\(t, frame=\"body\"\)") as e:
+        f(0.3, 1)
+    assert "angular_acceleration" in str(e.value)
+
+
+def test_scipys_class_names_find_their_methods():
+    assert rotinterp.make_interpolator(T, Q, method="Slerp").method == "slerp"
+    for name in ("rotationspline", "RotationSpline"):
+        with pytest.raises(ValueError, match=r'RotationSpline is method="c2"'):
+            rotinterp.interpolate(T, Q, [0.5], method=name)
+        with pytest.raises(ValueError, match=r'RotationSpline is method="c2"'):
+            rotinterp.make_interpolator(T, Q, method=name)
+
+
+def test_a_scalar_time_gives_one_sample_in_interpolate_as_in_the_callable():
+    f = rotinterp.make_interpolator(T, Q, method="c2")
+    one = rotinterp.interpolate(T, Q, 0.55, method="c2")
+    assert one.shape == (4,) and np.array_equal(one, f(0.55))
+    joints = rotinterp.interpolate(T, np.stack([Q, Q], axis=1), np.float32(0.55), method="c2")
+    assert joints.shape == (2, 4) and np.array_equal(joints[1], rotinterp.interpolate(T, Q, np.float32(0.55),
+                                                                                       method="c2"))
+
+
+def test_an_empty_track_names_its_arguments():
+    for call in (lambda: rotinterp.interpolate([], np.zeros((0, 4)), [0.0]),
+                 lambda: rotinterp.make_interpolator([], np.zeros((0, 4)))):
+        with pytest.raises(ValueError, match=r"times and quats are empty \(quats of shape \(0, 4\)\)"):
+            call()
+
+
+def test_importing_without_the_compiled_module_says_how_to_build_it(tmp_path):
+    package = tmp_path / "rotinterp"
+    package.mkdir()
+    source = Path(rotinterp.__file__).resolve()
+    (package / "__init__.py").write_text(source.read_text())
+    done = subprocess.run([sys.executable, "-c", "import rotinterp"], cwd=tmp_path, capture_output=True, text=True,
+                          env={"PYTHONPATH": str(tmp_path)})
+    assert done.returncode != 0
+    last = done.stderr.strip().splitlines()[-1]
+    assert last.startswith("ImportError") and "--target rotinterp_python" in last, last
+    assert "circular" not in last

@@ -75,8 +75,9 @@ def make_interpolator(times, quats, method=default_method, scalar_first=False, e
     acceleration in closed form for "c2", "clamped" and "slerp" (zero inside segments),
     for the others the difference quotient of the closed-form velocity inside the
     segment (relative error about 1e-10). At a key both belong to the segment starting
-    there; outside the key range both are zero with extrapolate="clamp" (the curve holds
-    its end keys) and raise with "raise".
+    there, at the last key the last segment's (its limit from inside); outside the key
+    range both are zero with extrapolate="clamp" (the curve holds its end keys) and raise
+    with "raise".
 
     The default frame is "fixed", unlike scipy: ``RotationSpline(t, 1)`` is
     ``f.angular_velocity(t, frame="body")`` here, ``RotationSpline(t, 2)``

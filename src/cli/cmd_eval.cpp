@@ -156,7 +156,7 @@ int run(const EvalArgs& a) {
     if (a.truth == "synth") o.truth = {"synth", synth_truth};
     if (a.truth == "source") o.truth = {"source", source_truth};
     keep_freed_memory_for_reuse();
-    o.progress = make_progress("eval", quiet);
+    o.progress = make_progress("eval", quiet, "clips");
     o.on_failure = print_failure;
     report = run_eval(o);
     end_progress(quiet);

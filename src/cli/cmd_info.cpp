@@ -105,7 +105,7 @@ int run_summary(const InfoArgs& args) {
   FileRunOptions run_options;
   run_options.named = named;
   run_options.threads = thread_count(static_cast<unsigned>(args.jobs));
-  run_options.progress = make_progress("info", false);
+  run_options.progress = make_progress("info", false, "files");
   run_options.on_failure = [](const FileFailure& f) { print_file_failure(f, false); };
   const FileRunReport report = run_files(run, run_options, [&](std::size_t i, unsigned threads) -> Status {
     ReadOptions mine = options;

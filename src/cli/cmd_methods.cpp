@@ -17,9 +17,12 @@ namespace {
 
 // `source` is no interpolator of keys (interp/interpolator.h): it replays the curves
 // an FBX file stores, so the properties of a curve through keys do not apply.
-constexpr const char* kSourceDescription =
-    "the file's own FBX curves as the DCC evaluates them (resample, render; eval --truth source); "
-    "needs an FBX file with rotation curves";
+std::string source_description() {
+  return std::string("the file's own FBX curves as the DCC evaluates them; needs an FBX file with rotation curves; "
+                     "runs in ") + kSourceRunsIn;
+}
+// Where the interpolators run: every command that takes -m.
+constexpr const char* kMethodsRunIn = "resample, eval, reduce, render";
 
 }  // namespace
 
@@ -37,14 +40,16 @@ void add_methods_command(CLI::App& app, int& exit_code) {
                        {"coordinate_invariant", m.coordinate_invariant},
                        {"exact_on_constant_velocity", m.exact_on_constant_velocity},
                        {"preserves_holds", m.preserves_holds},
-                       {"replays_file_curves", false}});
+                       {"replays_file_curves", false},
+                       {"runs_in", kMethodsRunIn}});
       out.push_back({{"name", kSourceMethodName},
-                     {"description", kSourceDescription},
+                     {"description", source_description()},
                      {"continuity", "as keyed"},
                      {"coordinate_invariant", nullptr},
                      {"exact_on_constant_velocity", nullptr},
                      {"preserves_holds", nullptr},
-                     {"replays_file_curves", true}});
+                     {"replays_file_curves", true},
+                     {"runs_in", kSourceRunsIn}});
       fmt::print("{}\n", out.dump(2));
     } else {
       std::size_t width = 6;  // "method"
@@ -53,7 +58,8 @@ void add_methods_command(CLI::App& app, int& exit_code) {
       for (const MethodInfo& m : methods())
         fmt::print("{:<{}} C{:<9} {:<10} {}\n", m.name, width, m.continuity, m.coordinate_invariant ? "yes" : "no",
                    m.description);
-      fmt::print("{:<{}} {:<10} {:<10} {}\n", kSourceMethodName, width, "as keyed", "-", kSourceDescription);
+      fmt::print("{:<{}} {:<10} {:<10} {}\n", kSourceMethodName, width, "as keyed", "-", source_description());
+      fmt::print("\nEvery method but source runs in {} (-m).\n", kMethodsRunIn);
     }
     exit_code = kExitOk;
   });

@@ -100,8 +100,9 @@ int run_reduce(const ReduceArgs& a) {
   if (!setup) return fail_usage(setup.error());
   std::error_code ec;
   // One file in, one out, as always; a folder run when given a folder, several
-  // inputs, --format, or an existing directory as output (resample's rule).
-  const bool into_directory = !a.output.empty() && std::filesystem::is_directory(a.output, ec);
+  // inputs, --format, an output ending with '/' or an existing directory (resample's rule).
+  const bool into_directory =
+      !a.output.empty() && (a.output.back() == '/' || std::filesystem::is_directory(a.output, ec));
   const bool one_file = a.inputs.size() == 1 && !std::filesystem::is_directory(a.inputs.front(), ec) &&
                         !into_directory && a.format.empty();
   if (!one_file) return run_reduce_folder(a, *setup);

@@ -8,14 +8,12 @@
 #include "rotinterp/io/folder_run.h"
 
 #include <fmt/core.h>
-#include <unistd.h>
 
 #include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <map>
-#include <mutex>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -99,15 +97,12 @@ int run_reduce_folder(const ReduceArgs& a, const ReduceSetup& s) {
 
   std::vector<ReduceFileRun> runs(plan->outputs.size());
   std::atomic<std::size_t> done{0};
-  const bool show = !a.quiet && ::isatty(STDERR_FILENO);
-  std::mutex progress_mutex;
+  const ProgressFn progress = make_progress("reduce", a.quiet, "files");
   const auto started = std::chrono::steady_clock::now();
   FileRunOptions run_options = plan->run_options(a.jobs, a.skip_existing, a.quiet);
   run_options.finished = [&](std::size_t) {
-    ++done;
-    if (!show) return;
-    std::lock_guard<std::mutex> lock(progress_mutex);
-    std::fprintf(stderr, "\r\033[Kreduce  %zu/%zu files", done.load(), plan->outputs.size());
+    const std::size_t now_done = ++done;
+    if (progress) progress(now_done, plan->outputs.size());
   };
   const FileRunReport report = run_files(plan->files, run_options, [&](std::size_t i, unsigned threads) -> Status {
     const MirroredOutput& m = plan->outputs[i];

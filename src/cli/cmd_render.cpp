@@ -200,7 +200,7 @@ int run_render(const RenderArgs& a) {
                      render::draws_axes(options.axes, *clip) ? "each joint's axes there (--axes)"
                                                              : "only the grid (--axes on draws each joint's axes)"));
   if (options.frames && !options.loop) warn_if_only_keys(*clip, options);
-  options.progress = make_progress("render", a.quiet);
+  options.progress = make_progress("render", a.quiet, "frames");
   auto result = render::render_comparison(*clip, a.out_dir, options);
   end_progress(a.quiet);
   if (!result) return fail(a.input + ": " + result.error());

@@ -13,6 +13,7 @@
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/io/atomic_file.h"
 #include "rotinterp/io/fbx_source.h"
+#include "rotinterp/io/output_dirs.h"
 #include "rotinterp/io/read.h"
 #include "rotinterp/io/write.h"
 
@@ -174,7 +175,9 @@ int run_single(const ResampleArgs& a, ResampleOptions opt) {
     end_progress(a.quiet);
     if (show) std::fprintf(stderr, "\r\033[K%s …", what.c_str());
   };
-  opt.progress = make_progress("resample", a.quiet);
+  if (Status made = create_output_directories(std::filesystem::path(a.output).parent_path()); !made)
+    return fail(made.error());
+  opt.progress = make_progress("resample", a.quiet, "joints");
   FileRun run;
   run.input = input;
   run.output = a.output;
@@ -230,10 +233,13 @@ int run_resample(ResampleArgs a) {
     if (out_ext == ".glb" || out_ext == ".gltf")
       return fail_usage("--out-unit: glTF is always in metres (its spec); --out-unit is for bvh, fbx and dae");
   }
+  if (a.output.empty()) return fail_usage("-o/--output: an empty path (a file such as out.bvh, or a folder such as out/)");
   std::error_code ec;
   // One file in, one out, as always; a folder run when given a folder, several
-  // inputs, --format, or an existing directory (not named like a clip) as output.
-  const bool into_directory = std::filesystem::is_directory(a.output, ec) && !can_write_format(a.output);
+  // inputs, --format, an output ending with '/' (a folder, created if missing) or an
+  // existing directory (not named like a clip) as output.
+  const bool into_directory = a.output.back() == '/' ||
+                              (std::filesystem::is_directory(a.output, ec) && !can_write_format(a.output));
   const bool one_file = a.inputs.size() == 1 && !std::filesystem::is_directory(a.inputs.front(), ec) &&
                         !into_directory && a.format.empty();
   if (!one_file) return run_resample_folder(a, *opt);

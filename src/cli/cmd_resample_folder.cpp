@@ -9,7 +9,6 @@
 #include "rotinterp/io/write.h"
 
 #include <fmt/core.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
@@ -18,7 +17,6 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
-#include <mutex>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -52,12 +50,6 @@ Status write_resample_manifest(const std::string& path, const FileRunReport& rep
   });
 }
 
-// "1m05s", "42s".
-std::string duration_text(double seconds) {
-  const auto s = static_cast<long long>(std::llround(seconds));
-  return s >= 60 ? fmt::format("{}m{:02}s", s / 60, s % 60) : fmt::format("{}s", s);
-}
-
 }  // namespace
 
 int run_resample_folder(const ResampleArgs& a, const ResampleOptions& opt) {
@@ -86,22 +78,12 @@ int run_resample_folder(const ResampleArgs& a, const ResampleOptions& opt) {
     runs[i].output = plan->outputs[i].output;
   }
   std::atomic<std::size_t> done{0};
-  std::atomic<std::uintmax_t> bytes_done{0};
-  const bool show = !a.quiet && ::isatty(STDERR_FILENO);
-  std::mutex progress_mutex;
+  const ProgressFn progress = make_progress("resample", a.quiet, "files");
   const auto started = std::chrono::steady_clock::now();
   FileRunOptions run_options = plan->run_options(a.jobs, a.skip_existing, a.quiet);
-  run_options.finished = [&](std::size_t i) {
-    ++done;
-    bytes_done += bytes[i];
-    if (!show) return;
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    const double mb = static_cast<double>(bytes_done.load()) / 1e6;
-    const double rate = elapsed > 0 ? mb / elapsed : 0.0;
-    const double left = static_cast<double>(bytes_total - std::min(bytes_total, bytes_done.load())) / 1e6;
-    std::lock_guard<std::mutex> lock(progress_mutex);
-    std::fprintf(stderr, "\r\033[Kresample  %zu/%zu files  %.1f MB/s  ETA %s", done.load(), plan->outputs.size(), rate,
-                 rate > 0 ? duration_text(left / rate).c_str() : "?");
+  run_options.finished = [&](std::size_t) {
+    const std::size_t now_done = ++done;
+    if (progress) progress(now_done, plan->outputs.size());
   };
   auto no_stage = [](const std::string&) {};
   const FileRunReport report = run_files(plan->files, run_options, [&](std::size_t i, unsigned threads) -> Status {

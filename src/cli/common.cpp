@@ -2,8 +2,10 @@
 #include "common.h"
 
 #include "rotinterp/clip/units.h"
+#include "rotinterp/core/nearest_name.h"
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/io/atomic_file.h"
+#include "rotinterp/io/fbx_source.h"
 #include "rotinterp/io/folder_run.h"
 
 #include <CLI/CLI.hpp>
@@ -129,6 +131,8 @@ CLI::Option* add_method_option(CLI::App& sub, std::string& methods, bool several
   return sub.add_option("-m,--method,--methods", methods, help + "default " + default_text);
 }
 
+const char* const kSourceRunsIn = "resample -m source, render -m source, eval --truth source";
+
 Result<std::vector<std::string>> parse_methods(const std::string& text, bool several) {
   std::vector<std::string> names;
   const std::vector<std::string> items = split_comma_list(text);
@@ -139,6 +143,9 @@ Result<std::vector<std::string>> parse_methods(const std::string& text, bool sev
       continue;
     }
     const MethodInfo* m = find_method(item);
+    if (!m && is_source_method(item))
+      return make_error("--method '" + item + "' replays an FBX file's own curves, it rebuilds nothing from keys: " +
+                        "this command cannot run it (it runs in " + kSourceRunsIn + ")");
     if (!m) return make_error("--method: " + unknown_method_message(item));
     if (std::find(names.begin(), names.end(), m->name) == names.end()) names.push_back(m->name);
   }
@@ -264,22 +271,74 @@ void add_commands(CLI::App& app, int& exit_code) {
   }
 }
 
+std::string usage_error_line(CLI::App& app, const std::string& message, int argc, char** argv) {
+  const auto parsed = app.get_subcommands();
+  if (parsed.empty()) {  // no subcommand: argv[1], if a word, is a misspelled one
+    if (argc > 1 && argv[1][0] != '-') {
+      std::vector<std::string> names;
+      for (const CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) names.push_back(sub->get_name());
+      const auto best = nearest_name(argv[1], names);
+      return std::string("unknown subcommand '") + argv[1] + "' (" + (best ? "did you mean '" + *best + "'? " : "") +
+             help_hint() + ")";
+    }
+    return message + " (" + help_hint() + ")";
+  }
+  // An option the subcommand does not have ("--fsp", "-x"; not a value such as "-30"):
+  // the nearest of its options.
+  const CLI::App& sub = *parsed.front();
+  std::vector<std::string> names;
+  for (const CLI::Option* o : sub.get_options()) {
+    for (const std::string& l : o->get_lnames()) names.push_back("--" + l);
+    for (const std::string& s : o->get_snames()) names.push_back("-" + s);
+  }
+  for (int i = 2; i < argc; ++i) {
+    std::string a = argv[i];
+    if (a.size() < 2 || a[0] != '-' || !(std::isalpha(static_cast<unsigned char>(a[1])) || a[1] == '-')) continue;
+    a = a.substr(0, a.find('='));
+    if (std::find(names.begin(), names.end(), a) != names.end()) continue;
+    if (const auto best = nearest_name(a, names)) return message + " (did you mean '" + *best + "'? " + help_hint() + ")";
+  }
+  return message + " (" + help_hint() + ")";
+}
+
 static bool progress_visible(bool quiet) { return !quiet && ::isatty(STDERR_FILENO); }
 
-ProgressFn make_progress(std::string label, bool quiet) {
+std::string duration_text(double seconds) {
+  const auto s = static_cast<long long>(std::llround(seconds));
+  char text[48];
+  if (s >= 3600) std::snprintf(text, sizeof text, "%lldh%02lldm", s / 3600, s / 60 % 60);
+  else if (s >= 60) std::snprintf(text, sizeof text, "%lldm%02llds", s / 60, s % 60);
+  else std::snprintf(text, sizeof text, "%llds", s);
+  return text;
+}
+
+std::string progress_line(const std::string& label, const std::string& unit, std::size_t done, std::size_t total,
+                          double seconds) {
+  const int pct = total ? static_cast<int>(100.0 * static_cast<double>(done) / static_cast<double>(total)) : 100;
+  const double rate = seconds > 0.0 ? static_cast<double>(done) / seconds : 0.0;
+  const std::string per = unit.empty() ? "/s" : " " + unit + "/s";
+  char text[256];
+  std::snprintf(text, sizeof text, "%s  %zu/%zu%s%s (%d%%)  %.3g%s  ETA %s", label.c_str(), done, total,
+                unit.empty() ? "" : " ", unit.c_str(), pct, rate, per.c_str(),
+                rate > 0.0 ? duration_text(static_cast<double>(total - std::min(done, total)) / rate).c_str() : "?");
+  return text;
+}
+
+ProgressFn make_progress(std::string label, bool quiet, std::string unit) {
   if (!progress_visible(quiet)) return {};
   struct State {
     std::mutex mutex;
+    std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now();
     std::chrono::steady_clock::time_point last{};
   };
   auto state = std::make_shared<State>();
-  return [label = std::move(label), state](std::size_t done, std::size_t total) {
+  return [label = std::move(label), unit = std::move(unit), state](std::size_t done, std::size_t total) {
     std::lock_guard<std::mutex> lock(state->mutex);
     const auto now = std::chrono::steady_clock::now();
     if (done < total && now - state->last < std::chrono::milliseconds(100)) return;  // at most 10 redraws/s
     state->last = now;
-    const int pct = total ? static_cast<int>(100.0 * static_cast<double>(done) / static_cast<double>(total)) : 100;
-    std::fprintf(stderr, "\r%s  %zu/%zu (%d%%)   ", label.c_str(), done, total, pct);
+    const double seconds = std::chrono::duration<double>(now - state->started).count();
+    std::fprintf(stderr, "\r\033[K%s", progress_line(label, unit, done, total, seconds).c_str());
     std::fflush(stderr);
   };
 }

@@ -49,6 +49,11 @@ int fail(std::string_view message);
 int fail_usage(std::string_view message);
 // "see 'rotinterp render --help'" for the subcommand being parsed, else the top help.
 std::string help_hint();
+// A command-line parse error's one line (without "rotinterp: "): a misspelled
+// subcommand names the nearest ("unknown subcommand 'resampel' (did you mean
+// 'resample'? …)"), an unknown option the subcommand's nearest option; both end with
+// the help hint. `message` is the parser's own text, on one line.
+std::string usage_error_line(CLI::App& app, const std::string& message, int argc, char** argv);
 // Prints "rotinterp: warning: <message>" on stderr (the reader's and writer's
 // on_warning, and the commands' own warnings).
 void warn(const std::string& message);
@@ -70,9 +75,16 @@ Result<std::optional<double>> parse_unit_option(const std::string& text);
 // "a,b,,c" → {"a", "b", "c"}: the items of a comma-separated option, empty ones dropped.
 std::vector<std::string> split_comma_list(std::string_view text);
 
-// A progress reporter that draws "label  done/total" on stderr when stderr is a
-// terminal and quiet is false; otherwise an empty function.
-ProgressFn make_progress(std::string label, bool quiet);
+// Every long job's progress line, one format: "eval  3/12 files (25%)  1.5 files/s  ETA 6s"
+// (`unit` may be empty: "3/12 (25%)  1.5/s"); the rate is done over `seconds` since the
+// start, the ETA the rest at that rate ("?" before the first unit is done).
+std::string progress_line(const std::string& label, const std::string& unit, std::size_t done, std::size_t total,
+                          double seconds);
+// "42s", "1m05s", "2h03m".
+std::string duration_text(double seconds);
+// A progress reporter that draws progress_line on stderr (at most 10 times a second)
+// when stderr is a terminal and quiet is false; otherwise an empty function. Thread-safe.
+ProgressFn make_progress(std::string label, bool quiet, std::string unit = "");
 // Ends the progress line (if one was drawn).
 void end_progress(bool quiet);
 // A file of a folder run that failed (io/folder_run.h), said the same way by every
@@ -91,9 +103,14 @@ CLI::Option* add_output_option(CLI::App& sub, std::string& output, const std::st
 // -m,--method (also --methods): one method name, or with `several` a comma list or
 // "all". Names are checked by parse_methods.
 CLI::Option* add_method_option(CLI::App& sub, std::string& methods, bool several, const std::string& default_text);
+// Where `source` (io/fbx_source.h: the FBX file's own curves, no interpolator of keys)
+// runs: "resample -m source, render -m source, eval --truth source". `methods` says it,
+// and a command whose -m does not take it refuses it with this line.
+extern const char* const kSourceRunsIn;
 // Names → the registry's spellings, in order, without repeats ("all": every method
 // not listed before it, so "gltf-cubic,all" puts gltf-cubic first).
-// Errors: unknown name (with "did you mean"), an empty list, or several where one is taken.
+// Errors: unknown name (with "did you mean"), `source` (where it runs instead: kSourceRunsIn),
+// an empty list, or several where one is taken.
 Result<std::vector<std::string>> parse_methods(const std::string& text, bool several);
 // --fps HZ: an exact rate (decimal or rational), parsed by parse_rate_option.
 CLI::Option* add_fps_option(CLI::App& sub, std::string& fps, const std::string& what);

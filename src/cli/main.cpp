@@ -2,6 +2,7 @@
 // its own cmd_*.cpp; this file only wires them and maps errors to exit codes.
 #include "common.h"
 #include "rotinterp/io/atomic_file.h"
+#include "rotinterp/io/output_dirs.h"
 
 #include <CLI/CLI.hpp>
 
@@ -53,9 +54,14 @@ void note_input(int argc, char** argv) {
 
 }  // namespace
 
+namespace {
+// Parses and runs the subcommand; its exit code.
+int run(CLI::App& app, int argc, char** argv, const int& exit_code);
+}  // namespace
+
 int main(int argc, char** argv) {
   using namespace rotinterp::cli;
-  rotinterp::install_interrupt_cleanup();
+  rotinterp::install_interrupt_cleanup("rotinterp: interrupted\n");
   std::set_terminate(on_terminate);
   note_input(argc, argv);
 
@@ -67,6 +73,16 @@ int main(int argc, char** argv) {
   int exit_code = kExitOk;
   add_commands(app, exit_code);
 
+  const int code = run(app, argc, argv, exit_code);
+  // A run that did not succeed takes back the output folders it created, if still empty.
+  if (code != kExitOk) rotinterp::remove_created_directories();
+  return code;
+}
+
+namespace {
+
+int run(CLI::App& app, int argc, char** argv, const int& exit_code) {
+  using namespace rotinterp::cli;
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -80,7 +96,7 @@ int main(int argc, char** argv) {
     std::string message = e.what();
     for (char& c : message)
       if (c == '\n' || c == '\r') c = ' ';
-    std::fprintf(stderr, "rotinterp: %s (%s)\n", message.c_str(), help_hint().c_str());
+    std::fprintf(stderr, "rotinterp: %s\n", usage_error_line(app, message, argc, argv).c_str());
     return kExitUsage;
   } catch (const std::bad_alloc&) {
     // Unwound: every AtomicOutput on the way removed its temporary.
@@ -91,3 +107,5 @@ int main(int argc, char** argv) {
   }
   return exit_code;
 }
+
+}  // namespace

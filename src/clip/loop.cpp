@@ -45,6 +45,8 @@ int up_axis(const Skeleton& skeleton) {
   for (const Vec3& p : pose.position) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
   for (const Vec3& p : pose.end_site_position) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
   int axis = 1;
+  // A figure with no extent (one joint, a box) has no tallest axis: Y, as BVH and glTF.
+  if (!(lo.allFinite() && hi.allFinite()) || (hi - lo).maxCoeff() <= 0.0) return 1;
   (hi - lo).maxCoeff(&axis);
   return axis;
 }
@@ -109,6 +111,8 @@ Result<LoopCheck> check_loop(const Clip& clip, std::optional<LoopForm> form, con
   check.period_frames = frames - (check.form == LoopForm::closed ? 1 : 0);
   check.period = rate->time_of(static_cast<std::int64_t>(check.period_frames));
 
+  check.joints = clip.rotations.size();
+  check.metres_per_unit = clip.unit.metres_per_unit;
   for (std::size_t j = 0; j < clip.rotations.size(); ++j) {
     const RotationTrack& r = clip.rotations[j];
     double travel = 0.0;
@@ -148,18 +152,30 @@ std::string closure_misses_text(const std::vector<ClosureMiss>& misses) {
 }
 
 std::string loop_check_text(const LoopCheck& c) {
-  char head[160];
-  std::snprintf(head, sizeof head, "%s (%s form: %zu frames, %.4g s per period); joints close within %.4f°",
+  char part[160];
+  std::snprintf(part, sizeof part, "%s (%s form: %zu frames, %.4g s per period)",
                 c.looks_like_cycle ? "looks like a cycle" : "not a cycle", loop_form_name(c.form), c.period_frames,
-                c.period, c.worst_closing_angle * kDegrees);
-  std::string s = head;
-  if (c.moving_joints == 0) s += "; nothing moves";
-  if (c.root_vertical_offset >= 1e-4) {
-    char root[96];
-    std::snprintf(root, sizeof root, "; root rises %.4g m per cycle", c.root_vertical_offset);
-    s += root;
+                c.period);
+  std::string s = part;
+  // Which joints close, which miss: each counted once, so the parts cannot disagree.
+  const std::size_t closing = c.joints - std::min(c.joints, c.misses.size());
+  if (closing > 0) {
+    std::snprintf(part, sizeof part, "; %s close within %.4f°",
+                  c.misses.empty() ? "joints" : (std::to_string(closing) + (closing == 1 ? " joint" : " joints")).c_str(),
+                  c.worst_closing_angle * kDegrees);
+    s += part;
   }
   if (!c.misses.empty()) s += "; " + closure_misses_text(c.misses);
+  // The root: rising (up, the figure's tallest axis) or translating (along the ground).
+  const double advance = c.root_advance.norm() * c.metres_per_unit;
+  if (c.moving_joints == 0) s += advance >= 1e-4 ? "; no joint turns" : "; nothing moves";
+  if (c.root_vertical_offset >= 1e-4) {
+    std::snprintf(part, sizeof part, "; root rises %.4g m per cycle", c.root_vertical_offset);
+    s += part;
+  } else if (advance >= 1e-4) {
+    std::snprintf(part, sizeof part, "; root translates %.4g m per cycle", advance);
+    s += part;
+  }
   return s;
 }
 

@@ -5,6 +5,7 @@
 #include "rotinterp/eval/plots.h"
 #include "rotinterp/eval/seam.h"
 #include "rotinterp/io/csv.h"
+#include "rotinterp/io/output_dirs.h"
 
 #include <fmt/format.h>
 
@@ -70,13 +71,6 @@ Status write_outputs(const fs::path& dir, const RunRecord& record, const Summary
     std::error_code ec;
     fs::remove(dir / name, ec);
   }
-  return Ok{};
-}
-
-Status make_dir(const fs::path& dir) {
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec || !fs::is_directory(dir)) return make_error(dir.string() + ": cannot create the output directory");
   return Ok{};
 }
 

@@ -18,9 +18,6 @@ namespace rotinterp {
 // The time now, as summary.json records it (ISO 8601, UTC).
 std::string utc_now();
 
-// Creates `dir` (and its parents); an error names it.
-Status make_dir(const std::filesystem::path& dir);
-
 // errors.csv into an unnamed temporary, one clip's rows at a time; committed with
 // the other outputs by write_outputs.
 class ErrorsCsv {

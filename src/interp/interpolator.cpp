@@ -1,6 +1,8 @@
 // The method registry, name lookup with suggestions, and make_interpolator.
 #include "rotinterp/interp/interpolator.h"
 
+#include "rotinterp/core/nearest_name.h"
+
 #include "rotinterp/interp/bf.h"
 #include "rotinterp/interp/c2.h"
 #include "rotinterp/interp/clamped.h"
@@ -62,22 +64,6 @@ bool equal_ignoring_case(std::string_view a, std::string_view b) {
   return true;
 }
 
-// Levenshtein distance, case-insensitive (names are a few characters: O(|a|·|b|) is nothing).
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (lower(a[i - 1]) == lower(b[j - 1]) ? 0 : 1)});
-      diagonal = up;
-    }
-  }
-  return row[b.size()];
-}
-
 }  // namespace
 
 const MethodInfo* find_method(std::string_view name) {
@@ -87,14 +73,10 @@ const MethodInfo* find_method(std::string_view name) {
 }
 
 std::string unknown_method_message(std::string_view name) {
-  const MethodInfo* best = nullptr;
-  std::size_t best_distance = 0;
-  for (const MethodInfo& m : methods()) {
-    const std::size_t d = edit_distance(name, m.name);
-    if (!best || d < best_distance) best = &m, best_distance = d;
-  }
-  const std::size_t allowed = std::max<std::size_t>(2, name.size() / 3);
-  const std::string guess = best && best_distance <= allowed ? "did you mean " + best->name + "? " : "";
+  std::vector<std::string> names;
+  for (const MethodInfo& m : methods()) names.push_back(m.name);
+  const auto best = nearest_name(name, names);
+  const std::string guess = best ? "did you mean " + *best + "? " : "";
   return "unknown method '" + std::string(name) + "' (" + guess + "valid: " + method_names() + ")";
 }
 

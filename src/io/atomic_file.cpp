@@ -1,6 +1,8 @@
 // Atomic writes: temporary file, checked writes, fsync, rename; inputs guarded from being overwritten.
 #include "rotinterp/io/atomic_file.h"
 
+#include "rotinterp/io/output_dirs.h"
+
 #include <dirent.h>
 #include <fcntl.h>
 #include <sys/file.h>
@@ -52,8 +54,12 @@ void unregister_live(int slot) {
   if (slot >= 0) g_used[slot].store(false);
 }
 
+const char* g_interrupt_line = nullptr;  // set once, before the handlers
+
 extern "C" void remove_live_and_exit(int sig) {
   remove_live_temporaries();
+  remove_created_directories();
+  if (g_interrupt_line) (void)!::write(STDERR_FILENO, g_interrupt_line, std::strlen(g_interrupt_line));
   _exit(128 + sig);
 }
 
@@ -377,7 +383,8 @@ Status check_not_an_input(const fs::path& output) {
   return Ok{};
 }
 
-void install_interrupt_cleanup() {
+void install_interrupt_cleanup(const char* line) {
+  g_interrupt_line = line;
   struct sigaction sa {};
   sa.sa_handler = remove_live_and_exit;
   sigemptyset(&sa.sa_mask);

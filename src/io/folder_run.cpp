@@ -4,6 +4,7 @@
 #include "rotinterp/io/atomic_file.h"
 #include "rotinterp/io/csv.h"
 #include "rotinterp/io/dataset.h"
+#include "rotinterp/io/output_dirs.h"
 
 #include <atomic>
 #include <system_error>
@@ -56,8 +57,7 @@ FileRunReport run_files(const std::vector<RunFile>& files, const FileRunOptions&
     } else {
       Status s = Ok{};
       if (!f.output.empty()) {
-        fs::create_directories(f.output.parent_path(), ec);
-        if (ec) s = make_error(f.output.parent_path().string() + ": " + ec.message());
+        s = create_output_directories(f.output.parent_path());
       }
       if (s) {
         // Joints in parallel only where fewer files than workers are in flight (the last ones).

@@ -41,20 +41,21 @@ Result<ClipFileInfo> read_imported(const fs::path& path, const ReadOptions& opti
 Result<ClipFileInfo> load(const fs::path& path, const ReadOptions& options) {
   if (Status s = check_file(path, path.string()); !s) return s.failure();
   const std::string ext = extension_of(path);
-  if (!is_bvh(path, ext) || options.cross_check_with_assimp) return read_imported(path, options);
+  const bool bvh = is_bvh(path, ext);
+  // A file of a format no reader knows (a .py, a .txt) is not handed to assimp, whose
+  // tokenizers would name their own confusion instead.
+  if (!bvh && !ext.empty() && !importable_extension(ext))
+    return make_error(path.string() + ": not a motion file (formats read: " + read_formats_text() + ")",
+                      ErrorKind::unreadable);
+  if (!bvh || options.cross_check_with_assimp) return read_imported(path, options);
   ClipFileInfo info;
   info.format = ext;
   if (Status st = read_bvh(path, options, info); !st) return st.failure();
   return info;
 }
 
-}  // namespace
-
-bool importable_extension(std::string extension) {
-  extension = lower(std::move(extension));
-  if (!extension.empty() && extension[0] == '.') extension.erase(0, 1);
-  if (extension.empty()) return false;
-  // assimp's list ("*.3ds;*.bvh;…"), asked once: only the table, no import.
+// assimp's extension list ("*.3ds;*.bvh;…") with bvh, asked once: only the table, no import.
+const std::set<std::string>& known_extensions() {
   static const std::set<std::string> known = [] {
     std::string list;
     Assimp::Importer().GetExtensionList(list);
@@ -64,7 +65,26 @@ bool importable_extension(std::string extension) {
       if (item.size() > 2 && item.compare(0, 2, "*.") == 0) out.insert(lower(item.substr(2)));
     return out;
   }();
-  return known.count(extension) > 0;
+  return known;
+}
+}  // namespace
+
+bool importable_extension(std::string extension) {
+  extension = lower(std::move(extension));
+  if (!extension.empty() && extension[0] == '.') extension.erase(0, 1);
+  if (extension.empty()) return false;
+  return known_extensions().count(extension) > 0;
+}
+
+std::string read_formats_text() {
+  // The motion formats first (the ones write_clip writes, io/write.h), then the count of the rest.
+  const std::set<std::string>& known = known_extensions();
+  std::string s;
+  std::size_t named = 0;
+  for (const char* f : {"bvh", "fbx", "glb", "gltf", "dae"})
+    if (known.count(f)) s += (named++ ? ", " : "") + std::string(f);
+  if (known.size() > named) s += " and " + std::to_string(known.size() - named) + " more formats assimp imports";
+  return s;
 }
 
 Result<ClipFileInfo> inspect_clip(const fs::path& path, const ReadOptions& options) {

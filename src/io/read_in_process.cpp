@@ -85,7 +85,7 @@ std::string scene_contents(const aiScene* scene) {
 
 // Every format but BVH: the import, the animations, and the clip built from the
 // scene. `info` comes with its format set.
-Status read_with_assimp(const fs::path& path, const ReadOptions& options, const std::string& ext, ClipFileInfo& info,
+Status read_with_assimp(const fs::path& path, const ReadOptions& options, ClipFileInfo& info,
                         const Warnings& warn) {
   const std::string label = path.string();
   Assimp::Importer importer;
@@ -94,8 +94,7 @@ Status read_with_assimp(const fs::path& path, const ReadOptions& options, const 
   const aiScene* scene = import_scene(importer, path, assimp_error);
   if (!scene) {
     if (assimp_error.find("No suitable reader") != std::string::npos || assimp_error.empty())
-      return make_error(label + ": unknown or unsupported file format" + (ext.empty() ? "" : " ('." + ext + "')"),
-                        ErrorKind::unreadable);
+      return make_error(label + ": not a motion file (formats read: " + read_formats_text() + ")", ErrorKind::unreadable);
     return make_error(label + ": cannot read: " + assimp_error, ErrorKind::unreadable);
   }
   if (scene->mNumAnimations == 0)
@@ -195,7 +194,7 @@ Status read_here(const fs::path& path, const ReadOptions& options, ClipFileInfo&
   info.format = ext;
   Status st = is_bvh(path, ext)                       ? read_bvh_checked(path, options, info, warn)
               : ext == "fbx" && is_legacy_fbx(path) ? read_legacy_fbx(path, options, info, warn)
-                                                    : read_with_assimp(path, options, ext, info, warn);
+                                                    : read_with_assimp(path, options, info, warn);
   if (!st) return st;
   if (options.read_curves && ext == "fbx" && !info.curves) {
     Result<FbxAnimation> curves = read_fbx_curves_file(path, label);

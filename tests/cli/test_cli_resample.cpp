@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -119,9 +120,12 @@ TEST_F(ResampleCli, InputProblemsExitOneWithOneLineAndNoOutput) {
                  {in + " -o " + out + " --range 1:5", "runs past the clip's end"},
                  {in + " -o " + out + " --method-for Tail=slerp", "no joint 'Tail'"}},
                 1, out);
-  const std::string unwritable = path("no/such/dir/out.bvh");
+  // A folder that cannot be made (a plain file has its name): one line, nothing written.
+  std::ofstream(path("blocker")) << "a file where a folder would go\n";
+  const std::string unwritable = path("blocker/dir/out.bvh");
   const auto r = run_cli("resample " + in + " -o " + unwritable);
   EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find(path("blocker") + ": cannot create the output folder"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(unwritable));
 }
 

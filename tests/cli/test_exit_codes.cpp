@@ -58,6 +58,8 @@ class ExitCodes : public ::testing::Test {
     write_text(dir_ / "nospec.bvh", text);  // a synth clip without its .synth spec
     write_text(dir_ / "empty.bvh", "");
     write_text(dir_ / "notes.xyz", "this is not a motion clip\n");
+    write_text(dir_ / "notes.txt", "this is not a motion clip\n");
+    write_text(dir_ / "script.py", "import rotinterp\nprint(rotinterp.methods())\n");
     write_text(dir_ / "bad.bvh", "HIERARCHY\nROOT Hips\n{\n  OFFSET 0 0\n");
     write_text(dir_ / "afile", "a plain file where a directory is expected\n");
   }
@@ -86,7 +88,7 @@ class ExitCodes : public ::testing::Test {
         const std::string name = e.path().filename().string();
         EXPECT_TRUE(name == "adir" || name == "emptydir" || name == "good.bvh" || name == "good.bvh.synth" ||
                     name == "beyond.bvh" || name == "huge.bvh" || name == "empty.bvh" || name == "notes.xyz" ||
-                    name == "bad.bvh" || name == "afile" || name == "taken.bvh" || name == "nospec.bvh" || name == "ev_partial")
+                    name == "notes.txt" || name == "script.py" || name == "bad.bvh" || name == "afile" || name == "taken.bvh" || name == "nospec.bvh" || name == "ev_partial")
             << args << " left " << name;
       }
     }
@@ -102,7 +104,7 @@ TEST_F(ExitCodes, ReduceFailuresNameTheFileOrOption) {
       {"reduce @/missing.bvh -o @/k.json -q", 1, {"@/missing.bvh: no such file"}, "@/k.json"},
       {"reduce @/bad.bvh -o @/k.json -q", 1, {"@/bad.bvh: "}, "@/k.json"},
       {"reduce @/huge.bvh -o @/k.json -q", 1, {"@/huge.bvh: 'Frames: 4000000000'"}, "@/k.json"},
-      {"reduce @/good.bvh -o @/afile/k.json -q", 1, {"@/afile/k.json"}},
+      {"reduce @/good.bvh -o @/afile/k.json -q", 1, {"@/afile: cannot create the output folder"}},
       {"reduce @/good.bvh -o @/k.json --tolerance 0deg -q", 2, {"--tolerance: angle '0deg' must be greater than 0"}, "@/k.json"},
       {"reduce @/good.bvh -o @/k.json --tolerance nanmm -q", 2, {"--tolerance: length 'nanmm' is not a number"}, "@/k.json"},
       {"reduce @/good.bvh -o @/k.json --tolerance 1deg --tolerance-for nosuch=1deg -q", 2,
@@ -120,7 +122,8 @@ TEST_F(ExitCodes, InfoFailuresNameTheFile) {
       {"info @/missing.bvh", 1, {"@/missing.bvh: no such file"}},
       {"info @/adir", 2, {"for several files or a folder add --summary"}},
       {"info @/empty.bvh", 1, {"@/empty.bvh: the file is empty"}},
-      {"info @/notes.xyz", 1, {"@/notes.xyz: ", "unknown or unsupported file format"}},
+      {"info @/notes.xyz", 1, {"@/notes.xyz: not a motion file (formats read: bvh, fbx, glb, gltf, dae"}},
+      {"info @/script.py", 1, {"@/script.py: not a motion file (formats read: bvh, fbx, glb, gltf, dae"}},
       {"info @/bad.bvh", 1, {"@/bad.bvh: ", "OFFSET of joint 'Hips'"}},
       {"info @/beyond.bvh", 1, {"@/beyond.bvh: 'Frames: 100' but the file has only 31 data rows"}},
       {"info @/huge.bvh", 1, {"@/huge.bvh: 'Frames: 4000000000'"}},
@@ -154,9 +157,8 @@ TEST_F(ExitCodes, ResampleFailuresLeaveNoOutput) {
       {io + "--range 1.5f:3f", 2, {"--range '1.5f:3f': frames are whole numbers"}, "@/out.bvh"},
       {io + "--method-for Tail=slerp", 1, {"@/good.bvh: ", "'Tail'"}, "@/out.bvh"},
       {"resample @/good.bvh -o @/out.txt --fps 60", 2, {"@/out.txt", "unknown format"}, "@/out.txt"},
-      {"resample @/good.bvh -o @/afile/out.bvh --fps 60", 1, {"@/afile/out.bvh: cannot write"}},
-      {"resample @/good.bvh -o @/nodir/out.bvh --fps 60", 1, {"@/nodir/out.bvh: cannot write"}, "@/nodir"},
-      {"resample @/good.bvh -o @/afile/out.gltf --fps 60", 1, {"@/afile/out.gltf"}},
+      {"resample @/good.bvh -o @/afile/out.bvh --fps 60", 1, {"@/afile: cannot create the output folder"}},
+      {"resample @/good.bvh -o @/afile/out.gltf --fps 60", 1, {"@/afile: cannot create the output folder"}},
       {"resample @/good.bvh -o @/taken.bvh --fps 60", 1, {"@/taken.bvh: cannot write"}},
       {"synth @/taken.bvh", 1, {"@/taken.bvh: cannot write"}},
       {"resample @/good.bvh --fps 60", 2, {"--output is required"}},
@@ -176,8 +178,7 @@ TEST_F(ExitCodes, SynthFailuresLeaveNoOutput) {
       {"synth @/s.bvh --seconds 100000 --fps 1000", 2, {"too large"}, "@/s.bvh"},
       {"synth @/s.txt", 2, {"@/s.txt", "unknown format"}, "@/s.txt"},
       // The spec is written first (so that only renames follow the clip's commit).
-      {"synth @/afile/s.bvh", 1, {"@/afile/s.bvh.synth: cannot write"}},
-      {"synth @/nodir/s.bvh", 1, {"@/nodir/s.bvh.synth: cannot write"}, "@/nodir"},
+      {"synth @/afile/s.bvh", 1, {"@/afile: cannot create the output folder"}},
       {"synth", 2, {"--output is required"}},
   });
 }
@@ -193,7 +194,7 @@ TEST_F(ExitCodes, EvalFailuresNameTheInput) {
       {"eval @/good.bvh --shard 3/2" + out, 2, {"--shard '3/2'"}, "@/ev"},
       {"eval @/good.bvh --jobs abc" + out, 2, {"--jobs"}, "@/ev"},
       {"eval @/good.bvh --subframe -1" + out, 2, {"--subframe"}, "@/ev"},
-      {"eval @/good.bvh -o @/afile/ev -q", 1, {"@/afile/ev: cannot create the output directory"}},
+      {"eval @/good.bvh -o @/afile/ev -q", 1, {"@/afile: cannot create the output folder: a file of that name is in the way"}},
       {"eval --merge @/adir" + out, 1, {"@/adir/summary.json: cannot read"}, "@/ev"},
       {"eval" + out, 2, {"at least one input"}, "@/ev"},
       // A file that fails is reported and the run goes on (nothing else to do here):
@@ -201,6 +202,7 @@ TEST_F(ExitCodes, EvalFailuresNameTheInput) {
       {"eval @/empty.bvh -o @/ev_partial -q", 3, {"@/empty.bvh: the file is empty", "1 of 1 files had failures"}, "", 2},
       {"eval @/huge.bvh -o @/ev_partial -q", 3, {"@/huge.bvh: 'Frames: 4000000000'", "1 of 1 files"}, "", 2},
       {"eval @/bad.bvh -o @/ev_partial -q", 3, {"@/bad.bvh: "}, "", 2},
+      {"eval @/notes.txt -o @/ev_partial -q", 3, {"@/notes.txt: not a motion file (formats read: bvh, fbx", "1 of 1"}, "", 2},
       {"eval @/nospec.bvh --truth -o @/ev_partial -q", 3, {"@/nospec.bvh"}, "", 2},
   });
   fs::remove_all(dir_ / "ev_partial");
@@ -233,7 +235,7 @@ TEST_F(ExitCodes, RenderFailuresLeaveNoOutput) {
       {io + "--size 9000x100", 2, {"8192"}, "@/r"},
       {io + "--trail NoSuchJoint", 1, {"@/good.bvh: ", "NoSuchJoint"}, "@/r"},
       {io + "--backend vulkan", 2, {"vulkan"}, "@/r"},
-      {"render @/good.bvh -o @/afile/r -q", 1, {"@/afile/r: cannot create the output directory"}},
+      {"render @/good.bvh -o @/afile/r -q", 1, {"@/afile: cannot create the output folder"}},
       {"render @/good.bvh -q", 2, {"render: give -o DIR (frame PNGs), --video FILE, or both"}},
   });
 }

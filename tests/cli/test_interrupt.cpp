@@ -159,6 +159,37 @@ TEST_F(Interrupt, SigtermDuringEvalLeavesNoCsvNorSummary) {
   EXPECT_EQ(names_in(dir), std::vector<std::string>{});
 }
 
+TEST_F(Interrupt, SigintDuringEvalIntoANewFolderRemovesTheFolderAndSaysSo) {
+  // The run creates new/eval; interrupted, it takes both folders back and says one line.
+  const fs::path parent = out_ / "new", dir = parent / "eval", err = out_ / "stderr.txt";
+  const pid_t pid = spawn({"eval", clip().string(), "--methods", "bf,squad", "--keep-every", "2,4,8", "--subframe", "24",
+                           "-j", "2", "-o", dir.string(), "-q"},
+                          0, err.string());
+  ASSERT_GT(pid, 0);
+  EXPECT_TRUE(wait_until(pid, [&] { return test::has_open_file_in(pid, dir); }, 60.0));
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  ::kill(pid, SIGINT);
+  EXPECT_EQ(exit_status(pid), 128 + SIGINT);
+  EXPECT_FALSE(fs::exists(parent)) << "the folders the run created stay behind";
+  EXPECT_EQ(test::slurp(err), "rotinterp: interrupted\n");
+}
+
+TEST_F(Interrupt, SigintDuringEvalIntoAFolderWithEarlierOutputsKeepsThem) {
+  const fs::path dir = out_ / "eval";
+  ASSERT_EQ(test::run_cli("eval " + clip().string() + " --methods slerp --keep-every 4 --no-plots -q -o " + dir.string())
+                .exit_code,
+            0);
+  const std::vector<std::string> earlier = names_in(dir);
+  ASSERT_FALSE(earlier.empty());
+  const std::string csv = test::slurp(dir / "errors.csv");
+  const int status = interrupt_while_writing({"eval", clip().string(), "--methods", "bf,squad", "--keep-every", "2,4,8",
+                                              "--subframe", "24", "-j", "2", "-o", dir.string(), "-q"},
+                                             dir, SIGINT, std::chrono::milliseconds(300));
+  EXPECT_EQ(status, 128 + SIGINT);
+  EXPECT_EQ(names_in(dir), earlier);
+  EXPECT_EQ(test::slurp(dir / "errors.csv"), csv);
+}
+
 TEST_F(Interrupt, SigintDuringRenderLeavesOnlyCompleteFrames) {
   if (test::run_cli("render --help").exit_code != 0) GTEST_SKIP() << "built without the renderer";
   // Frames are committed one by one: those done stay, each complete; no temporary file.

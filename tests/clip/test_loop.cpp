@@ -69,6 +69,44 @@ TEST(CycleCheck, AStillClipIsNotACycle) {
   EXPECT_FALSE(c->looks_like_cycle);
 }
 
+TEST(CycleCheck, TheLineCountsEachJointOnceAsClosingOrMissing) {
+  Clip clip = cycle_clip(CycleTruth{1.0, Vec3::Zero()}, 30, LoopForm::closed);
+  clip.rotations[2].keys.back() = exp(RotVec(Vec3(0.0, 0.0, 77.0 * kDeg))) * clip.rotations[2].keys.back();
+  auto c = check_loop(clip, LoopForm::closed);
+  ASSERT_TRUE(c);
+  const std::string text = loop_check_text(*c);
+  EXPECT_NE(text.find("; 2 joints close within"), std::string::npos) << text;
+  EXPECT_NE(text.find("1 joint misses closure"), std::string::npos) << text;
+  EXPECT_EQ(text.find("; joints close within"), std::string::npos) << "not all joints close: " << text;
+}
+
+TEST(CycleCheck, ABoxSlidingAlongTheGroundTranslatesAndDoesNotRise) {
+  // One joint (no extent: no tallest axis), still, its root 15 m further along X each cycle.
+  Clip clip;
+  clip.name = "box";
+  clip.skeleton.joints = {{"box", -1, Vec3::Zero(), Quat::Identity()}};
+  clip.frame_time = 1.0 / 30.0;
+  clip.unit.metres_per_unit = 1.0;
+  clip.rotations.resize(1);
+  clip.translations.resize(1);
+  TranslationTrack root;
+  for (int k = 0; k <= 30; ++k) {
+    const double t = k / 30.0;
+    clip.rotations[0].times.push_back(t);
+    clip.rotations[0].keys.push_back(Quat::Identity());
+    root.times.push_back(t);
+    root.keys.push_back(Vec3(15.0 * t, 0.0, 0.0));
+  }
+  clip.translations[0] = root;
+  auto c = check_loop(clip, LoopForm::closed);
+  ASSERT_TRUE(c);
+  const std::string text = loop_check_text(*c);
+  EXPECT_EQ(c->root_vertical_offset, 0.0) << text;
+  EXPECT_NE(text.find("root translates 15 m per cycle"), std::string::npos) << text;
+  EXPECT_EQ(text.find("rises"), std::string::npos) << text;
+  EXPECT_EQ(text.find("nothing moves"), std::string::npos) << "the root moves: " << text;
+}
+
 TEST(CycleCheck, ParsesTheLoopWords) {
   EXPECT_FALSE(parse_loop_form("auto")->has_value());
   EXPECT_EQ(**parse_loop_form("closed"), LoopForm::closed);

@@ -18,9 +18,9 @@
 
 namespace rotinterp::test {
 
-// Starts the CLI with `args` (no shell), stdout and stderr to /dev/null; with
-// `ignored` (a signal) ignored as under nohup.
-inline pid_t spawn(const std::vector<std::string>& args, int ignored = 0) {
+// Starts the CLI with `args` (no shell), stdout and stderr to /dev/null (stderr to
+// `err_file` when given); with `ignored` (a signal) ignored as under nohup.
+inline pid_t spawn(const std::vector<std::string>& args, int ignored = 0, const std::string& err_file = "") {
   const pid_t pid = ::fork();
   if (pid == 0) {
     if (ignored != 0) std::signal(ignored, SIG_IGN);
@@ -31,7 +31,7 @@ inline pid_t spawn(const std::vector<std::string>& args, int ignored = 0) {
     argv.push_back(nullptr);
     const int null = ::open("/dev/null", O_WRONLY);
     ::dup2(null, STDOUT_FILENO);
-    ::dup2(null, STDERR_FILENO);
+    ::dup2(err_file.empty() ? null : ::open(err_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644), STDERR_FILENO);
     ::execv(cli.c_str(), argv.data());
     ::_exit(127);
   }

@@ -57,6 +57,8 @@ struct LoopCheck {
   std::size_t moving_joints = 0;     // joints turning by more than the angle tolerance
   double root_vertical_offset = 0.0; // metres: the root's per-cycle offset along up
   Vec3 root_advance = Vec3::Zero();  // clip units: the root's per-cycle offset D
+  std::size_t joints = 0;            // joints checked (closing + missing)
+  double metres_per_unit = 1.0;      // the clip's unit, for root_advance in metres
 };
 
 // The cycle check of a clip on a uniform frame grid (clip/frames.h) of at least 3
@@ -74,8 +76,11 @@ Result<std::optional<LoopForm>> parse_loop_form(std::string_view text);
 // eight largest and "…" after them; "" when none misses.
 std::string closure_misses_text(const std::vector<ClosureMiss>& misses);
 
-// One line for a user: "looks like a cycle (closed, 38 frames, 1.267 s); closes within 0.0050°;
-// 1 joint misses closure: L_Arm 4.40°" or "not a cycle: …".
+// One line for a user: "looks like a cycle (closed form: 38 frames, 1.267 s per period); joints
+// close within 0.0050°", or "not a cycle (…); 2 joints close within 0.0000°; 1 joint misses
+// closure (…): L_Arm 4.40°". Each joint is counted once (closing or missing). The root
+// "rises" along up or "translates" along the ground per cycle; "nothing moves" only when
+// no joint turns and the root stays, "no joint turns" when only the root moves.
 std::string loop_check_text(const LoopCheck& check);
 
 }  // namespace rotinterp

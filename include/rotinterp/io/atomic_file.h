@@ -13,8 +13,8 @@
 //     targets of up to 255 bytes work) elsewhere and for writers that open a path.
 //     A named temporary whose process is gone and that is 10 minutes old is removed
 //     by the next run that writes into that directory.
-//  4. SIGINT/SIGTERM/SIGHUP remove the named temporaries still open
-//     (install_interrupt_cleanup()).
+//  4. SIGINT/SIGTERM/SIGHUP remove the named temporaries still open and the
+//     output folders the run created, if still empty (install_interrupt_cleanup()).
 //  5. An output that is the same file (device and inode: links count) as a
 //     registered input (protect_input()) is refused.
 //
@@ -115,10 +115,12 @@ void protect_input(const std::filesystem::path& input);
 // registered input; Ok otherwise (also when it does not exist yet).
 Status check_not_an_input(const std::filesystem::path& output);
 
-// Installs SIGINT/SIGTERM/SIGHUP handlers that delete live temporary files, then
+// Installs SIGINT/SIGTERM/SIGHUP handlers that delete live temporary files and the
+// output folders the run created that are still empty (io/output_dirs.h), write
+// `line` (when given, a static string: "rotinterp: interrupted\n") on stderr, then
 // exit with 128 + signal. A signal ignored at the time of the call (nohup) stays
 // ignored. Call once from main().
-void install_interrupt_cleanup();
+void install_interrupt_cleanup(const char* line = nullptr);
 // Deletes the live named temporary files now (async-signal-safe): for a handler
 // that ends the process another way (an uncaught out-of-memory).
 void remove_live_temporaries() noexcept;

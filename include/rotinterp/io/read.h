@@ -96,6 +96,10 @@ Result<Clip> read_clip(const std::filesystem::path& path, const ReadOptions& opt
 // Whether read_clip() knows files with this extension ("fbx" or ".FBX"): BVH and
 // every format assimp imports.
 bool importable_extension(std::string extension);
+// The formats read_clip reads, for messages: "bvh, fbx, glb, gltf, dae and 57 more
+// formats assimp imports". A file with another extension (a .py, a .txt) is refused
+// before any import: "<file>: not a motion file (formats read: …)".
+std::string read_formats_text();
 
 // The importer executable read_clip() starts for assimp imports, found in this
 // order: the environment variable ROTINTERP_IMPORTER (a path); next to the running

@@ -77,8 +77,8 @@ Clip resample(const Clip& clip, const py::object& fps, const py::object& keep_ev
     if (n < 1) value_error("keep_every must be a whole number >= 1, got " + std::to_string(n));
     o.keep_every = static_cast<std::size_t>(n);
   }
-  o.method = method;
-  for (const auto& [joint, m] : method_for) o.method_for.emplace_back(joint, m);
+  o.method = method_of(method).name;
+  for (const auto& [joint, m] : method_for) o.method_for.emplace_back(joint, method_of(m).name);
   o.translation = checked(parse_translation_interp(translation));
   if (!range.is_none()) {
     const auto r = range.cast<std::pair<std::optional<double>, std::optional<double>>>();
@@ -120,8 +120,7 @@ py::dict evaluate(const py::object& inputs, const std::optional<std::vector<std:
     for (const MethodInfo& m : methods()) o.methods.push_back(m.name);
   }
   for (std::string& m : o.methods) {
-    if (!find_method(m)) value_error(unknown_method_message(m));
-    m = find_method(m)->name;  // one spelling in the results ("SLERP" is slerp)
+    m = method_of(m).name;  // one spelling in the results ("SLERP" is slerp)
   }
   for (int n : keep_every)
     if (n < 1) value_error("keep_every values must be >= 1, got " + std::to_string(n));

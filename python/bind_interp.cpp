@@ -81,8 +81,8 @@ bool curve_is_its_keys(const std::string& method) {
 // quaternion that unit_quat refuses, or with a joint's error in `error`.
 template <class Component>
 bool interpolate_joints(const double* t, const Component* q, std::size_t k, std::size_t joints, const double* nt,
-                        std::size_t n, const std::string& method, bool in_scalar_first, bool out_scalar_first,
-                        double* o, std::string& error) {
+                        std::size_t n, const std::string& method, bool continued, bool in_scalar_first,
+                        bool out_scalar_first, double* o, std::string& error) {
   constexpr std::size_t kBlock = 64;  // output times per evaluate call (measured: 64 to 1024 alike)
   const std::size_t jn = joints == 0 ? 1 : joints;
   const std::size_t group = curve_is_its_keys(method) ? jn : 1;
@@ -99,7 +99,7 @@ bool interpolate_joints(const double* t, const Component* q, std::size_t k, std:
         error = (joints ? "joint " + std::to_string(j0 + c) + ": " : std::string()) + curve.error();
         return true;
       }
-      curves[c] = std::move(*curve);
+      curves[c] = continued ? continue_at_end_velocity(std::move(*curve), t[0], t[k - 1]) : std::move(*curve);
     }
     for (std::size_t i0 = 0; i0 < n; i0 += kBlock) {
       const std::size_t m = std::min(kBlock, n - i0);
@@ -134,7 +134,7 @@ py::array interpolate(const py::handle& times_in, const py::handle& quats_in, co
   std::size_t joints = 0;
   try {
     joints = joints_of(quats, k);
-    method_of(method);
+    require_continuable(ends, method_of(method));
   } catch (const py::value_error&) {
     refuse_bad_quats(Doubles::ensure(quats), "quats");  // a bad quaternion is named first, whatever else is wrong
     throw;
@@ -148,12 +148,13 @@ py::array interpolate(const py::handle& times_in, const py::handle& quats_in, co
   double* o = out.mutable_data();
   std::string error;
   bool keys_unit;
+  const bool continued = ends == Extrapolate::at_end_velocity;
   {
     py::gil_scoped_release release;
     keys_unit = floats ? interpolate_joints(times.data(), static_cast<const float*>(quats.data()), k, joints,
-                                            new_times.data(), n, method, in_scalar_first, scalar_first, o, error)
+                                            new_times.data(), n, method, continued, in_scalar_first, scalar_first, o, error)
                        : interpolate_joints(times.data(), static_cast<const double*>(quats.data()), k, joints,
-                                            new_times.data(), n, method, in_scalar_first, scalar_first, o, error);
+                                            new_times.data(), n, method, continued, in_scalar_first, scalar_first, o, error);
   }
   // A bad quaternion anywhere is named before a joint's error, as when all keys were
   // made unit before any joint was built.
@@ -168,6 +169,7 @@ class PyInterpolator {
   PyInterpolator(const py::handle& times_in, const py::handle& quats_in, const std::string& method, bool scalar_first,
                  const std::string& extrapolate)
       : method_(method_of(method).name), scalar_first_(scalar_first), extrapolate_(extrapolate_of(extrapolate)) {
+    require_continuable(extrapolate_, method_of(method));
     const Doubles times = times_array(times_in, "times");
     bool in_scalar_first = scalar_first;  // a scipy Rotation comes scalar-last
     const Doubles quats = unit_quats(quats_in, in_scalar_first, "quats");
@@ -175,6 +177,8 @@ class PyInterpolator {
     if (joints_of(quats, k) != 0) value_error("make_interpolator takes one track: quats of shape (K, 4)");
     track_ = track_of(times.data(), quats.data(), k, 1, 0, in_scalar_first);
     curve_ = checked(make_interpolator(method_, track_));
+    if (extrapolate_ == Extrapolate::at_end_velocity)
+      curve_ = continue_at_end_velocity(std::move(curve_), track_.times.front(), track_.times.back());
   }
 
   // Orientation(s) at t: (4,) for a number, (N, 4) for an array.

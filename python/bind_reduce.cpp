@@ -44,7 +44,7 @@ BudgetText parse_budget(const py::object& items, const std::string& what) {
 py::dict reduce(const Clip& clip, const std::string& method, const py::object& tolerance,
                 const py::object& shell_distance, const py::object& tolerance_for, const std::string& translation,
                 const std::optional<double>& unit_in, const py::object& loop) {
-  if (!find_method(method)) value_error(unknown_method_message(method));
+  const std::string method_name = method_of(method).name;
   BudgetText budget = tolerance.is_none() ? BudgetText{} : parse_budget(tolerance, "tolerance");
   const double shell_m = shell_distance.is_none() ? kDefaultReduceShellDistanceCm / 100.0
                                                  : checked(parse_length(py::str(shell_distance).cast<std::string>()));
@@ -54,7 +54,7 @@ py::dict reduce(const Clip& clip, const std::string& method, const py::object& t
   const double unit = unit_in ? *unit_in : metres_per_unit(clip);
   const auto units = [unit](double millimetres) { return millimetres / 1000.0 / unit; };
   ReduceOptions opt;
-  opt.method = find_method(method)->name;
+  opt.method = method_name;
   opt.translation = checked(parse_translation_interp(translation));
   opt.budget.rotation_deg = deg;
   opt.budget.shell = units(mm);

@@ -38,7 +38,7 @@ std::vector<std::string> render(const py::object& input, const std::optional<std
   }
   if (o.methods.empty()) value_error("methods: no method given (valid: " + method_names() + ")");
   for (const std::string& m : o.methods)
-    if (!is_source_method(m) && !find_method(m)) value_error("methods: " + unknown_method_message(m));
+    if (!is_source_method(m)) method_of(m, "methods: ");
   if (source && py::isinstance<Clip>(input))
     value_error("methods: 'source' replays a file's own curves: give the FBX file's path, not a Clip");
   if (keep_every < 1) value_error("keep_every must be a whole number >= 1, got " + std::to_string(keep_every));

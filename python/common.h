@@ -12,6 +12,7 @@
 #include "rotinterp/io/fbx_source.h"
 #include "rotinterp/core/result.h"
 #include "rotinterp/core/rotation.h"
+#include "rotinterp/interp/continued.h"
 #include "rotinterp/interp/interpolator.h"
 
 #include <pybind11/numpy.h>
@@ -75,12 +76,22 @@ inline Doubles times_array(const py::handle& h, const char* what) {
 
 // Times a curve is asked at, by every entry point (interpolate, an Interpolator's call and
 // derivatives): a number (ndim 0) or a 1-D array, finite (a NaN raises, never a quiet
-// answer), and, with extrapolate "raise", within [first, last].
-enum class Extrapolate { clamp, raise };
+// answer), and, with extrapolate "raise", within [first, last]. Beyond the end keys the
+// curve holds them ("clamp") or turns on at its end velocity ("continue",
+// interp/continued.h), for the methods that have one.
+enum class Extrapolate { clamp, raise, at_end_velocity };
 inline Extrapolate extrapolate_of(const std::string& name) {
   if (name == "clamp") return Extrapolate::clamp;
   if (name == "raise") return Extrapolate::raise;
-  value_error("extrapolate must be \"clamp\" or \"raise\", got \"" + name + "\"");
+  if (name == "continue") return Extrapolate::at_end_velocity;
+  value_error("extrapolate must be \"clamp\", \"raise\" or \"continue\", got \"" + name + "\"");
+}
+// Refuses "continue" for a method without a velocity at its end keys.
+inline void require_continuable(Extrapolate ends, const MethodInfo& method) {
+  if (ends == Extrapolate::at_end_velocity && !can_continue(method))
+    value_error("extrapolate=\"continue\" needs a curve with a velocity at its end keys, and " + method.name +
+                "'s is only its last chord's: use one of " + continued_method_names() +
+                ", or extrapolate=\"clamp\" or \"raise\"");
 }
 inline Doubles sample_times(const py::handle& h, const char* what, Extrapolate extrapolate, double first,
                             double last) {
@@ -98,13 +109,14 @@ inline Doubles sample_times(const py::handle& h, const char* what, Extrapolate e
 
 // The method called `name`, or ValueError: the library's message, and for scipy's class
 // names the method that is their curve ("RotationSpline" is c2, "Slerp" slerp).
-inline const MethodInfo& method_of(const std::string& name) {
+// `context` starts the message ("methods: " where a list was given).
+inline const MethodInfo& method_of(const std::string& name, const std::string& context = "") {
   if (const MethodInfo* m = find_method(name)) return *m;
   std::string lower;
   for (char c : name) lower += static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
   if (lower == "rotationspline")
-    value_error("unknown method '" + name + "': scipy's RotationSpline is method=\"c2\" here (the same curve)");
-  value_error(unknown_method_message(name));
+    value_error(context + "unknown method '" + name + "': scipy's RotationSpline is method=\"c2\" here (the same curve)");
+  value_error(context + unknown_method_message(name));
 }
 
 // numpy's text for the index of the i-th quaternion of an array of shape (..., 4):

@@ -52,7 +52,9 @@ def interpolate(times, quats, new_times, method=default_method, scalar_first=Fal
     ValueError, as everywhere here. method: a name of ``methods()``, any case
     (scipy's ``Slerp`` is "slerp"; its ``RotationSpline`` is "c2", which the message
     for "RotationSpline" names). extrapolate: outside [times[0], times[-1]],
-    "clamp" (the default) holds the end keys, "raise" raises ValueError (scipy's Slerp).
+    "clamp" (the default) holds the end keys, "raise" raises ValueError (scipy's Slerp),
+    "continue" turns on at the curve's angular velocity at its end key (constant
+    beyond it), for the methods of continuity >= 1 (squad, c2, ...; not slerp, nlerp).
     Returns (N, 4) or (N, J, 4); (4,) or (J, 4) for a number. Keys may come in either
     hemisphere (q and -q); every method takes the short way and never returns NaN.
     Releases the GIL.
@@ -76,8 +78,9 @@ def make_interpolator(times, quats, method=default_method, scalar_first=False, e
     for the others the difference quotient of the closed-form velocity inside the
     segment (relative error about 1e-10). At a key both belong to the segment starting
     there, at the last key the last segment's (its limit from inside); outside the key
-    range both are zero with extrapolate="clamp" (the curve holds its end keys) and raise
-    with "raise".
+    range both are zero with extrapolate="clamp" (the curve holds its end keys), raise
+    with "raise", and with "continue" the velocity is the end key's, constant (so zero
+    acceleration), the curve exp((t - t_end) * w_end) * q_end.
 
     The default frame is "fixed", unlike scipy: ``RotationSpline(t, 1)`` is
     ``f.angular_velocity(t, frame="body")`` here, ``RotationSpline(t, 2)``
@@ -98,7 +101,8 @@ def read_clip(path, anim=None, unit=None):
 def write_clip(clip, path, bvh_order="ZXY"):
     """Write a clip; the format follows the extension (.bvh, .fbx, .glb, .gltf, .dae),
     atomically, the same bytes as the ``rotinterp`` command writes. ``bvh_order``: the
-    Euler order of joints without a BVH layout. Raises OSError when it cannot write."""
+    Euler order of joints without a BVH layout. Missing folders of ``path`` are created.
+    Raises OSError when it cannot write."""
     _rotinterp.write_clip(clip, str(path), bvh_order)
 
 

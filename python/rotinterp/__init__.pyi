@@ -15,7 +15,7 @@ ArrayLike = npt.ArrayLike
 Path = str | PathLike[str]
 QuatLike = ArrayLike  # or any object with as_quat(), e.g. scipy.spatial.transform.Rotation
 Frame = Literal["fixed", "body"]  # "fixed" by default; scipy's RotationSpline(t, 1) is frame="body"
-Extrapolate = Literal["clamp", "raise"]
+Extrapolate = Literal["clamp", "raise", "continue"]  # "continue": methods of continuity >= 1
 
 class MethodInfo(TypedDict):
     name: str

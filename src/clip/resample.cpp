@@ -301,6 +301,10 @@ Result<Clip> resample(const Clip& in, Clip* consumable, const ResampleOptions& o
       out.frame_time = in.frame_time;
     }
   }
+  // A cut starts at the clip's start: the BVH writer finds the source's frames that far on.
+  if (!plan.eval_times.empty() && in.frame_time > 0.0)
+    out.bvh_layout = with_source_first_frame(
+        out.bvh_layout, static_cast<std::size_t>(std::max(0.0, std::round((plan.eval_times.front() - start) / in.frame_time))));
 
   out.rotations.resize(n);
   out.translations.resize(n);

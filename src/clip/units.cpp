@@ -9,6 +9,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace rotinterp {
 
@@ -76,6 +78,29 @@ Result<double> parse_unit(std::string_view text) {
   return v;
 }
 
+namespace {
+
+// The largest side of the box around the skeleton posed with rotations r and local
+// translations t, End Sites included where `end_sites` says. Roots are left out where the skeleton has more:
+// a root can be a ground marker far from the body (Bandai's, whose pelvis carries the
+// world position); a root that is the hips lies inside the body's box anyway.
+double posed_size(const Clip& clip, const std::vector<Quat>& r, const std::vector<Vec3>& t, bool end_sites) {
+  WorldPose pose;
+  forward_kinematics(clip.skeleton, r, t, pose);
+  if (!end_sites) pose.end_site_position.clear();
+  if (pose.position.size() > 1) {
+    std::vector<Vec3> body;
+    for (std::size_t j = 0; j < pose.position.size(); ++j)
+      if (clip.skeleton.joints[j].parent >= 0) body.push_back(pose.position[j]);
+    if (!body.empty()) pose.position = std::move(body);
+  }
+  return skeleton_height(pose);
+}
+
+bool usable_size(double size) { return size > 0.0 && std::isfinite(size); }
+
+}  // namespace
+
 double first_pose_size(const Clip& clip) {
   const std::size_t n = clip.skeleton.joints.size();
   std::vector<Quat> r(n);
@@ -86,26 +111,31 @@ double first_pose_size(const Clip& clip) {
     const bool moves = j < clip.translations.size() && clip.translations[j] && !clip.translations[j]->keys.empty();
     t[j] = moves ? clip.translations[j]->keys.front() : clip.skeleton.joints[j].offset;
   }
-  WorldPose pose;
-  forward_kinematics(clip.skeleton, r, t, pose);
-  // Roots are left out where the skeleton has more: a root can be a ground marker far
-  // from the body (Bandai's, whose pelvis carries the world position); a root that is
-  // the hips lies inside the body's box anyway.
-  if (pose.position.size() > 1) {
-    std::vector<Vec3> body;
-    for (std::size_t j = 0; j < n; ++j)
-      if (clip.skeleton.joints[j].parent >= 0) body.push_back(pose.position[j]);
-    if (!body.empty()) pose.position = std::move(body);
+  return posed_size(clip, r, t, true);
+}
+
+double rest_pose_size(const Clip& clip) {
+  std::vector<Quat> r;
+  std::vector<Vec3> t;
+  for (const Joint& j : clip.skeleton.joints) {
+    r.push_back(j.rest_rotation);
+    t.push_back(j.offset);
   }
-  return skeleton_height(pose);
+  return posed_size(clip, r, t, false);
 }
 
 ClipUnit infer_unit(const Clip& clip) {
-  const double size = first_pose_size(clip);
-  const std::string figure = "a figure " + short_number(size) + " units tall";
+  double size = rest_pose_size(clip);
+  // Where the size came from, and what it is: "its offsets" + "a skeleton 184 units tall at rest".
+  std::string from = "its offsets", figure = "a skeleton " + short_number(size) + " units tall at rest";
+  if (!usable_size(size)) {  // every offset zero: the motion alone places the joints
+    size = first_pose_size(clip);
+    from = "its first pose";
+    figure = "a figure " + short_number(size) + " units tall";
+  }
   ClipUnit out;
-  if (!(size > 0.0) || !std::isfinite(size)) {
-    out.reason = "assumed: its first pose has no size; --unit to set";
+  if (!usable_size(size)) {
+    out.reason = "assumed: neither its offsets nor its first pose have a size; --unit to set";
     return out;
   }
   for (const NamedUnit& u : kUnits) {
@@ -113,12 +143,12 @@ ClipUnit infer_unit(const Clip& clip) {
     if (metres >= kInferMinFigureMetres && metres <= kInferMaxFigureMetres) {
       out.metres_per_unit = u.metres;
       out.origin = UnitOrigin::inferred;
-      out.reason = "inferred from " + figure + "; --unit to set";
+      out.reason = "inferred from " + from + ", " + figure + "; --unit to set";
       return out;
     }
   }
   out.metres_per_unit = kAssumedFigureMetres / size;
-  out.reason = "assumed: no common unit makes " + figure + " 1-2.5 m, so it is scaled to " +
+  out.reason = "assumed: measured on " + from + ", " + figure + " is 1-2.5 m in no common unit, so it is scaled to " +
                short_number(kAssumedFigureMetres) + " m; --unit to set";
   return out;
 }

@@ -55,7 +55,20 @@ Skeleton bvh_skeleton(const BvhFile& file) {
 
 BvhLayout bvh_layout(const BvhFile& file) {
   BvhLayout layout;
-  for (const BvhJoint& j : file.joints) layout.channels.push_back(j.channels);
+  auto angles = std::make_shared<BvhSourceAngles>();
+  angles->frame_time = file.frame_time;
+  angles->frames = file.frames;
+  for (const BvhJoint& j : file.joints) {
+    layout.channels.push_back(j.channels);
+    std::vector<std::size_t> columns;
+    for (std::size_t c = 0; c < j.channels.size(); ++c)
+      if (is_rotation(j.channels[c])) columns.push_back(j.first_column + c);
+    std::vector<double>& degrees = angles->degrees.emplace_back();
+    degrees.reserve(file.frames * columns.size());
+    for (std::size_t f = 0; f < file.frames; ++f)
+      for (std::size_t column : columns) degrees.push_back(file.values[f * file.columns + column]);
+  }
+  layout.source_angles = std::move(angles);
   layout.frame_time_text = file.frame_time_text;
   return layout;
 }

@@ -3,6 +3,7 @@
 #include "rotinterp/io/bvh.h"
 #include "rotinterp/core/work_queue.h"
 #include "rotinterp/io/euler.h"
+#include "rotinterp/clip/frames.h"
 #include "fixed6.h"
 
 #include <algorithm>
@@ -30,6 +31,10 @@ constexpr double kGridTolerance = 1e-6;
 // or none) must reproduce the clip's rotation within this angle (radians, 1e-6 rad
 // = 5.7e-5°, below the 1e-4° round-trip promise).
 constexpr double kReducedLayoutTolerance = 1e-6;
+
+// A rotation to write is the source file's own (BvhSourceAngles) when its Euler
+// triple gives it within this angle: the 1e-9 rad every method keeps at its keys.
+constexpr double kSameRotation = 1e-9;
 
 // HIERARCHY indentation stops growing past this depth (it is whitespace to every
 // reader): a chain thousands of joints deep would otherwise make the file
@@ -92,16 +97,56 @@ RotationPlan plan_rotation(const std::vector<Channel>& channels) {
   return p;
 }
 
+// The source file's rotation numbers for joint j (BvhSourceAngles) where the writer
+// can give them back: its layout is the file's, with three rotation channels that
+// make a triple; null otherwise.
+const std::vector<double>* source_degrees(const Clip& clip, std::size_t j, const RotationPlan& p) {
+  const BvhSourceAngles* angles = clip.bvh_layout ? clip.bvh_layout->source_angles.get() : nullptr;
+  if (!angles || j >= angles->degrees.size() || p.columns.size() != 3 || p.triple[0] < 0) return nullptr;
+  if (bvh_channels(clip, j).empty() || angles->degrees[j].size() != 3 * angles->frames) return nullptr;
+  return &angles->degrees[j];
+}
+
+// The source frame at the writer's frame f, for each f; -1 where the source has none.
+// At the source's frame time, frame f is the source's source_first_frame + f; at
+// another rate, the source frame within kFrameSnap of f's time, if any (every 4th
+// frame of 120 Hz at 30 Hz). Only a match: joint_values checks the rotation.
+std::vector<std::ptrdiff_t> source_frames(const Clip& clip, std::size_t frames) {
+  std::vector<std::ptrdiff_t> out(frames, -1);
+  const BvhSourceAngles* angles = clip.bvh_layout ? clip.bvh_layout->source_angles.get() : nullptr;
+  if (!angles || !(angles->frame_time > 0.0)) return out;
+  const std::size_t first = clip.bvh_layout->source_first_frame;
+  for (std::size_t f = 0; f < frames; ++f) {
+    const double t = static_cast<double>(f) * clip.frame_time;
+    const double at = clip.frame_time == angles->frame_time ? static_cast<double>(f) : std::round(t / angles->frame_time);
+    if (std::abs(t - at * angles->frame_time) > kFrameSnap * angles->frame_time) continue;
+    const double i = at + static_cast<double>(first);
+    if (i < static_cast<double>(angles->frames)) out[f] = static_cast<std::ptrdiff_t>(i);
+  }
+  return out;
+}
+
 // One joint's channel values at frame f, in its layout's order, into `out`.
-// `previous` is the joint's Euler angles at the frame before (updated).
+// `previous` is the joint's Euler angles at the frame before (updated). `source`:
+// the file's own three rotation numbers at this time, given back where they make
+// the rotation to write (or null).
 Status joint_values(const Clip& clip, std::size_t j, std::size_t f, const std::vector<Channel>& layout,
-                    const RotationPlan& p, Vec3& previous, const std::string& label, double* out) {
+                    const RotationPlan& p, const double* source, Vec3& previous, const std::string& label,
+                    double* out) {
   const Skeleton& sk = clip.skeleton;
   const RotationTrack& rt = clip.rotations[j];
   const Quat q = rt.keys[rt.keys.size() == 1 ? 0 : f];
   Vec3 t = sk.joints[j].offset;
   if (clip.translations[j]) t = clip.translations[j]->keys[clip.translations[j]->keys.size() == 1 ? 0 : f];
   for (std::size_t c = 0; c < layout.size(); ++c) out[c] = is_rotation(layout[c]) ? 0.0 : t[axis_of(layout[c])];
+  if (p.triple[0] >= 0 && source) {
+    const Vec3 e = Vec3(source[p.triple[0]], source[p.triple[1]], source[p.triple[2]]) * (kPi / 180.0);
+    if (angular_distance(q, euler_to_quat(p.triple_axes, e)) <= kSameRotation) {
+      previous = e;
+      for (int i = 0; i < 3; ++i) out[p.columns[static_cast<std::size_t>(p.triple[i])]] = source[p.triple[i]];
+      return Ok{};
+    }
+  }
   if (p.triple[0] >= 0) {
     const Vec3 e = euler_nearest(q, p.triple_axes, previous);
     previous = e;
@@ -276,7 +321,12 @@ Status write_bvh(const Clip& clip, std::ostream& out, const WriteOptions& option
   // follow its previous frame), then the text, row by row.
   std::vector<RotationPlan> plans(n);
   std::vector<Vec3> previous(n, Vec3::Zero());
-  for (std::size_t j = 0; j < n; ++j) plans[j] = plan_rotation(layout[j]);
+  std::vector<const std::vector<double>*> sources(n);
+  for (std::size_t j = 0; j < n; ++j) {
+    plans[j] = plan_rotation(layout[j]);
+    sources[j] = source_degrees(clip, j, plans[j]);
+  }
+  const std::vector<std::ptrdiff_t> source_frame = source_frames(clip, frames);
   std::vector<std::size_t> first_column(n);  // of each joint in a row
   std::size_t columns = lead_columns;  // the synthetic root's columns stay 0
   for (std::size_t j : order) first_column[j] = columns, columns += layout[j].size();
@@ -292,8 +342,11 @@ Status write_bvh(const Clip& clip, std::ostream& out, const WriteOptions& option
     auto work = [&] {
       for (std::size_t j = next++; j < n; j = next++)
         for (std::size_t f = f0; f < f1; ++f)
-          if (Status s = joint_values(clip, j, f, layout[j], plans[j], previous[j], label,
-                                      block.data() + (f - f0) * columns + first_column[j]);
+          if (Status s = joint_values(clip, j, f, layout[j], plans[j],
+                                      sources[j] && source_frame[f] >= 0
+                                          ? sources[j]->data() + 3 * static_cast<std::size_t>(source_frame[f])
+                                          : nullptr,
+                                      previous[j], label, block.data() + (f - f0) * columns + first_column[j]);
               !s) {
             status[j] = s;
             failed_frame[j] = f;

@@ -1,6 +1,7 @@
 // Our FBX writer: a clip's skeleton and given curves as FBX 7.4 objects, properties, curves and connections.
 #include "fbx_write.h"
 
+#include "fbx_bvh_layout.h"
 #include "fbx_encode.h"
 #include "fbx_rest.h"
 #include "rotinterp/clip/frames.h"
@@ -297,6 +298,10 @@ Result<std::string> encode_fbx_curves(const Clip& clip, const std::vector<FbxOut
     e.begin("Properties70");
     doc.p("RotationOrder", "enum", "", "").i32(fbx_rotation_order(curves[j].axes));
     e.end();
+    if (const std::vector<Channel>& channels = bvh_channels(clip, j); !channels.empty()) {
+      doc.p(kBvhChannelsProperty, "KString", "", "U").str(bvh_channels_text(channels));
+      e.end();
+    }
     doc.p_int("RotationActive", "bool", "", 1);
     doc.p_int("InheritType", "enum", "", 1);
     doc.p_int("DefaultAttributeIndex", "int", "Integer", 0);

@@ -3,6 +3,7 @@
 // and what the scene states beside its keys.
 #include "scene_to_clip.h"
 
+#include "fbx_bvh_layout.h"
 #include "mesh_end_sites.h"
 #include "scene_parts.h"
 
@@ -10,6 +11,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <memory>
 #include <optional>
 #include <set>
 #include <utility>
@@ -112,6 +114,31 @@ void add_scene_facts(const aiScene* scene, const aiAnimation* anim, double tps, 
   }
 }
 
+// The BVH channel layout our FBX writer kept in its Models' user properties
+// (fbx_bvh_layout.h), as assimp hands it on in node metadata; null where no joint has
+// one, or where a joint's channels could not write its tracks (a translation track
+// without position channels): a layout is taken whole or not at all.
+std::shared_ptr<const BvhLayout> kept_bvh_layout(const std::vector<NodeRec>& recs, const Selection& sel,
+                                                 const Clip& clip) {
+  auto layout = std::make_shared<BvhLayout>();
+  bool any = false;
+  for (std::size_t j = 0; j < sel.selected.size(); ++j) {
+    std::vector<Channel>& channels = layout->channels.emplace_back();
+    aiString text;
+    const aiMetadata* meta = recs[sel.selected[j]].node->mMetaData;
+    if (!meta || !meta->Get(kBvhChannelsProperty, text)) continue;
+    const auto parsed = parse_bvh_channels_text(text.C_Str());
+    if (!parsed) return nullptr;
+    channels = *parsed;
+    const bool positions = std::any_of(channels.begin(), channels.end(), [](Channel c) {
+      return c == Channel::Xposition || c == Channel::Yposition || c == Channel::Zposition;
+    });
+    if (clip.translations[j] && !positions) return nullptr;
+    any = true;
+  }
+  return any ? layout : nullptr;
+}
+
 }  // namespace
 
 Status scene_to_clip(const aiScene* scene, const aiAnimation* anim, double tps, Clip& clip, std::size_t& folded,
@@ -151,6 +178,7 @@ Status scene_to_clip(const aiScene* scene, const aiAnimation* anim, double tps, 
     if (sel->animated[sel->selected[j]])
       add_mesh_end_sites(scene, recs[sel->selected[j]].node, static_cast<int>(j), cum_scale[j], is_joint, clip.skeleton);
   if (const double ft = detect_frame_time(*times, tps); ft > 0.0) clip.frame_time = ft;
+  clip.bvh_layout = kept_bvh_layout(recs, *sel, clip);
   add_scene_facts(scene, anim, tps, clip);
   return Ok{};
 }

@@ -1,6 +1,7 @@
 // True size: every command reads a clip's unit the same way (declared, given or
 // inferred), says which, writes files at their true size, and gives the same results
 // for the same motion in centimetres and in metres.
+#include "rotinterp/clip/bvh_layout.h"
 #include "rotinterp/clip/units.h"
 #include "rotinterp/io/read.h"
 #include "support/run_cli.h"
@@ -106,7 +107,24 @@ TEST(UnitsCli, EveryRealBvhIsAPlausibleHumanSizeAndInfoSaysWhy) {
     EXPECT_LE(size, 2.5) << c.file;
   }
   const auto text = run_cli("info " + kBandai);
-  EXPECT_NE(text.out.find("unit:        cm (inferred from a figure"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("unit:        cm (inferred from its offsets, a skeleton "), std::string::npos) << text.out;
+}
+
+// A cut keeps the skeleton, so it keeps the unit: CMU 01_01's frames 100-300 read back
+// in the whole clip's unit (by its first pose the cut measured 26.18 units against
+// 26.56, 0.06494 m per unit against 0.064), and info says it came from the offsets.
+TEST(UnitsCli, ACutOfAClipIsReadBackInTheWholeClipsUnit) {
+  const fs::path dir = temp_dir("cut");
+  const std::string cmu = (kData / "bvh" / "cmu_01_01.bvh").string();
+  for (const char* range : {"100f:300f", "1500f:1600f"}) {
+    const fs::path cut = dir / "cut.bvh";
+    ASSERT_EQ(run_cli("resample " + cmu + " --range " + range + " -o " + cut.string() + " -q").exit_code, 0);
+    const nlohmann::json whole = info_json(cmu), part = info_json(cut.string());
+    EXPECT_NEAR(part["unit"]["metres_per_unit"].get<double>(), whole["unit"]["metres_per_unit"].get<double>(),
+                1e-6 * whole["unit"]["metres_per_unit"].get<double>())
+        << range;
+    EXPECT_NE(part["unit"]["reason"].get<std::string>().find("its offsets"), std::string::npos) << part["unit"];
+  }
 }
 
 TEST(UnitsCli, AGivenUnitWinsOverInferenceAndADeclaredUnitIsKept) {
@@ -152,10 +170,21 @@ TEST(UnitsCli, ABvhThroughFbxComesBackWithItsOwnNumbers) {
   const fs::path dir = temp_dir("roundtrip");
   ASSERT_EQ(run_cli("resample " + kBandai + " -o " + (dir / "a.fbx").string() + " -q").exit_code, 0);
   ASSERT_EQ(run_cli("resample " + (dir / "a.fbx").string() + " -o " + (dir / "b.bvh").string() + " -q").exit_code, 0);
-  auto a = read_clip(kBandai), b = read_clip(dir / "b.bvh");
-  ASSERT_TRUE(a && b);
+  auto a = read_clip(kBandai), b = read_clip(dir / "b.bvh"), fbx = read_clip(dir / "a.fbx");
+  ASSERT_TRUE(a && b && fbx);
   EXPECT_EQ(b->unit.metres_per_unit, 0.01);
   ASSERT_EQ(a->skeleton.joints.size(), b->skeleton.joints.size());
+  // The CHANNELS lines, kept in the FBX (user properties, read back through assimp):
+  // 22 joints × 6, not the 6 + 21 × 3 a BVH without a layout gets.
+  std::size_t channels = 0;
+  for (std::size_t j = 0; j < a->skeleton.joints.size(); ++j) {
+    EXPECT_EQ(bvh_channels(*fbx, j), bvh_channels(*a, j)) << j;
+    EXPECT_EQ(bvh_channels(*b, j), bvh_channels(*a, j)) << j;
+    channels += bvh_channels(*b, j).size();
+    for (std::size_t k = 0; k < a->frame_count(); ++k)
+      EXPECT_LT(angular_distance(a->rotations[j].keys[k], b->rotations[j].keys[k]), 1e-4 * kPi / 180) << j << " " << k;
+  }
+  EXPECT_EQ(channels, 132u);
   // Each joint's local translation at each frame: its track's key, or its offset
   // where it has no track (a constant track may come back as an offset).
   auto local = [](const Clip& c, std::size_t j, std::size_t k) {

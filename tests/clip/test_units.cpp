@@ -71,22 +71,47 @@ TEST(Units, AFigureOfHumanSizeInACommonUnitIsInferredAsThatUnit) {
 TEST(Units, AFigureNoCommonUnitFitsIsScaledToTheAssumedHeightAndSaysSo) {
   const ClipUnit u = infer_unit(figure(26.0));  // CMU's BVH: 1/0.45 inch per unit
   EXPECT_EQ(u.origin, UnitOrigin::assumed);
-  EXPECT_DOUBLE_EQ(u.metres_per_unit * 26.0, kAssumedFigureMetres);
+  EXPECT_DOUBLE_EQ(u.metres_per_unit * 0.9 * 26.0, kAssumedFigureMetres);  // the joints: Toe to Head
   EXPECT_NE(u.reason.find("assumed"), std::string::npos);
   const ClipUnit point = infer_unit(figure(0.0));
   EXPECT_EQ(point.origin, UnitOrigin::assumed);
   EXPECT_EQ(point.metres_per_unit, 1.0);
 }
 
-// The first pose, not the rest offsets: a root on the floor whose pelvis is keyed far
-// from its offset (the Bandai clips) is as tall as its pose.
-TEST(Units, TheFigureIsMeasuredInItsFirstPose) {
+// The skeleton at rest, not a pose: a clip whose first frames crouch (or a cut that
+// starts there) is as tall as its skeleton, so every range of a clip gets its unit.
+TEST(Units, TheFigureIsMeasuredAtRestSoEveryCutOfAClipHasItsUnit) {
   Clip c = figure(180.0);
-  c.skeleton.joints[2].offset = Vec3(0, 90, -430);  // a rest offset far from any pose
-  c.translations[2] = TranslationTrack{{0.0}, {Vec3(0, 162, 0)}};
-  c.translations[0] = TranslationTrack{{0.0}, {Vec3(0, 0, 500)}};  // the root: a marker elsewhere
-  EXPECT_NEAR(first_pose_size(c), 180.0, 1e-9);
+  c.translations[2] = TranslationTrack{{0.0, 1.0}, {Vec3(0, 60, 0), Vec3(0, 162, 0)}};  // crouched, then up
+  c.rotations[1] = RotationTrack{{0.0, 1.0}, {exp(RotVec(Vec3(1.2, 0, 0))), Quat::Identity()}};
+  const ClipUnit whole = infer_unit(c);
+  EXPECT_NEAR(rest_pose_size(c), 162.0, 1e-9);  // Toe to Head: End Sites are left out
+  EXPECT_LT(first_pose_size(c), 100.0);  // the pose would have said inches
+  EXPECT_EQ(whole.metres_per_unit, 0.01);
+  EXPECT_NE(whole.reason.find("its offsets, a skeleton 162 units tall at rest"), std::string::npos) << whole.reason;
+  // The cut from the second frame on: standing.
+  c.translations[2] = TranslationTrack{{1.0}, {Vec3(0, 162, 0)}};
+  c.rotations[1] = RotationTrack{{1.0}, {Quat::Identity()}};
+  EXPECT_EQ(infer_unit(c).metres_per_unit, whole.metres_per_unit);
+  EXPECT_EQ(infer_unit(c).reason, whole.reason);
+}
+
+// A root on the floor whose pelvis rests far from it (the Bandai clips' ground marker)
+// is left out of the box; a skeleton whose joints' offsets are all zero is measured in
+// its first pose.
+TEST(Units, AGroundMarkerRootIsLeftOutAndZeroOffsetsFallBackToTheFirstPose) {
+  Clip c = figure(180.0);
+  c.skeleton.joints[1].offset = Vec3(4, 0, -430);  // the body, 4.3 m from the marker
+  EXPECT_NEAR(rest_pose_size(c), 162.0, 1e-9);
   EXPECT_EQ(infer_unit(c).metres_per_unit, 0.01);
+
+  Clip points = figure(0.0);
+  points.translations[2] = TranslationTrack{{0.0}, {Vec3(0, 1.62, 0)}};
+  points.skeleton.end_sites[0].offset = Vec3(0, 0.18, 0);
+  EXPECT_EQ(rest_pose_size(points), 0.0);  // an End Site is no joint
+  const ClipUnit u = infer_unit(points);
+  EXPECT_EQ(u.metres_per_unit, 1.0);
+  EXPECT_NE(u.reason.find("its first pose, a figure 1.8 units tall"), std::string::npos) << u.reason;
 }
 
 TEST(Units, ConvertingAClipKeepsItsSizeInMetres) {

@@ -3,12 +3,14 @@
 // Time, and reproduces every orientation within 1e-4° and the root path within
 // 1e-4 units.
 #include "io_test_util.h"
+#include "rotinterp/clip/resample.h"
 #include "rotinterp/io/bvh.h"
 #include "rotinterp/io/read.h"
 #include "rotinterp/io/write.h"
 
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <sstream>
 
 namespace rotinterp {
@@ -105,12 +107,63 @@ TEST_P(RealBvh, RoundTripKeepsLayoutFrameTimeAndMotion) {
               worst_position);
 }
 
-// The written Euler curves have no ±180° wraps and no branch flips: a step of 90°
-// or more in any rotation channel happens only where the joint itself turns by 45°
-// or more between the two frames (CMU frame 0 is a reference pose, 154° away).
+// Every channel value of `written` against `source`'s at frame f + first (a cut
+// starting at the source's frame `first`): the worst difference.
+double worst_value_gap(const BvhFile& source, const BvhFile& written, std::size_t first) {
+  double worst = 0.0;
+  for (std::size_t f = 0; f < written.frames; ++f)
+    for (std::size_t c = 0; c < written.columns; ++c)
+      worst = std::max(worst, std::abs(written.values[f * written.columns + c] -
+                                       source.values[(f + first) * source.columns + c]));
+  return worst;
+}
+
+// Where it writes the file's own rotation at one of the file's frame times, the
+// writer gives back the file's own numbers (θ + 360° and the other gimbal branch are
+// the same rotation, but not the same numbers): written as read, resampled at the
+// file's own rate with a method that passes its keys, and a cut of it.
+TEST_P(RealBvh, TheFilesOwnRotationsAreWrittenWithItsOwnNumbers) {
+  const auto src = kData / "bvh" / GetParam();
+  Result<BvhFile> source = parse_bvh(test::read_text(src), "src.bvh");
+  Result<Clip> a = read_clip(src);
+  ASSERT_TRUE(source && a);
+  const auto written = [](const Clip& clip) {
+    std::ostringstream text;
+    EXPECT_TRUE(write_bvh(clip, text, WriteOptions{}, "mem.bvh"));
+    return parse_bvh(text.str(), "mem.bvh");
+  };
+  const double printed = 5e-7 + 1e-12;  // 6 decimals: the source may have more
+  EXPECT_LE(worst_value_gap(*source, *written(*a), 0), printed);
+  for (const char* method : {"slerp", "c2"}) {
+    ResampleOptions same;
+    same.method = method;
+    const Result<Clip> round = resample_clip(*a, same);
+    ASSERT_TRUE(round) << round.error();
+    EXPECT_LE(worst_value_gap(*source, *written(*round), 0), printed) << method;
+  }
+  if (a->frame_count() < 4) return;
+  ResampleOptions cut;
+  const std::size_t first = a->frame_count() / 3;
+  cut.range = TimeRange{static_cast<double>(first), static_cast<double>(2 * first), true, true};  // frames
+  const Result<Clip> part = resample_clip(*a, cut);
+  ASSERT_TRUE(part) << part.error();
+  const Result<BvhFile> part_file = written(*part);
+  ASSERT_TRUE(part_file);
+  EXPECT_EQ(part_file->frames, first + 1);
+  EXPECT_LE(worst_value_gap(*source, *part_file, first), printed);
+}
+
+// Where it computes the Euler angles (no source numbers: another rate, a rotation
+// that is not the file's), the written curves have no ±180° wraps and no branch
+// flips: a step of 90° or more in any rotation channel happens only where the joint
+// itself turns by 45° or more between the two frames (CMU frame 0 is a reference
+// pose, 154° away).
 TEST_P(RealBvh, WrittenEulerCurvesHaveNoWrapsOrFlips) {
   Result<Clip> a = read_clip(kData / "bvh" / GetParam());
   ASSERT_TRUE(a) << a.error();
+  auto computed = std::make_shared<BvhLayout>(*a->bvh_layout);
+  computed->source_angles = nullptr;
+  a->bvh_layout = computed;
   std::ostringstream text;
   ASSERT_TRUE(write_bvh(*a, text, WriteOptions{}, "mem.bvh"));
   Result<BvhFile> f = parse_bvh(text.str(), "mem.bvh");

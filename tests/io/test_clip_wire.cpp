@@ -44,7 +44,7 @@ ClipFileInfo every_field_set() {
       {{Channel::Xposition, Channel::Yposition, Channel::Zposition, Channel::Zrotation, Channel::Xrotation, Channel::Yrotation},
        {},
        {Channel::Yrotation}},
-      ".0083333"});
+      ".0083333", nullptr, 0});
   c.unit = {0.01, UnitOrigin::declared, "declared by the file: FBX UnitScaleFactor 1"};
   c.source_format = "bvh";
   return info;

@@ -194,7 +194,10 @@ def test_files_raise_os_errors(tmp_path):
     with pytest.raises(ValueError, match="broken.bvh"):
         rotinterp.read_clip(broken)
     clip = rotinterp.read_clip(BVH_CLIPS[0])
-    with pytest.raises(OSError):
-        rotinterp.write_clip(clip, tmp_path / "no" / "such" / "dir" / "out.bvh")
+    rotinterp.write_clip(clip, tmp_path / "new" / "dir" / "out.bvh")  # missing folders are made, as the CLI makes them
+    assert (tmp_path / "new" / "dir" / "out.bvh").is_file()
+    (tmp_path / "afile").write_text("in the way")
+    with pytest.raises(OSError, match="afile: cannot create the output folder: a file of that name is in the way"):
+        rotinterp.write_clip(clip, tmp_path / "afile" / "out.bvh")
     with pytest.raises(ValueError, match="unknown format"):
         rotinterp.write_clip(clip, tmp_path / "out.xyz")

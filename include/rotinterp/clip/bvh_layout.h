@@ -1,8 +1,9 @@
-// The layout of the BVH file a clip was read from: each joint's CHANNELS and the
-// Frame Time as written. A Clip carries it (Clip::bvh_layout) without looking
-// inside, so that the BVH writer gives the same channel order and Frame Time text
-// back, and the FBX writer each joint's rotation order. The BVH reader (io/bvh.h)
-// fills it; synthetic clips (clip/synth.h) get a random one.
+// The layout of the BVH file a clip was read from: each joint's CHANNELS, the Frame
+// Time as written and the rotation channels' own numbers. A Clip carries it
+// (Clip::bvh_layout) without looking inside, so that the BVH writer gives the same
+// channel order, Frame Time text and Euler angles back, and the FBX writer each
+// joint's rotation order. The BVH reader (io/bvh.h) fills it; synthetic clips
+// (clip/synth.h) get a random one.
 #pragma once
 
 #include "rotinterp/clip/clip.h"
@@ -31,6 +32,17 @@ inline const char* channel_name(Channel c) {
   return "?";
 }
 
+// The numbers a BVH file wrote in its rotation channels (degrees), per joint: frame
+// after frame, that joint's rotation channels in file order; frame f was at
+// f·frame_time seconds. The same rotation has many Euler triples (θ and θ + 360°,
+// the two gimbal branches): the writer gives these back where it writes the file's
+// own rotation at one of its frame times, so a round trip keeps its numbers.
+struct BvhSourceAngles {
+  double frame_time = 0.0;
+  std::size_t frames = 0;
+  std::vector<std::vector<double>> degrees;  // [joint][frame · rotation channels + channel]
+};
+
 struct BvhLayout {
   // One entry per joint of the clip (same order): its CHANNELS, in file order;
   // empty for a joint without any.
@@ -38,6 +50,12 @@ struct BvhLayout {
   // The Frame Time exactly as written (e.g. ".0083333"). The BVH writer reuses this
   // text while it still parses to Clip::frame_time; empty if none.
   std::string frame_time_text;
+  // The file's own rotation numbers; null for a clip not read from BVH. Shared: the
+  // layouts of a clip's resampled copies point to the one table.
+  std::shared_ptr<const BvhSourceAngles> source_angles;
+  // The source frame that is the clip's frame 0: a cut of frames 100-300 starts at
+  // the clip's start, its frame 0 the source's frame 100.
+  std::size_t source_first_frame = 0;
 };
 
 // Joint `joint`'s channels in the clip's layout; empty when it has none (a clip
@@ -60,6 +78,15 @@ inline std::shared_ptr<const BvhLayout> without_frame_time_text(const std::share
   if (!layout || layout->frame_time_text.empty()) return layout;
   auto out = std::make_shared<BvhLayout>(*layout);
   out->frame_time_text.clear();
+  return out;
+}
+
+// `layout` for a cut of its clip that starts `frames` frames later; null stays null.
+inline std::shared_ptr<const BvhLayout> with_source_first_frame(const std::shared_ptr<const BvhLayout>& layout,
+                                                                std::size_t frames) {
+  if (!layout || !layout->source_angles || frames == 0) return layout;
+  auto out = std::make_shared<BvhLayout>(*layout);
+  out->source_first_frame += frames;
   return out;
 }
 

@@ -35,7 +35,7 @@ const char* unit_origin_name(UnitOrigin origin);
 // A unit's short name where it is a common one ("m", "cm", "mm", "in", "ft"), else
 // the figure in metres ("0.0652 m").
 std::string unit_name(double metres_per_unit);
-// "cm (inferred from a figure 184 units tall; --unit to set)": name and reason.
+// "cm (inferred from its offsets, a skeleton 184 units tall at rest; --unit to set)".
 std::string describe_unit(const ClipUnit& unit);
 
 // A unit as the user writes it (--unit): m, cm, mm, in, ft, or a positive number of
@@ -45,22 +45,29 @@ Result<double> parse_unit(std::string_view text);
 // ---- inference (files that declare no unit) ------------------------------------------
 
 // The figure sizes, in metres, a clip of people is taken to have: the largest side of
-// the bounding box of its first pose, at the first key of every track (height, or
-// arm span in a T-pose; the rest offsets alone can be far from any pose, as in the
-// Bandai clips whose every joint has position channels) lies in this range in at most
-// one of the common units m, cm, mm, in and ft (each two are more than 2.5× apart,
-// so the ranges do not overlap and the choice is never ambiguous).
+// the bounding box of its skeleton at rest (height, or arm span in a T-pose) lies in
+// this range in at most one of the common units m, cm, mm, in and ft (each two are
+// more than 2.5× apart, so the ranges do not overlap and the choice is never
+// ambiguous). The rest pose — offsets and rest rotations — is what a cut of the clip
+// keeps, so a clip and any range of its frames get the same unit (CMU 01_01 and its
+// frames 100-300 alike); the first pose, which moves with the cut, is used only where
+// every offset is zero.
 constexpr double kInferMinFigureMetres = 1.0;
 constexpr double kInferMaxFigureMetres = 2.5;
 // Where no common unit gives such a figure (CMU's BVH, in units of 1/0.45 inch), the
 // figure is scaled to this size, and the unit says it was assumed.
 constexpr double kAssumedFigureMetres = 1.7;
 
-// The size of the clip's first pose (see above), in clip units; 0 for a point. Root
-// joints are left out of the box when there are other joints (a root can be a ground
-// marker far from the body).
+// The size of the skeleton posed at its first key of every track (first_pose_size,
+// End Sites included) or at rest (rest_pose_size, joints only: FBX and glTF keep no
+// End Sites, so a BVH and its trip through them measure alike), in clip units: the
+// largest side of its bounding box; 0 for a point. Root joints are left out of the
+// box when there are other joints (a root can be a ground marker far from the body,
+// as Bandai's is).
 double first_pose_size(const Clip& clip);
-// The unit of a clip whose file states none, from first_pose_size().
+double rest_pose_size(const Clip& clip);
+// The unit of a clip whose file states none, from rest_pose_size() (first_pose_size()
+// where that is zero); its reason names which and the size.
 ClipUnit infer_unit(const Clip& clip);
 
 // The same motion in another unit: every length (joint and End Site offsets,

@@ -80,7 +80,7 @@ Result<BvhFile> parse_bvh(std::string_view text, const std::string& label);
 // The skeleton of a parsed file: joints (names, parents, OFFSETs, identity rest
 // rotations) and End Sites named "EndSite_<joint>".
 Skeleton bvh_skeleton(const BvhFile& file);
-// Its layout: every joint's CHANNELS and the Frame Time text.
+// Its layout: every joint's CHANNELS, the Frame Time text and the rotation numbers.
 BvhLayout bvh_layout(const BvhFile& file);
 
 // A clip read entirely from the parsed file (double precision, no assimp). Key k
@@ -92,8 +92,10 @@ Clip bvh_to_clip(const BvhFile& file, const std::string& name, unsigned threads 
 // first), OFFSETs, End Sites and channel layout (Clip::bvh_layout, and its Frame
 // Time text while that still parses to frame_time); joints without channels get
 // `options.bvh_order` rotation channels, plus position channels where they have a
-// translation track. Rotation values are the Euler angles, in each joint's channel
-// order, nearest to the previous frame's (no ±180° wraps); values have 6 decimals.
+// translation track. Rotation values are the source file's own numbers where the
+// rotation is the file's at one of its frame times (BvhSourceAngles: a same-rate
+// round trip or a cut keeps its numbers), elsewhere the Euler angles, in each joint's
+// channel order, nearest to the previous frame's (no ±180° wraps); 6 decimals.
 // Needs frame_time > 0 and every multi-key track on the grid start + k·frame_time.
 Status write_bvh(const Clip& clip, std::ostream& out, const WriteOptions& options, const std::string& label);
 

@@ -9,7 +9,6 @@
 #include "rotinterp/clip/rebuild.h"
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/io/fbx_source.h"
-#include "rotinterp/io/output_dirs.h"
 #include "rotinterp/render/colour_map.h"
 #include "rotinterp/render/layout.h"
 #include "rotinterp/render/video.h"
@@ -255,7 +254,6 @@ Result<ComparisonResult> render_frames(const Clip& clip, const fs::path& out_dir
   if (options.pngs) {
     if (fs::exists(out_dir, ec) && !fs::is_directory(out_dir, ec))
       return make_error(out_dir.string() + ": is an existing file, not a directory for the frames");
-    if (Status made = create_output_directories(out_dir); !made) return made.failure();
   }
 
   auto context = create_context(backend);

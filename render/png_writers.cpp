@@ -10,7 +10,7 @@ PngWriters::PngWriters(ProgressFn progress, std::size_t total)
 
 bool PngWriters::push(std::filesystem::path path, Image image) {
   while (writes_.size() >= kInFlight) collect_one();
-  if (!error_.empty()) return false;
+  if (!error_) return false;
   writes_.push_back(queue_.submit([this, path = std::move(path), image = std::move(image)]() -> Status {
     if (failed_) return Ok{};
     Status s = write_png(image, path);
@@ -26,14 +26,13 @@ bool PngWriters::push(std::filesystem::path path, Image image) {
 
 Status PngWriters::finish() {
   while (!writes_.empty()) collect_one();
-  if (!error_.empty()) return make_error(error_);
-  return Ok{};
+  return error_;
 }
 
 void PngWriters::collect_one() {
   Status s = writes_.front().get();
   writes_.pop_front();
-  if (!s && error_.empty()) error_ = s.error();
+  if (!s && error_) error_ = s;  // the first failure, its kind kept (an output's names the output)
 }
 
 }  // namespace rotinterp::render

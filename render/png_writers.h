@@ -34,7 +34,7 @@ class PngWriters {
   std::atomic<std::size_t> done_{0};
   std::atomic<bool> failed_{false};
   std::deque<std::future<Status>> writes_;
-  std::string error_;
+  Status error_ = Ok{};
   WorkQueue queue_;  // last: destroyed first, so its jobs finish while the members they use live
 };
 

@@ -5,7 +5,6 @@
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/io/atomic_file.h"
 #include "rotinterp/io/fbx_reduced.h"
-#include "rotinterp/io/output_dirs.h"
 #include "rotinterp/io/read.h"
 #include "rotinterp/io/write.h"
 #include "rotinterp/reduce/reduce.h"
@@ -233,17 +232,17 @@ Status reduce_one_file(const std::string& input, const ReduceArgs& a, const Redu
   file_run.seconds = first.seconds;
 
   if (!o.output.empty()) {
-    Status written = create_output_directories(std::filesystem::path(o.output).parent_path());
-    if (written && gltf) {
+    Status written = Ok{};
+    if (gltf) {
       WriteOptions w;
       w.gltf_own_key_times = true;
       w.gltf_cubic_rotations = method == "gltf-cubic";
       w.gltf_cubic_translations = opt.translation == TranslationInterp::cubic;
       w.on_warning = warn;
       written = write_clip(first.result.reduced, o.output, w);
-    } else if (written && fbx) {
+    } else if (fbx) {
       written = write_reduced_fbx(o.output, *clip, first, opt, a.quiet || !o.print);
-    } else if (written) {
+    } else {
       opt.method = first.method;
       written = write_keys_json(o.output, *clip, first, opt, metres_per_unit, budgets);
     }

@@ -203,7 +203,8 @@ int run_render(const RenderArgs& a) {
   options.progress = make_progress("render", a.quiet, "frames");
   auto result = render::render_comparison(*clip, a.out_dir, options);
   end_progress(a.quiet);
-  if (!result) return fail(a.input + ": " + result.error());
+  // An output's error names the output; the others are about the input.
+  if (!result) return fail(result.error_kind() == ErrorKind::cannot_write ? result.error() : a.input + ": " + result.error());
   if (!a.quiet) {
     const std::size_t images = result->files.size() - (a.video.empty() ? 0 : 1);
     const std::string camera = result->followed ? "camera following" : "fixed camera";

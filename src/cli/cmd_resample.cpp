@@ -13,7 +13,6 @@
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/io/atomic_file.h"
 #include "rotinterp/io/fbx_source.h"
-#include "rotinterp/io/output_dirs.h"
 #include "rotinterp/io/read.h"
 #include "rotinterp/io/write.h"
 
@@ -175,8 +174,6 @@ int run_single(const ResampleArgs& a, ResampleOptions opt) {
     end_progress(a.quiet);
     if (show) std::fprintf(stderr, "\r\033[K%s …", what.c_str());
   };
-  if (Status made = create_output_directories(std::filesystem::path(a.output).parent_path()); !made)
-    return fail(made.error());
   opt.progress = make_progress("resample", a.quiet, "joints");
   FileRun run;
   run.input = input;

@@ -2,7 +2,6 @@
 #include "common.h"
 #include "rotinterp/clip/synth.h"
 #include "rotinterp/io/atomic_file.h"
-#include "rotinterp/io/output_dirs.h"
 #include "rotinterp/io/write.h"
 
 #include <CLI/CLI.hpp>
@@ -69,7 +68,6 @@ int run_synth(const SynthArgs& a) {
   // so a new clip never sits beside the spec of another one.
   const std::filesystem::path spec_path = synth_spec_path(a.output);
   const std::string spec = synth_spec(o);
-  if (Status made = create_output_directories(spec_path.parent_path()); !made) return fail(made.error());
   AtomicOutput spec_out(spec_path, TempKind::unnamed);
   if (Status s = write_to(spec_out, [&](std::ostream& os) -> Status {
         os << spec << "\n";

@@ -9,7 +9,6 @@
 #include "rotinterp/io/folder_run.h"
 #include "rotinterp/io/atomic_file.h"
 #include "rotinterp/io/info.h"
-#include "rotinterp/io/output_dirs.h"
 #include "rotinterp/io/read.h"
 
 #include <fmt/format.h>
@@ -221,7 +220,6 @@ Result<EvalReport> run_eval(const EvalOptions& opt) {
   auto shard = find_run_inputs(opt.inputs, opt.shard_index, opt.shard_count);
   if (!shard) return shard.failure();
   const std::vector<std::string>& files = *shard;
-  if (Status s = create_output_directories(opt.output_dir); !s) return s.failure();
   auto lock = DirectoryLock::acquire(opt.output_dir);
   if (!lock) return lock.failure();
 

@@ -3,7 +3,6 @@
 #include "batch_outputs.h"
 
 #include "rotinterp/eval/batch.h"
-#include "rotinterp/io/output_dirs.h"
 
 #include <algorithm>
 #include <chrono>
@@ -107,7 +106,6 @@ Result<EvalReport> merge_eval(const std::vector<fs::path>& dirs, const fs::path&
     if (!r) return r.failure();
     readers.push_back(std::move(*r));
   }
-  if (Status s = create_output_directories(out_dir); !s) return s.failure();
   auto lock = DirectoryLock::acquire(out_dir);
   if (!lock) return lock.failure();
   const bool seam = merged.options.loop != "off";

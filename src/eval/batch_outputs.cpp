@@ -5,7 +5,6 @@
 #include "rotinterp/eval/plots.h"
 #include "rotinterp/eval/seam.h"
 #include "rotinterp/io/csv.h"
-#include "rotinterp/io/output_dirs.h"
 
 #include <fmt/format.h>
 

@@ -3,6 +3,8 @@
 
 #include "rotinterp/io/output_dirs.h"
 
+#include "cleanup_list.h"
+
 #include <dirent.h>
 #include <fcntl.h>
 #include <sys/file.h>
@@ -29,30 +31,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Live named temporary paths, kept as fixed C strings so the signal handler can
-// unlink them without allocating.
-constexpr int kMaxLive = 256;
-constexpr int kMaxPath = 4096;
-char g_live[kMaxLive][kMaxPath];
-std::atomic<bool> g_used[kMaxLive];
-std::mutex g_mutex;
-
-int register_live(const std::string& path) {
-  if (path.size() >= kMaxPath) return -1;
-  std::lock_guard<std::mutex> lock(g_mutex);
-  for (int i = 0; i < kMaxLive; ++i) {
-    if (!g_used[i].load()) {
-      std::memcpy(g_live[i], path.c_str(), path.size() + 1);
-      g_used[i].store(true);
-      return i;
-    }
-  }
-  return -1;
-}
-
-void unregister_live(int slot) {
-  if (slot >= 0) g_used[slot].store(false);
-}
+// Every error here is about an output (its folder, its file, its lock): a caller names
+// the output, not its input, in front of it.
+Error write_error(std::string message) { return make_error(std::move(message), ErrorKind::cannot_write); }
 
 const char* g_interrupt_line = nullptr;  // set once, before the handlers
 
@@ -136,10 +117,10 @@ template <class Create>
 fs::path claim_temp_name(const fs::path& target, int& slot, int& err, Create create) {
   for (int attempt = 0; attempt < 100; ++attempt) {
     fs::path name = temp_name(target, g_counter++);
-    slot = register_live(name.string());
+    slot = cleanup::add(name.string(), cleanup::Kind::file);
     if (create(name)) return name;
     err = errno;
-    unregister_live(slot);
+    cleanup::drop(slot);
     slot = -1;
     if (err != EEXIST) break;
   }
@@ -157,19 +138,16 @@ std::vector<InputId> g_inputs;
 
 }  // namespace
 
-void remove_live_temporaries() noexcept {
-  for (int i = 0; i < kMaxLive; ++i)
-    if (g_used[i].load()) ::unlink(g_live[i]);
-}
+void remove_live_temporaries() noexcept { cleanup::remove_all(cleanup::Kind::file); }
 
 Status checked_write(int fd, const void* data, std::size_t size, const std::string& label) {
   const char* p = static_cast<const char*>(data);
   while (size > 0) {
-    if (injected_fault()) return make_error(label + ": cannot write: " + reason(errno));
+    if (injected_fault()) return write_error(label + ": cannot write: " + reason(errno));
     const ssize_t n = ::write(fd, p, size);
     if (n < 0 && errno == EINTR) continue;
     // 0 bytes written for a non-empty request: no progress is possible.
-    if (n <= 0) return make_error(label + ": cannot write: " + reason(n == 0 ? ENOSPC : errno));
+    if (n <= 0) return write_error(label + ": cannot write: " + reason(n == 0 ? ENOSPC : errno));
     p += n;
     size -= static_cast<std::size_t>(n);
   }
@@ -183,13 +161,17 @@ Status checked_close(int fd, bool sync, const std::string& label) {
   const bool fault = injected_fault();
   if ((::close(fd) != 0 && errno != EINTR) || fault)
     if (error.empty()) error = label + ": cannot write (close failed): " + reason(fault ? ENOSPC : errno);
-  if (!error.empty()) return make_error(error);
+  if (!error.empty()) return write_error(error);
   return Ok{};
 }
 
 AtomicOutput::AtomicOutput(fs::path target, TempKind kind) : target_(std::move(target)) {
   if (Status s = check_not_an_input(target_); !s) {
     error_ = s.error();
+    return;
+  }
+  if (Status made = create_output_directories(target_.parent_path()); !made) {
+    error_ = made.error();
     return;
   }
   remove_stale_temporaries(target_.parent_path());
@@ -212,29 +194,29 @@ AtomicOutput::AtomicOutput(fs::path target, TempKind kind) : target_(std::move(t
 AtomicOutput::~AtomicOutput() {
   if (fd_ >= 0) ::close(fd_);
   if (!committed_ && !temp_.empty()) ::unlink(temp_.c_str());
-  unregister_live(slot_);
+  cleanup::drop(slot_);
 }
 
 Status AtomicOutput::status() const {
-  if (!error_.empty()) return make_error(error_);
+  if (!error_.empty()) return write_error(error_);
   return Ok{};
 }
 
 Status AtomicOutput::write(const void* data, std::size_t size) {
-  if (!error_.empty()) return make_error(error_);
-  if (finished_) return make_error(target_.string() + ": written after it was finished");
+  if (!error_.empty()) return write_error(error_);
+  if (finished_) return write_error(target_.string() + ": written after it was finished");
   Status s = checked_write(fd_, data, size, target_.string());
   if (!s) error_ = s.error();
   return s;
 }
 
 Status AtomicOutput::finish() {
-  if (!error_.empty()) return make_error(error_);
+  if (!error_.empty()) return write_error(error_);
   if (finished_) return Ok{};
   const std::string label = target_.string();
   auto failed = [&](const std::string& message) -> Status {
     error_ = message;
-    return make_error(message);
+    return write_error(message);
   };
   // The replaced file's owner and mode (owner first: chown clears set-id bits).
   struct stat old {};
@@ -265,11 +247,11 @@ Status AtomicOutput::commit() {
     temp_ = claim_temp_name(target_, slot_, err, [&](const fs::path& name) {
       return ::linkat(AT_FDCWD, proc, AT_FDCWD, name.c_str(), AT_SYMLINK_FOLLOW) == 0;
     });
-    if (temp_.empty()) return make_error(label + ": cannot write: " + reason(err));
+    if (temp_.empty()) return write_error(label + ": cannot write: " + reason(err));
   }
-  if (::rename(temp_.c_str(), target_.c_str()) != 0) return make_error(label + ": cannot write: " + reason(errno));
+  if (::rename(temp_.c_str(), target_.c_str()) != 0) return write_error(label + ": cannot write: " + reason(errno));
   committed_ = true;
-  unregister_live(slot_);  // the name is the target's now: not for the interrupt handler to remove
+  cleanup::drop(slot_);  // the name is the target's now: not for the interrupt handler to remove
   slot_ = -1;
   // The rename itself reaches the disk with the directory.
   const std::string dir = target_.parent_path().empty() ? std::string(".") : target_.parent_path().string();
@@ -336,7 +318,7 @@ Status write_to(AtomicOutput& out, const std::function<Status(std::ostream&)>& w
   if (Status s = write(os); !s) return s;
   os.flush();
   if (Status s = out.status(); !s) return s;
-  if (!os) return make_error(out.target().string() + ": cannot write");
+  if (!os) return write_error(out.target().string() + ": cannot write");
   return out.finish();
 }
 
@@ -347,16 +329,17 @@ Status write_file_atomically(const fs::path& target, const std::function<Status(
 }
 
 Result<DirectoryLock> DirectoryLock::acquire(const fs::path& dir) {
+  if (Status made = create_output_directories(dir); !made) return made.failure();
   // The directory itself is locked: no lock file is left in it.
   const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (fd < 0) return make_error(dir.string() + ": cannot lock the output directory: " + reason(errno));
+  if (fd < 0) return write_error(dir.string() + ": cannot lock the output directory: " + reason(errno));
   if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
     const int err = errno;
     ::close(fd);
     if (err == EWOULDBLOCK)
-      return make_error(dir.string() + ": another rotinterp run is writing to this directory; wait for it or choose "
+      return write_error(dir.string() + ": another rotinterp run is writing to this directory; wait for it or choose "
                         "another output directory");
-    return make_error(dir.string() + ": cannot lock the output directory: " + reason(err));
+    return write_error(dir.string() + ": cannot lock the output directory: " + reason(err));
   }
   return DirectoryLock(fd);
 }
@@ -378,7 +361,7 @@ Status check_not_an_input(const fs::path& output) {
   std::lock_guard<std::mutex> lock(g_inputs_mutex);
   for (const InputId& in : g_inputs)
     if (in.dev == st.st_dev && in.ino == st.st_ino)
-      return make_error(output.string() + ": is the same file as the input " + in.path +
+      return write_error(output.string() + ": is the same file as the input " + in.path +
                         "; refusing to overwrite an input (choose another output)");
   return Ok{};
 }

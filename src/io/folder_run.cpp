@@ -4,7 +4,6 @@
 #include "rotinterp/io/atomic_file.h"
 #include "rotinterp/io/csv.h"
 #include "rotinterp/io/dataset.h"
-#include "rotinterp/io/output_dirs.h"
 
 #include <atomic>
 #include <system_error>
@@ -55,16 +54,10 @@ FileRunReport run_files(const std::vector<RunFile>& files, const FileRunOptions&
     if (options.skip_existing && !f.output.empty() && fs::is_regular_file(f.output, ec)) {
       o.status = FileStatus::exists;
     } else {
-      Status s = Ok{};
-      if (!f.output.empty()) {
-        s = create_output_directories(f.output.parent_path());
-      }
-      if (s) {
-        // Joints in parallel only where fewer files than workers are in flight (the last ones).
-        const unsigned now = ++in_flight;
-        s = job(i, std::max(1u, workers / std::max(1u, now)));
-        --in_flight;
-      }
+      // Joints in parallel only where fewer files than workers are in flight (the last ones).
+      const unsigned now = ++in_flight;
+      const Status s = job(i, std::max(1u, workers / std::max(1u, now)));
+      --in_flight;
       if (!s && s.error_kind() == ErrorKind::no_animation && found_in_directory(f.input, options.named)) {
         o.status = FileStatus::no_animation;
       } else if (!s) {

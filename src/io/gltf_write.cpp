@@ -285,10 +285,11 @@ Status write_gltf(const Clip& clip, const std::filesystem::path& path, bool bina
   doc->json["buffers"][0]["uri"] = bin_path.filename().string();
   const std::string json = doc->json.dump();
   // Named temporaries, removed by the interrupt handler (as assimp-era .gltf writes were).
+  // Their errors name their own file (the .bin beside the .gltf, or the folder).
   AtomicOutput bin_out(bin_path), gltf_out(path);
-  if (Status s = bin_out.write(doc->buffer.data(), doc->buffer.size()); !s) return s.failure(label + ": ");
-  if (Status s = gltf_out.write(json.data(), json.size()); !s) return s.failure(label + ": ");
-  if (Status s = bin_out.finish(); !s) return s.failure(label + ": ");
+  if (Status s = bin_out.write(doc->buffer.data(), doc->buffer.size()); !s) return s;
+  if (Status s = gltf_out.write(json.data(), json.size()); !s) return s;
+  if (Status s = bin_out.finish(); !s) return s;
   if (Status s = gltf_out.finish(); !s) return s;
   const std::optional<std::filesystem::path> old_bin = previous_buffer(path);
   if (Status s = commit_together({&bin_out, &gltf_out}); !s) return s;

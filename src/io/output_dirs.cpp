@@ -1,11 +1,8 @@
-// The output folders a run created, kept as fixed C strings so a signal handler can
-// remove them without allocating.
+// The output folders a run creates, noted in the run's cleanup list.
 #include "rotinterp/io/output_dirs.h"
 
-#include <unistd.h>
+#include "cleanup_list.h"
 
-#include <atomic>
-#include <cstring>
 #include <mutex>
 #include <system_error>
 #include <vector>
@@ -16,21 +13,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr int kMaxCreated = 256;
-constexpr int kMaxPath = 4096;
-char g_created[kMaxCreated][kMaxPath];
-std::atomic<int> g_count{0};
 std::mutex g_mutex;
 
-void note_created(const std::string& path) {
-  const int n = g_count.load();
-  if (n >= kMaxCreated || path.size() >= kMaxPath) return;
-  std::memcpy(g_created[n], path.c_str(), path.size() + 1);
-  g_count.store(n + 1);  // published after the copy: a handler sees whole entries only
-}
-
 Error in_the_way(const fs::path& p) {
-  return make_error(p.string() + ": cannot create the output folder: a file of that name is in the way");
+  return make_error(p.string() + ": cannot create the output folder: a file of that name is in the way",
+                    ErrorKind::cannot_write);
 }
 
 }  // namespace
@@ -52,15 +39,13 @@ Status create_output_directories(const fs::path& dir) {
     if (p == p.parent_path()) break;
   }
   for (auto it = missing.rbegin(); it != missing.rend(); ++it) {
-    if (fs::create_directory(*it, ec)) note_created(it->string());
-    if (ec) return make_error(it->string() + ": cannot create the output folder: " + ec.message());
+    if (fs::create_directory(*it, ec)) cleanup::add(it->string(), cleanup::Kind::folder);
+    if (ec) return make_error(it->string() + ": cannot create the output folder: " + ec.message(), ErrorKind::cannot_write);
   }
   if (!fs::is_directory(d, ec)) return in_the_way(d);
   return Ok{};
 }
 
-void remove_created_directories() noexcept {
-  for (int i = g_count.load() - 1; i >= 0; --i) ::rmdir(g_created[i]);
-}
+void remove_created_directories() noexcept { cleanup::remove_all(cleanup::Kind::folder); }
 
 }  // namespace rotinterp

@@ -104,7 +104,7 @@ TEST_F(ExitCodes, ReduceFailuresNameTheFileOrOption) {
       {"reduce @/missing.bvh -o @/k.json -q", 1, {"@/missing.bvh: no such file"}, "@/k.json"},
       {"reduce @/bad.bvh -o @/k.json -q", 1, {"@/bad.bvh: "}, "@/k.json"},
       {"reduce @/huge.bvh -o @/k.json -q", 1, {"@/huge.bvh: 'Frames: 4000000000'"}, "@/k.json"},
-      {"reduce @/good.bvh -o @/afile/k.json -q", 1, {"@/afile: cannot create the output folder"}},
+      {"reduce @/good.bvh -o @/afile/k.json -q", 1, {"rotinterp: @/afile: cannot create the output folder"}},
       {"reduce @/good.bvh -o @/k.json --tolerance 0deg -q", 2, {"--tolerance: angle '0deg' must be greater than 0"}, "@/k.json"},
       {"reduce @/good.bvh -o @/k.json --tolerance nanmm -q", 2, {"--tolerance: length 'nanmm' is not a number"}, "@/k.json"},
       {"reduce @/good.bvh -o @/k.json --tolerance 1deg --tolerance-for nosuch=1deg -q", 2,
@@ -157,8 +157,8 @@ TEST_F(ExitCodes, ResampleFailuresLeaveNoOutput) {
       {io + "--range 1.5f:3f", 2, {"--range '1.5f:3f': frames are whole numbers"}, "@/out.bvh"},
       {io + "--method-for Tail=slerp", 1, {"@/good.bvh: ", "'Tail'"}, "@/out.bvh"},
       {"resample @/good.bvh -o @/out.txt --fps 60", 2, {"@/out.txt", "unknown format"}, "@/out.txt"},
-      {"resample @/good.bvh -o @/afile/out.bvh --fps 60", 1, {"@/afile: cannot create the output folder"}},
-      {"resample @/good.bvh -o @/afile/out.gltf --fps 60", 1, {"@/afile: cannot create the output folder"}},
+      {"resample @/good.bvh -o @/afile/out.bvh --fps 60", 1, {"rotinterp: @/afile: cannot create the output folder"}},
+      {"resample @/good.bvh -o @/afile/out.gltf --fps 60", 1, {"rotinterp: @/afile: cannot create the output folder"}},
       {"resample @/good.bvh -o @/taken.bvh --fps 60", 1, {"@/taken.bvh: cannot write"}},
       {"synth @/taken.bvh", 1, {"@/taken.bvh: cannot write"}},
       {"resample @/good.bvh --fps 60", 2, {"--output is required"}},
@@ -178,7 +178,7 @@ TEST_F(ExitCodes, SynthFailuresLeaveNoOutput) {
       {"synth @/s.bvh --seconds 100000 --fps 1000", 2, {"too large"}, "@/s.bvh"},
       {"synth @/s.txt", 2, {"@/s.txt", "unknown format"}, "@/s.txt"},
       // The spec is written first (so that only renames follow the clip's commit).
-      {"synth @/afile/s.bvh", 1, {"@/afile: cannot create the output folder"}},
+      {"synth @/afile/s.bvh", 1, {"rotinterp: @/afile: cannot create the output folder"}},
       {"synth", 2, {"--output is required"}},
   });
 }
@@ -194,7 +194,7 @@ TEST_F(ExitCodes, EvalFailuresNameTheInput) {
       {"eval @/good.bvh --shard 3/2" + out, 2, {"--shard '3/2'"}, "@/ev"},
       {"eval @/good.bvh --jobs abc" + out, 2, {"--jobs"}, "@/ev"},
       {"eval @/good.bvh --subframe -1" + out, 2, {"--subframe"}, "@/ev"},
-      {"eval @/good.bvh -o @/afile/ev -q", 1, {"@/afile: cannot create the output folder: a file of that name is in the way"}},
+      {"eval @/good.bvh -o @/afile/ev -q", 1, {"rotinterp: @/afile: cannot create the output folder: a file of that name is in the way"}},
       {"eval --merge @/adir" + out, 1, {"@/adir/summary.json: cannot read"}, "@/ev"},
       {"eval" + out, 2, {"at least one input"}, "@/ev"},
       // A file that fails is reported and the run goes on (nothing else to do here):
@@ -235,7 +235,7 @@ TEST_F(ExitCodes, RenderFailuresLeaveNoOutput) {
       {io + "--size 9000x100", 2, {"8192"}, "@/r"},
       {io + "--trail NoSuchJoint", 1, {"@/good.bvh: ", "NoSuchJoint"}, "@/r"},
       {io + "--backend vulkan", 2, {"vulkan"}, "@/r"},
-      {"render @/good.bvh -o @/afile/r -q", 1, {"@/afile: cannot create the output folder"}},
+      {"render @/good.bvh -o @/afile/r -q", 1, {"rotinterp: @/afile: cannot create the output folder"}},
       {"render @/good.bvh -q", 2, {"render: give -o DIR (frame PNGs), --video FILE, or both"}},
   });
 }

@@ -22,7 +22,8 @@ enum class ErrorKind {
   directory,     // the path is a directory
   cannot_open,   // the system refuses to read it: permissions, not a regular file, I/O
   out_of_memory, // the work needed more memory than the process may have
-  last = out_of_memory,
+  cannot_write,  // an output could not be made (its folder, its file, its lock): the message names it
+  last = cannot_write,
 };
 
 struct Error {

@@ -40,7 +40,8 @@ enum class TempKind {
 };
 
 // A temporary sibling of `target` (same directory, so rename is atomic) that is
-// deleted unless commit() succeeds.
+// deleted unless commit() succeeds. The target's missing folders are created first
+// (io/output_dirs.h: a failed run takes them back), so every writer makes them.
 class AtomicOutput {
  public:
   explicit AtomicOutput(std::filesystem::path target, TempKind kind = TempKind::named);
@@ -76,7 +77,7 @@ class AtomicOutput {
 // meanwhile is handled afterwards). Stops at the first failure.
 Status commit_together(const std::vector<AtomicOutput*>& outputs);
 
-// An exclusive lock on an output directory (flock on the directory itself, so no
+// An exclusive lock on an output directory, created if missing (flock on the directory itself, so no
 // lock file is left; released when this goes out of scope or the process ends,
 // even by SIGKILL), so that two runs writing the same multi-file output cannot mix
 // their files.

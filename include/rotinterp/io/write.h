@@ -38,6 +38,8 @@ struct WriteOptions {
 
 // Writes `clip` to `path`; the format follows the extension (bvh, fbx, glb, gltf,
 // dae). The clip must be sampled on a uniform grid of frame_time for BVH output.
+// Atomic (io/atomic_file.h), missing folders created; an error about the output has
+// ErrorKind::cannot_write and names the file or folder.
 Status write_clip(const Clip& clip, const std::filesystem::path& path, const WriteOptions& options = {});
 
 // Whether write_clip writes the format named by `path`'s extension (any case), so

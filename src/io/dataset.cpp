@@ -154,6 +154,12 @@ Result<std::vector<MirroredOutput>> mirror_outputs(const std::vector<std::string
       return make_error(at->second + " and " + input + " would both be written to " + target.string());
     out.push_back({input, target});
   }
+  // Outputs of an earlier run inside the inputs are not inputs; but when that leaves
+  // nothing (resample DIR -o DIR) the run would do nothing and say it succeeded.
+  if (out.empty() && !inputs.empty())
+    return make_error(out_dir.string() + ": all " + std::to_string(inputs.size()) +
+                      " input file(s) lie inside this output folder, so none would be written; give -o a folder "
+                      "outside the inputs");
   return out;
 }
 

@@ -215,5 +215,25 @@ TEST_F(ResampleFolder, FolderOptionsAreUsageErrorsForOneFileAndBadValuesAreRefus
   EXPECT_NE(r.err.find("output directory"), std::string::npos) << r.err;
 }
 
+// A run that would do nothing fails with its one line: the inputs' own folder as the
+// output (every input lies inside it), or a folder holding no clip.
+TEST_F(ResampleFolder, ARunThatWouldDoNothingFailsSayingWhy) {
+  make_inputs(3);
+  for (const std::string command : {"resample", "reduce"}) {
+    const auto same = run_cli(command + " " + in() + " -o " + in() + " -q");
+    EXPECT_EQ(same.exit_code, 1) << command << ": " << same.err;
+    EXPECT_NE(same.err.find("rotinterp: " + in() + ": all 3 input file(s) lie inside this output folder"),
+              std::string::npos)
+        << same.err;
+    EXPECT_EQ(std::count(same.err.begin(), same.err.end(), '\n'), 1) << same.err;
+  }
+  fs::create_directories(dir_ / "empty");
+  std::ofstream(dir_ / "empty" / "notes.txt") << "no clip\n";
+  const auto none = run_cli("resample " + (dir_ / "empty").string() + " -o " + out().string() + " -q");
+  EXPECT_EQ(none.exit_code, 1) << none.err;
+  EXPECT_NE(none.err.find("no clip files found"), std::string::npos) << none.err;
+  EXPECT_FALSE(fs::exists(out()));
+}
+
 }  // namespace
 }  // namespace rotinterp

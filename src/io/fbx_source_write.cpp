@@ -84,11 +84,12 @@ Result<SourceFbx> encode_source_fbx(const Clip& clip, const SourceClip& source, 
   if (Status s = clip.validate(); !s) return s.failure("cannot write an invalid clip: ");
   std::vector<FbxOutJoint> curves = fbx_frame_curves(clip);
   const FbxTake& take = source.curves.takes.at(source.take);
-  // The file's own time axis: clip time t is FBX time take start + t.
+  // The file's own time axis: clip time t is FBX time fbx_take_origin + t.
+  const std::int64_t origin = fbx_take_origin(take);
   for (FbxOutJoint& o : curves)
     for (auto* set : {&o.rotation, &o.translation})
       for (FbxOutCurve& c : *set)
-        for (FbxOutKey& k : c) k.ticks += take.start;
+        for (FbxOutKey& k : c) k.ticks += origin;
   SourceFbx out;
   if (take.layers.size() == 1) {
     auto joints = fbx_joint_curves(clip, source, keep, label);

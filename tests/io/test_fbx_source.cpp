@@ -10,6 +10,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
+#include <string>
 
 namespace rotinterp {
 namespace {
@@ -101,6 +103,60 @@ TEST(FbxSource, PreRotationIsAppliedOnceBeforeTheEulerCurves) {
     const Quat expected(Eigen::AngleAxisd(degrees / kDegreesPerRadian, Vec3::UnitZ()));
     EXPECT_LT(angle_degrees(track.keys[k], expected), 1e-6) << "key " << k;
   }
+}
+
+// One bone turning about Z, keyed at frames 1, 2, 30, 180 and 359 of 30 fps (the first
+// key at 1/30 s, not 0), in a stack that declares no LocalStart/LocalStop: assimp
+// re-bases such a take to its first key, so clip time 0 is FBX time 1/30 s.
+std::string late_first_key_fbx() {
+  const long long frame = 1539538600;  // ticks
+  std::string times, values;
+  for (int f : {1, 2, 30, 180, 359}) {
+    times += (times.empty() ? "" : ",") + std::to_string(f * frame);
+    values += (values.empty() ? "" : ",") + std::to_string(1080.0 + 360.0 * (f - 1) / 358.0);
+  }
+  return "; FBX 7.4.0 project file\n"
+         "FBXHeaderExtension:  {\n\tFBXHeaderVersion: 1003\n\tFBXVersion: 7400\n}\n"
+         "Objects:  {\n"
+         "\tModel: 1000, \"Model::Bone\", \"LimbNode\" {\n\t\tVersion: 232\n\t}\n"
+         "\tAnimationStack: 2000, \"AnimStack::Take\", \"\" {\n\t}\n"
+         "\tAnimationLayer: 3000, \"AnimLayer::Base\", \"\" {\n\t}\n"
+         "\tAnimationCurveNode: 4000, \"AnimCurveNode::R\", \"\" {\n\t\tProperties70:  {\n"
+         "\t\t\tP: \"d|X\", \"Number\", \"\", \"A\",0\n\t\t\tP: \"d|Y\", \"Number\", \"\", \"A\",0\n"
+         "\t\t\tP: \"d|Z\", \"Number\", \"\", \"A\",0\n\t\t}\n\t}\n"
+         "\tAnimationCurve: 5000, \"AnimCurve::\", \"\" {\n\t\tDefault: 0\n\t\tKeyVer: 4009\n"
+         "\t\tKeyTime: *5 {\n\t\t\ta: " + times + "\n\t\t}\n"
+         "\t\tKeyValueFloat: *5 {\n\t\t\ta: " + values + "\n\t\t}\n\t}\n}\n"
+         "Connections:  {\n\tC: \"OO\",1000,0\n\tC: \"OO\",3000,2000\n\tC: \"OO\",4000,3000\n"
+         "\tC: \"OP\",4000,1000, \"Lcl Rotation\"\n\tC: \"OP\",5000,4000, \"d|Z\"\n}\n";
+}
+
+// `source` and the baked keys share one clock: at every key the replayed rotation is the
+// key assimp baked (it was one frame off: frames 0 and 1 both the first key's 1080°).
+TEST(FbxSource, ATakeWhoseFirstKeyIsNotAtZeroIsReplayedOnTheClipsClock) {
+  test::TempDir dir;
+  const auto path = dir / "late.fbx";
+  test::write_text(path, late_first_key_fbx());
+  auto read = read_source_clip(path, {});
+  ASSERT_TRUE(read.ok()) << read.error();
+  auto source = std::make_shared<const SourceClip>(std::move(*read));
+  EXPECT_EQ(fbx_take_origin(source->curves.takes.at(source->take)), 1539538600);
+  auto motion = source_motion(source, "late.fbx");
+  ASSERT_TRUE(motion.ok()) << motion.error();
+  const Clip& clip = source->clip;
+  const auto bone = static_cast<std::size_t>(clip.skeleton.find("Bone"));
+  const RotationTrack& keys = clip.rotations[bone];
+  // The file's keys at clip times 0, 1/30, 29/30, 179/30 and 358/30 s (assimp adds one
+  // of its own before the last, which is not a key of the curve).
+  std::size_t matched = 0;
+  EXPECT_EQ(keys.times.front(), 0.0);
+  for (std::size_t k = 0; k < keys.keys.size(); ++k) {
+    const double frame = keys.times[k] * 30.0;
+    if (std::abs(frame - std::round(frame)) > 1e-6) continue;
+    ++matched;
+    EXPECT_LT(angle_degrees((*motion)(bone, keys.times[k]), keys.keys[k]), 1e-4) << "key " << k << " at " << keys.times[k];
+  }
+  EXPECT_EQ(matched, 5u);
 }
 
 TEST(FbxSource, ABvhIsRefusedInOneLineNamingTheFile) {

@@ -17,6 +17,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <memory>
@@ -56,7 +57,11 @@ Quat fbx_local_rotation(const FbxTake& take, const FbxJointCurves& joint, double
 // place). Joints named in `keep` get none. Errors as replay_fbx_rotations's.
 Result<std::vector<FbxJointCurves>> fbx_joint_curves(const Clip& clip, const SourceClip& source,
                                                      const std::vector<std::string>& keep, const std::string& label);
-// The FBX time (ticks) of clip time t: take start + t.
+// The FBX time (ticks) of clip time 0, as assimp re-bases a take's keys: the stack's
+// LocalStart where it declares a span (LocalStart or LocalStop not 0), else the take's
+// first key (a file whose keys start at 1/30 s has its first key at clip time 0).
+std::int64_t fbx_take_origin(const FbxTake& take);
+// The FBX time (ticks) of clip time t: fbx_take_origin + t.
 double fbx_source_ticks(const SourceClip& source, double t);
 
 // The file's own motion: joint j's local rotation at clip time t, evaluated from its
@@ -72,7 +77,7 @@ Result<Clip> read_clip_with_source_motion(const std::filesystem::path& path, con
 
 // Replaces every rotation key of each joint of `clip` whose node has Lcl Rotation
 // curves in `source`'s take with the curves' value at the key's time (clip time t
-// is FBX time take start + t, assimp's re-basing) and makes the tracks
+// is FBX time fbx_source_ticks(t), assimp's re-basing) and makes the tracks
 // sign-continuous; joints named in `keep` and joints without rotation curves are
 // left as they are. Returns how many joints were replayed. Errors: no joint with
 // rotation curves.

@@ -169,7 +169,7 @@ class PyInterpolator {
   PyInterpolator(const py::handle& times_in, const py::handle& quats_in, const std::string& method, bool scalar_first,
                  const std::string& extrapolate)
       : method_(method_of(method).name), scalar_first_(scalar_first), extrapolate_(extrapolate_of(extrapolate)) {
-    require_continuable(extrapolate_, method_of(method));
+    require_continuable(extrapolate_, *find_method(method_));
     const Doubles times = times_array(times_in, "times");
     bool in_scalar_first = scalar_first;  // a scipy Rotation comes scalar-last
     const Doubles quats = unit_quats(quats_in, in_scalar_first, "quats");

@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <unordered_set>
@@ -54,23 +55,6 @@ class Tokenizer {
   std::size_t pos_ = 0;
   int line_ = 1;
 };
-
-bool parse_channel(std::string_view token, Channel& out) {
-  static constexpr std::pair<const char*, Channel> kNames[] = {
-      {"Xposition", Channel::Xposition}, {"Yposition", Channel::Yposition}, {"Zposition", Channel::Zposition},
-      {"Xrotation", Channel::Xrotation}, {"Yrotation", Channel::Yrotation}, {"Zrotation", Channel::Zrotation}};
-  for (const auto& [name, channel] : kNames) {
-    if (token.size() != std::string_view(name).size()) continue;
-    bool same = true;
-    for (std::size_t i = 0; i < token.size() && same; ++i)
-      same = std::tolower(static_cast<unsigned char>(token[i])) == std::tolower(static_cast<unsigned char>(name[i]));
-    if (same) {
-      out = channel;
-      return true;
-    }
-  }
-  return false;
-}
 
 class HeaderParser {
  public:
@@ -235,10 +219,9 @@ class HeaderParser {
     for (int i = 0; i < static_cast<int>(n); ++i) {
       const int l = tok_.next_line();
       const std::string_view c = tok_.next();
-      Channel ch;
-      if (!parse_channel(c, ch))
-        return fail("line " + std::to_string(l) + ": joint '" + jname + "': unknown channel " + quoted(c));
-      channels.push_back(ch);
+      const std::optional<Channel> ch = channel_from_name(c);
+      if (!ch) return fail("line " + std::to_string(l) + ": joint '" + jname + "': unknown channel " + quoted(c));
+      channels.push_back(*ch);
     }
     file.columns += channels.size();
     return Ok{};

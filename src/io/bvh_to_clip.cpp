@@ -17,8 +17,13 @@ namespace rotinterp {
 
 namespace {
 
-bool is_rotation(Channel c) { return c == Channel::Xrotation || c == Channel::Yrotation || c == Channel::Zrotation; }
-int axis_of(Channel c) { return static_cast<int>(c) % 3; }
+// The value columns of a joint's rotation channels, in file order.
+std::vector<std::size_t> rotation_columns(const BvhJoint& j) {
+  std::vector<std::size_t> out;
+  for (std::size_t c = 0; c < j.channels.size(); ++c)
+    if (is_rotation(j.channels[c])) out.push_back(j.first_column + c);
+  return out;
+}
 
 }  // namespace
 
@@ -60,9 +65,7 @@ BvhLayout bvh_layout(const BvhFile& file) {
   angles->frames = file.frames;
   for (const BvhJoint& j : file.joints) {
     layout.channels.push_back(j.channels);
-    std::vector<std::size_t> columns;
-    for (std::size_t c = 0; c < j.channels.size(); ++c)
-      if (is_rotation(j.channels[c])) columns.push_back(j.first_column + c);
+    const std::vector<std::size_t> columns = rotation_columns(j);
     std::vector<double>& degrees = angles->degrees.emplace_back();
     degrees.reserve(file.frames * columns.size());
     for (std::size_t f = 0; f < file.frames; ++f)
@@ -125,11 +128,8 @@ Clip bvh_to_clip(const BvhFile& file, const std::string& name, unsigned threads)
   clip.translations.resize(n);
   for (std::size_t j = 0; j < n; ++j) {
     const BvhJoint& joint = file.joints[j];
-    for (std::size_t c = 0; c < joint.channels.size(); ++c)
-      if (is_rotation(joint.channels[c])) {
-        layouts[j].column.push_back(joint.first_column + c);
-        layouts[j].axis.push_back(axis_of(joint.channels[c]));
-      }
+    layouts[j].column = rotation_columns(joint);
+    for (std::size_t column : layouts[j].column) layouts[j].axis.push_back(axis_of(joint.channels[column - joint.first_column]));
     clip.rotations[j].times = times;
     clip.rotations[j].keys.resize(frames);  // not touched yet: a Quat's default constructor leaves it
     advise_huge_pages(clip.rotations[j].keys.data(), frames * sizeof(Quat));

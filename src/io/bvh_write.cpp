@@ -41,8 +41,6 @@ constexpr double kSameRotation = 1e-9;
 // quadratic in its depth (20 000 joints: 400 MB of tabs).
 constexpr std::size_t kMaxIndent = 64;
 
-bool is_rotation(Channel c) { return c == Channel::Xrotation || c == Channel::Yrotation || c == Channel::Zrotation; }
-int axis_of(Channel c) { return static_cast<int>(c) % 3; }
 Channel rotation_channel(int axis) { return static_cast<Channel>(3 + axis); }
 Channel position_channel(int axis) { return static_cast<Channel>(axis); }
 

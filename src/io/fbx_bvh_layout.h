@@ -26,16 +26,12 @@ inline std::string bvh_channels_text(const std::vector<Channel>& channels) {
 // The channels of bvh_channels_text's text; nullopt for any other word (a property of
 // that name written by someone else is ignored, not trusted).
 inline std::optional<std::vector<Channel>> parse_bvh_channels_text(std::string_view text) {
-  constexpr Channel kAll[] = {Channel::Xposition, Channel::Yposition, Channel::Zposition,
-                              Channel::Xrotation, Channel::Yrotation, Channel::Zrotation};
   std::vector<Channel> out;
   while (!text.empty()) {
     const std::size_t space = text.find(' ');
-    const std::string_view word = text.substr(0, space);
-    bool known = false;
-    for (Channel c : kAll)
-      if (word == channel_name(c)) out.push_back(c), known = true;
-    if (!known || out.size() > 6) return std::nullopt;
+    const std::optional<Channel> c = channel_from_name(text.substr(0, space));
+    if (!c || out.size() == 6) return std::nullopt;
+    out.push_back(*c);
     text = space == std::string_view::npos ? std::string_view() : text.substr(space + 1);
   }
   return out;

@@ -130,9 +130,7 @@ std::shared_ptr<const BvhLayout> kept_bvh_layout(const std::vector<NodeRec>& rec
     const auto parsed = parse_bvh_channels_text(text.C_Str());
     if (!parsed) return nullptr;
     channels = *parsed;
-    const bool positions = std::any_of(channels.begin(), channels.end(), [](Channel c) {
-      return c == Channel::Xposition || c == Channel::Yposition || c == Channel::Zposition;
-    });
+    const bool positions = !std::all_of(channels.begin(), channels.end(), is_rotation);
     if (clip.translations[j] && !positions) return nullptr;
     any = true;
   }

@@ -170,7 +170,7 @@ TEST_P(RealBvh, WrittenEulerCurvesHaveNoWrapsOrFlips) {
   ASSERT_TRUE(f) << f.error();
   for (std::size_t j = 0; j < f->joints.size(); ++j)
     for (std::size_t c = 0; c < f->joints[j].channels.size(); ++c) {
-      if (static_cast<int>(f->joints[j].channels[c]) < 3) continue;  // position channel
+      if (!is_rotation(f->joints[j].channels[c])) continue;
       for (std::size_t fr = 1; fr < f->frames; ++fr) {
         const double step = std::abs(f->value(fr, j, c) - f->value(fr - 1, j, c));
         if (step < 90.0) continue;

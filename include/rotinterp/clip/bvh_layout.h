@@ -8,10 +8,13 @@
 
 #include "rotinterp/clip/clip.h"
 
+#include <cctype>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace rotinterp {
@@ -37,6 +40,24 @@ inline const char* channel_name(Channel c) {
 // f·frame_time seconds. The same rotation has many Euler triples (θ and θ + 360°,
 // the two gimbal branches): the writer gives these back where it writes the file's
 // own rotation at one of its frame times, so a round trip keeps its numbers.
+// The channel a CHANNELS word names, in any case ("Xrotation", "XROTATION"), as BVH
+// readers take it; nullopt for another word.
+inline std::optional<Channel> channel_from_name(std::string_view word) {
+  for (int i = 0; i < 6; ++i) {
+    const auto c = static_cast<Channel>(i);
+    const std::string_view name = channel_name(c);
+    bool same = word.size() == name.size();
+    for (std::size_t k = 0; k < word.size() && same; ++k)
+      same = std::tolower(static_cast<unsigned char>(word[k])) == std::tolower(static_cast<unsigned char>(name[k]));
+    if (same) return c;
+  }
+  return std::nullopt;
+}
+
+// Rotation or position, and the axis (0 X, 1 Y, 2 Z) of a channel.
+inline bool is_rotation(Channel c) { return c == Channel::Xrotation || c == Channel::Yrotation || c == Channel::Zrotation; }
+inline int axis_of(Channel c) { return static_cast<int>(c) % 3; }
+
 struct BvhSourceAngles {
   double frame_time = 0.0;
   std::size_t frames = 0;

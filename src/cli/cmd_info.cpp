@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -225,6 +226,19 @@ std::string bvh_take_text(const Clip& clip) {
                      frame_time.empty() ? fmt::format("{:.9g}", clip.frame_time) : frame_time, channels);
 }
 
+// A take's span in file time and its length: "0.833333 s to 1.33333 s (0.5 s)"; the
+// length alone where the reader cannot see the file's time.
+std::string take_span_text(const AnimationSummary& take) {
+  if (!std::isfinite(take.start)) return fmt::format("{:.6g} s", take.duration);
+  return fmt::format("{:.6g} s to {:.6g} s ({:.6g} s)", take.start, take.start + take.duration, take.duration);
+}
+
+// "16 frames at 30 Hz (stated by the file)", or "12 frames (its keys; no rate)".
+std::string take_frames_text(const AnimationSummary& take) {
+  if (!(take.frame_rate_hz > 0.0)) return fmt::format("{} frames (its keys; no rate)", take_frames(take));
+  return fmt::format("{} frames at {:.9g} Hz ({})", take_frames(take), take.frame_rate_hz, rate_origin_text(take.rate_stated));
+}
+
 std::string layout_text(const std::vector<Channel>& channels) {
   std::string s;
   for (Channel c : channels) s += (s.empty() ? "" : " ") + std::string(channel_name(c));
@@ -240,10 +254,10 @@ int run_info(const InfoArgs& args) {
   if (!read_options) return fail_usage(read_options.error());
   ReadOptions options = *read_options;
   options.on_warning = warn;
-  options.read_curves = args.curves;
   if (args.sample_hz > 0.0 && !args.curves) return fail_usage("--sample needs --curves");
   const std::string& path = args.paths.front();
-  Result<ClipFileInfo> info = inspect_clip(path, options);
+  options.read_curves = args.curves;
+  Result<ClipFileInfo> info = inspect_clip_for_info(path, options);
   if (!info && info.error_kind() == ErrorKind::no_animation) return describe_static(path, info.error(), args.json);
   if (!info) return fail(info.error());
   if (args.curves) return print_info_curves(path, *info, args.sample_hz, args.json);
@@ -271,14 +285,16 @@ int run_info(const InfoArgs& args) {
     if (info->format == "bvh")
       fmt::print("  {}{} '{}'  {:.6g} s  {}\n", a == info->selected ? "*" : " ", a, s.name, s.duration, bvh_take_text(clip));
     else
-      fmt::print("  {}{} '{}'  {:.6g} s  {:.9g} ticks/s{}  {} channels\n", a == info->selected ? "*" : " ", a, s.name,
-                 s.duration, s.ticks_per_second, s.default_rate ? " (default)" : "", s.channels);
+      fmt::print("  {}{} '{}'  {}  {}  {} keys  {} channels{}\n", a == info->selected ? "*" : " ", a, s.name,
+                 take_span_text(s), take_frames_text(s), s.keys, s.channels,
+                 s.default_rate ? fmt::format("  (0 ticks/s in the file: {:.9g} assumed)", s.ticks_per_second) : "");
   }
   fmt::print("frames:      {}\n", clip.frame_count());
   if (rate)
-    fmt::print("frame rate:  {} Hz{} (frame time {} s)\n", rate->to_string(),
+    fmt::print("frame rate:  {} Hz{} (frame time {} s), {}\n", rate->to_string(),
                rate->den == 1 ? std::string() : fmt::format(" = {:.9g} Hz", rate->hz()),
-               frame_time_text(clip).empty() ? fmt::format("{:.9g}", clip.frame_time) : frame_time_text(clip));
+               frame_time_text(clip).empty() ? fmt::format("{:.9g}", clip.frame_time) : frame_time_text(clip),
+               rate_origin_text(info->animations.at(info->selected).rate_stated));
   else
     fmt::print("frame rate:  none (keys not on a uniform grid){}\n",
                clip.file_rate_hz > 0 ? fmt::format("; the file's own: {:.9g} Hz (resample's default)", clip.file_rate_hz) : "");

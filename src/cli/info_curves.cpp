@@ -22,8 +22,8 @@ int print_info_curves(const std::string& path, const ClipFileInfo& info, double 
   }
   const double ticks = static_cast<double>(kFbxTicksPerSecond);
   fmt::print("file:   {}\n", path);
-  fmt::print("take:   '{}' ({:.6g} s to {:.6g} s), {} curve(s)\n", take->name, static_cast<double>(take->start) / ticks,
-             static_cast<double>(take_end_ticks(*take)) / ticks, take->curves.size());
+  fmt::print("take:   '{}' ({:.6g} s to {:.6g} s), {} curve(s)\n", take->name, static_cast<double>(fbx_take_span(*take).start) / ticks,
+             static_cast<double>(fbx_take_span(*take).stop) / ticks, take->curves.size());
   for (std::size_t l = 0; l < take->layers.size(); ++l) {
     const FbxLayer& layer = take->layers[l];
     fmt::print("layer {}: '{}' {} weight {:g}%{}{}\n", l, layer.name, fbx_blend_mode_name(layer.blend), layer.weight,
@@ -41,7 +41,7 @@ int print_info_curves(const std::string& path, const ClipFileInfo& info, double 
                  fbx_tangent_name(k.tangent), t.left_slope, t.right_slope, t.left_weight, t.right_weight);
     }
     if (sample_hz > 0.0) {
-      const std::vector<double> samples = sample_fbx_curve(c, sample_hz, take_end_ticks(*take));
+      const std::vector<double> samples = sample_fbx_curve(c, sample_hz, fbx_take_span(*take).stop);
       fmt::print("  samples at {:g} Hz:", sample_hz);
       for (double v : samples) fmt::print(" {:.7g}", v);
       fmt::print("\n");

@@ -295,6 +295,10 @@ std::string encode(const ReadOutcome& outcome) {
     w.f64(a.ticks_per_second);
     w.u8(a.default_rate);
     w.u64(a.channels);
+    w.f64(a.start);
+    w.u64(a.keys);
+    w.f64(a.frame_rate_hz);
+    w.u8(a.rate_stated);
   }
   w.u64(info.selected);
   put(w, info.clip);
@@ -318,13 +322,17 @@ Result<ReadOutcome> decode(std::string_view bytes) {
   }
   ClipFileInfo& info = out.info;
   info.format = r.str();
-  info.animations.resize(r.count(kString + 2 * kDouble + 1 + 8));
+  info.animations.resize(r.count(kString + 4 * kDouble + 2 + 2 * 8));
   for (AnimationSummary& a : info.animations) {
     a.name = r.str();
     a.duration = r.f64();
     a.ticks_per_second = r.f64();
     a.default_rate = r.flag();
     a.channels = r.size();
+    a.start = r.f64();
+    a.keys = r.size();
+    a.frame_rate_hz = r.f64();
+    a.rate_stated = r.flag();
   }
   info.selected = r.size();
   get(r, info.clip);

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 #include <iterator>
+#include <optional>
 #include <tuple>
 
 namespace rotinterp {
@@ -237,6 +238,16 @@ Status read_layer_curves(const Objects& o, const FbxNode& layer, std::size_t ind
 }
 
 }  // namespace
+
+FbxTickSpan fbx_take_span(const FbxTake& take) {
+  if (take.stop > take.start) return {take.start, take.stop};
+  std::optional<FbxTickSpan> keys;
+  for (const FbxCurve& c : take.curves)
+    if (!c.keys.empty())
+      keys = FbxTickSpan{std::min(keys ? keys->start : c.keys.front().ticks, c.keys.front().ticks),
+                         std::max(keys ? keys->stop : c.keys.back().ticks, c.keys.back().ticks)};
+  return keys.value_or(FbxTickSpan{take.start, take.start});
+}
 
 Result<FbxAnimation> read_fbx_animation(const FbxDocument& doc, const std::string& label) {
   if (doc.version > 0 && doc.version < 7000) return fbx::read_fbx_takes(doc, label);

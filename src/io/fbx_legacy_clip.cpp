@@ -2,6 +2,8 @@
 // Models, keys from the take's curves evaluated at its frames.
 #include "fbx_legacy.h"
 
+#include "key_times.h"
+
 #include "rotinterp/io/fbx_nodes.h"
 #include "rotinterp/io/fbx_transform.h"
 
@@ -13,6 +15,7 @@
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <utility>
 
 namespace rotinterp {
 
@@ -55,11 +58,13 @@ double global_setting(const FbxDocument& doc, const char* name, double fallback)
   const FbxNode* settings = doc.node("GlobalSettings");
   if (const FbxNode* objects = doc.node("Objects"); !settings && objects) settings = objects->child("GlobalSettings");
   if (!settings) return fallback;
-  if (const FbxNode* props = settings->child("Properties60"))
-    for (const FbxNode& p : props->children)
-      if (p.properties.size() > 3 && p.properties[0].is_string() && p.properties[0].text == name &&
-          p.properties[3].is_number())
-        return p.properties[3].as_double();
+  // 6.1: Property: name, type, flags, value; 7.x: P: name, type, label, flags, value.
+  for (const auto& [block, at] : {std::pair{"Properties60", 3u}, std::pair{"Properties70", 4u}})
+    if (const FbxNode* props = settings->child(block))
+      for (const FbxNode& p : props->children)
+        if (p.properties.size() > at && p.properties[0].is_string() && p.properties[0].text == name &&
+            p.properties[at].is_number())
+          return p.properties[at].as_double();
   return fallback;
 }
 
@@ -134,21 +139,34 @@ std::string short_number(double v) {
 // `rate`, or without a rate the union of its key times.
 Result<std::vector<double>> sample_times(const FbxTake& take, double rate, const std::string& label) {
   std::vector<double> out;
-  const double span = static_cast<double>(take.stop - take.start) / static_cast<double>(kFbxTicksPerSecond);
+  const FbxTickSpan ticks_span = fbx_take_span(take);
+  const double span = static_cast<double>(ticks_span.stop - ticks_span.start) / static_cast<double>(kFbxTicksPerSecond);
   if (rate > 0.0) {
     if (!(span >= 0.0) || span * rate > kMaxFrames)
       return make_error(label + ": take '" + take.name + "' spans " + short_number(span) +
                         " s, which is not a frame range rotinterp reads");
     const auto frames = static_cast<std::size_t>(std::floor(span * rate + 1e-6));
     for (std::size_t k = 0; k <= frames; ++k) out.push_back(static_cast<double>(k) / rate);
+    if (span - out.back() > 1e-6) out.push_back(span);  // a stop off the grid ends the take there
     return out;
   }
   std::set<std::int64_t> ticks;
   for (const FbxCurve& c : take.curves)
     for (const FbxKey& k : c.keys) ticks.insert(k.ticks);
+  ticks.insert(ticks_span.start);  // the span's ends are frames, keyed or not
+  ticks.insert(ticks_span.stop);
   for (std::int64_t t : ticks)
-    out.push_back(static_cast<double>(t - take.start) / static_cast<double>(kFbxTicksPerSecond));
+    if (t >= ticks_span.start && t <= ticks_span.stop)
+      out.push_back(static_cast<double>(t - ticks_span.start) / static_cast<double>(kFbxTicksPerSecond));
   if (out.empty()) out.push_back(0.0);
+  return out;
+}
+
+// Every key time of the take, seconds.
+std::vector<double> key_seconds(const FbxTake& take) {
+  std::vector<double> out;
+  for (const FbxCurve& c : take.curves)
+    for (const FbxKey& k : c.keys) out.push_back(static_cast<double>(k.ticks) / static_cast<double>(kFbxTicksPerSecond));
   return out;
 }
 
@@ -203,9 +221,22 @@ Status read_legacy_fbx(const fs::path& path, const ReadOptions& options, ClipFil
     AnimationSummary s;
     s.name = t.name;
     s.ticks_per_second = rate > 0.0 ? rate : static_cast<double>(kFbxTicksPerSecond);
-    s.duration = static_cast<double>(t.stop - t.start) / static_cast<double>(kFbxTicksPerSecond);
+    const FbxTickSpan span = fbx_take_span(t);
+    s.duration = static_cast<double>(span.stop - span.start) / static_cast<double>(kFbxTicksPerSecond);
     s.channels = 0;
     for (const auto& [node, layers] : fbx_node_layers(t)) s.channels += layers.keyed();
+    s.start = static_cast<double>(span.start) / static_cast<double>(kFbxTicksPerSecond);
+    std::set<std::int64_t> keys;
+    for (const FbxCurve& c : t.curves)
+      for (const FbxKey& k : c.keys)
+        if (k.ticks >= span.start && k.ticks <= span.stop) keys.insert(k.ticks);
+    s.keys = keys.size();
+    s.rate_stated = rate > 0.0;
+    if (rate > 0.0) {
+      s.frame_rate_hz = rate;
+    } else if (const double step = uniform_frame_time(key_seconds(t)); step > 0.0) {
+      s.frame_rate_hz = 1.0 / step;
+    }
     info.animations.push_back(s);
   }
   Result<std::size_t> selected = select_take(*anim, options.animation, label);
@@ -247,7 +278,7 @@ Status read_legacy_fbx(const fs::path& path, const ReadOptions& options, ClipFil
     TranslationTrack translation;
     bool moves = false, scaled = false;
     for (double t : *times) {
-      const double ticks = static_cast<double>(take.start) + t * static_cast<double>(kFbxTicksPerSecond);
+      const double ticks = static_cast<double>(fbx_take_span(take).start) + t * static_cast<double>(kFbxTicksPerSecond);
       const FbxLclValues values = fbx_lcl_values(take, model, layers_of[j], ticks);
       rotation.times.push_back(t);
       rotation.keys.push_back(fbx_node_rotation(model, values.rotation));
@@ -261,7 +292,10 @@ Status read_legacy_fbx(const fs::path& path, const ReadOptions& options, ClipFil
     if (moves) clip.translations[j] = std::move(translation);
     if (scaled) warn(label + ": joint '" + clip.skeleton.joints[j].name + "' is scaled; the scale is ignored");
   }
-  if (rate > 0.0) clip.frame_time = 1.0 / rate, clip.file_rate_hz = rate;
+  if (rate > 0.0)
+    clip.frame_time = 1.0 / rate, clip.file_rate_hz = rate;
+  else
+    clip.frame_time = uniform_frame_time(*times);  // as the assimp path infers it
   clip.source_meshes = meshes;
   if (const double f = global_setting(*doc, "UnitScaleFactor", 0.0); f > 0.0 && std::isfinite(f))
     clip.unit = {f * 0.01, UnitOrigin::declared, "declared by the file: FBX UnitScaleFactor " + short_number(f)};

@@ -65,16 +65,8 @@ Result<std::vector<FbxJointCurves>> fbx_joint_curves(const Clip& clip, const Sou
 }
 
 double fbx_source_ticks(const SourceClip& source, double t) {
-  return static_cast<double>(fbx_take_origin(source.curves.takes.at(source.take))) +
+  return static_cast<double>(fbx_take_span(source.curves.takes.at(source.take)).start) +
          t * static_cast<double>(kFbxTicksPerSecond);
-}
-
-std::int64_t fbx_take_origin(const FbxTake& take) {
-  if (take.start != 0 || take.stop != 0) return take.start;
-  std::optional<std::int64_t> first;
-  for (const FbxCurve& c : take.curves)
-    if (!c.keys.empty()) first = std::min(first.value_or(c.keys.front().ticks), c.keys.front().ticks);
-  return first.value_or(0);
 }
 
 Result<std::size_t> replay_fbx_rotations(Clip& clip, const SourceClip& source, const std::vector<std::string>& keep,

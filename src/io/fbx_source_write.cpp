@@ -84,8 +84,8 @@ Result<SourceFbx> encode_source_fbx(const Clip& clip, const SourceClip& source, 
   if (Status s = clip.validate(); !s) return s.failure("cannot write an invalid clip: ");
   std::vector<FbxOutJoint> curves = fbx_frame_curves(clip);
   const FbxTake& take = source.curves.takes.at(source.take);
-  // The file's own time axis: clip time t is FBX time fbx_take_origin + t.
-  const std::int64_t origin = fbx_take_origin(take);
+  // The file's own time axis: clip time t is FBX time span start + t.
+  const std::int64_t origin = fbx_take_span(take).start;
   for (FbxOutJoint& o : curves)
     for (auto* set : {&o.rotation, &o.translation})
       for (FbxOutCurve& c : *set)

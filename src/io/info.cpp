@@ -2,6 +2,7 @@
 #include "rotinterp/io/info.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -34,6 +35,24 @@ bool uniform(const std::vector<double>& t) {
 }
 
 }  // namespace
+
+std::size_t take_frames(const AnimationSummary& take) {
+  if (!(take.frame_rate_hz > 0.0) || !(take.duration >= 0.0)) return take.keys;
+  return static_cast<std::size_t>(std::llround(take.duration * take.frame_rate_hz)) + 1;
+}
+
+Result<ClipFileInfo> inspect_clip_for_info(const std::filesystem::path& path, ReadOptions options) {
+  std::string ext = path.extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (options.read_curves || ext != ".fbx") return inspect_clip(path, options);
+  options.read_curves = true;
+  Result<ClipFileInfo> with_curves = inspect_clip(path, options);
+  if (with_curves || with_curves.error_kind() == ErrorKind::no_animation) return with_curves;
+  options.read_curves = false;
+  return inspect_clip(path, options);
+}
+
+const char* rate_origin_text(bool stated) { return stated ? "stated by the file" : "inferred from its key times"; }
 
 std::string static_scene_contents(const std::string& no_animation_error) {
   const std::size_t at = no_animation_error.rfind(std::string("(") + kHoldsPrefix);

@@ -43,14 +43,6 @@ const FbxTake* selected_take(const ClipFileInfo& info) {
   return &takes[info.selected < takes.size() ? info.selected : 0];
 }
 
-std::int64_t take_end_ticks(const FbxTake& take) {
-  if (take.stop > 0) return take.stop;
-  std::int64_t end = 0;
-  for (const FbxCurve& c : take.curves)
-    if (!c.keys.empty()) end = std::max(end, c.keys.back().ticks);
-  return end;
-}
-
 std::string curves_info_json(const ClipFileInfo& info, double sample_hz) {
   nlohmann::json curves = nlohmann::json::array();
   if (const FbxTake* take = selected_take(info))
@@ -65,7 +57,7 @@ std::string curves_info_json(const ClipFileInfo& info, double sample_hz) {
                               {"pre_extrapolation", extrapolation_json(c.pre)},
                               {"post_extrapolation", extrapolation_json(c.post)},
                               {"keys", keys}};
-      if (sample_hz > 0.0) entry["samples"] = sample_fbx_curve(c, sample_hz, take_end_ticks(*take));
+      if (sample_hz > 0.0) entry["samples"] = sample_fbx_curve(c, sample_hz, fbx_take_span(*take).stop);
       curves.push_back(std::move(entry));
     }
   return nlohmann::json{{"curves", curves}}.dump(2);

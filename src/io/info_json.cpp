@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -43,7 +44,11 @@ std::string clip_info_json(const std::string& path, const ClipFileInfo& info) {
     const AnimationSummary& s = info.animations[a];
     out["animations"].push_back({{"index", a}, {"name", s.name}, {"duration_s", s.duration},
                                  {"ticks_per_second", s.ticks_per_second}, {"default_rate", s.default_rate},
-                                 {"channels", s.channels}, {"selected", a == info.selected}});
+                                 {"channels", s.channels}, {"selected", a == info.selected},
+                                 {"start_s", std::isfinite(s.start) ? nlohmann::json(s.start) : nlohmann::json(nullptr)},
+                                 {"frames", take_frames(s)}, {"keys", s.keys},
+                                 {"frame_rate_hz", s.frame_rate_hz > 0.0 ? nlohmann::json(s.frame_rate_hz) : nlohmann::json(nullptr)},
+                                 {"rate_stated", s.rate_stated}});
   }
   out["frames"] = clip.frame_count();
   out["frame_time_s"] = clip.frame_time;

@@ -8,6 +8,8 @@
 #include "import.h"
 #include "read_parts.h"
 #include "rotinterp/io/fbx_curves.h"
+#include "rotinterp/io/fbx_source.h"
+#include "scene_parts.h"
 #include "scene_to_clip.h"
 
 #include <assimp/Importer.hpp>
@@ -83,6 +85,14 @@ std::string scene_contents(const aiScene* scene) {
   return s;
 }
 
+// Each FBX take's start in file time (fbx_take_span), by name, from our own reader.
+void add_take_starts(const FbxAnimation& curves, std::vector<AnimationSummary>& animations) {
+  for (AnimationSummary& s : animations)
+    for (const FbxTake& take : curves.takes)
+      if (take.name == s.name)
+        s.start = static_cast<double>(fbx_take_span(take).start) / static_cast<double>(kFbxTicksPerSecond);
+}
+
 // Every format but BVH: the import, the animations, and the clip built from the
 // scene. `info` comes with its format set.
 Status read_with_assimp(const fs::path& path, const ReadOptions& options, ClipFileInfo& info,
@@ -100,6 +110,9 @@ Status read_with_assimp(const fs::path& path, const ReadOptions& options, ClipFi
   if (scene->mNumAnimations == 0)
     return make_error(label + ": the file has no animation (" + kHoldsPrefix + scene_contents(scene) + ")",
                       ErrorKind::no_animation);
+  // FBX: assimp re-bases each take to its span's start (LocalStart, else its first
+  // key), where its file time is out of sight (read_here adds it from our own reader).
+  const bool fbx = info.format == "fbx";
   for (unsigned a = 0; a < scene->mNumAnimations; ++a) {
     const aiAnimation* an = scene->mAnimations[a];
     AnimationSummary s;
@@ -108,6 +121,16 @@ Status read_with_assimp(const fs::path& path, const ReadOptions& options, ClipFi
     s.ticks_per_second = s.default_rate ? kDefaultTicksPerSecond : an->mTicksPerSecond;
     s.duration = an->mDuration / s.ticks_per_second;
     s.channels = an->mNumChannels;
+    Result<scene_parts::KeyTimes> keys = scene_parts::key_times(
+        an, fbx ? std::optional(scene_parts::TickSpan{0.0, an->mDuration}) : std::nullopt, label);
+    if (!keys) return make_error(keys.error(), ErrorKind::unreadable);
+    s.keys = keys->distinct;
+    s.start = fbx ? NAN : keys->first / s.ticks_per_second;
+    if (!fbx) s.duration = keys->all.empty() ? 0.0 : (keys->last - keys->first) / s.ticks_per_second;
+    s.rate_stated = scene_states_rate(scene) && !s.default_rate;
+    const double frame_time = s.rate_stated ? 1.0 / s.ticks_per_second
+                                            : scene_parts::detect_frame_time(*keys, s.ticks_per_second);
+    s.frame_rate_hz = frame_time > 0.0 ? 1.0 / frame_time : 0.0;
     info.animations.push_back(s);
   }
   Result<std::size_t> sel = select_animation(scene, options.animation, label);
@@ -121,7 +144,8 @@ Status read_with_assimp(const fs::path& path, const ReadOptions& options, ClipFi
     warn(label + ": animation '" + summary.name + "' gives 0 ticks per second; assuming " +
          std::to_string(static_cast<int>(kDefaultTicksPerSecond)));
   info.clip.name = summary.name.empty() ? path.stem().string() : summary.name;
-  Status filled = scene_to_clip(scene, anim, summary.ticks_per_second, info.clip, info.folded_helpers, warn, label);
+  Status filled = scene_to_clip(scene, anim, summary.ticks_per_second, fbx ? std::optional(anim->mDuration) : std::nullopt,
+                                info.clip, info.folded_helpers, warn, label);
   if (!filled) return make_error(filled.error(), ErrorKind::unreadable);
   return Ok{};
 }
@@ -201,6 +225,7 @@ Status read_here(const fs::path& path, const ReadOptions& options, ClipFileInfo&
     if (!curves) return curves.failure();
     info.curves = std::move(*curves);
   }
+  if (info.curves) add_take_starts(*info.curves, info.animations);
   return check_clip(info, label, options);
 }
 

@@ -130,8 +130,14 @@ Result<BvhFile> read_bvh_file(const fs::path& path, ClipFileInfo& info, const Wa
 
 Status bvh_file_to_clip(const BvhFile& bvh, const std::string& animation_name, const fs::path& path,
                         const ReadOptions& options, ClipFileInfo& info) {
-  const AnimationSummary s{animation_name, static_cast<double>(bvh.frames - 1) * bvh.frame_time, 1.0 / bvh.frame_time,
-                           false, bvh.joints.size()};
+  AnimationSummary s;
+  s.name = animation_name;
+  s.duration = static_cast<double>(bvh.frames - 1) * bvh.frame_time;
+  s.ticks_per_second = 1.0 / bvh.frame_time;
+  s.channels = bvh.joints.size();
+  s.keys = bvh.frames;
+  s.frame_rate_hz = 1.0 / bvh.frame_time;
+  s.rate_stated = true;  // its Frame Time
   info.animations.push_back(s);
   if (!options.animation.empty() && options.animation != "0" && options.animation != s.name)
     return make_error(path.string() + ": a BVH file has one animation (0); there is no animation '" +

@@ -2,6 +2,8 @@
 // of their key times, the animation's key times, and the frame rate they lie on.
 #include "scene_parts.h"
 
+#include "key_times.h"
+
 #include "rotinterp/clip/sampling.h"
 
 #include <algorithm>
@@ -23,10 +25,6 @@ constexpr double kSameTickTolerance = 1e-6;
 // read at 1000 per second) give the step of the keys' uniform grid instead.
 constexpr double kWholeTickTolerance = 1e-4;
 constexpr double kMaxFrameRate = 240.0;
-// uniform_grid_step(): every time within this many steps of the grid; a step
-// within this of an integer or NTSC (n·1000/1001) rate is that rate.
-constexpr double kGridTolerance = 1e-3;
-constexpr double kRateSnapTolerance = 1e-5;
 
 Quat to_quat(const aiQuaternion& q) { return Quat(q.w, q.x, q.y, q.z); }
 Vec3 to_vec(const aiVector3D& v) { return Vec3(v.x, v.y, v.z); }
@@ -89,6 +87,14 @@ void add_times(const aiNodeAnim* ch, std::vector<double>& times) {
   for (unsigned k = 0; k < ch->mNumScalingKeys; ++k) times.push_back(ch->mScalingKeys[k].mTime);
 }
 
+// The times within `span` (kSameTickTolerance either side).
+std::vector<double> within(const std::vector<double>& ticks, const TickSpan& span) {
+  std::vector<double> out;
+  for (double t : ticks)
+    if (t >= span.lo - kSameTickTolerance && t <= span.hi + kSameTickTolerance) out.push_back(t);
+  return out;
+}
+
 // Sorted times with those within kSameTickTolerance of the previous one dropped.
 std::vector<double> distinct_ticks(std::vector<double> ticks) {
   std::sort(ticks.begin(), ticks.end());
@@ -98,43 +104,30 @@ std::vector<double> distinct_ticks(std::vector<double> ticks) {
   return unique;
 }
 
-// The step d when every time is t₀ + k·d (within kGridTolerance of d), d the
-// smallest gap; 0 otherwise. Formats that store seconds in float (glTF) or at a
-// fixed tick rate (Collada: 1000/s) keep their frame rate this way.
-double uniform_grid_step(std::vector<double> ticks) {
-  const std::vector<double> unique = distinct_ticks(std::move(ticks));
-  if (unique.size() < 2) return 0.0;
-  double gap = INFINITY;
-  for (std::size_t k = 1; k < unique.size(); ++k) gap = std::min(gap, unique[k] - unique[k - 1]);
-  // The step from the whole span: one float gap is too noisy over thousands of frames.
-  const double span = unique.back() - unique.front();
-  const double d = span / std::round(span / gap);
-  for (double t : unique) {
-    const double steps = (t - unique.front()) / d;
-    if (std::abs(steps - std::round(steps)) > kGridTolerance) return 0.0;
-  }
-  return d;
-}
 
 }  // namespace
 
 // The union over all channels: unanimated joints and the frame rate need it.
-Result<KeyTimes> key_times(const aiAnimation* anim, const std::string& label) {
+Result<KeyTimes> key_times(const aiAnimation* anim, const std::optional<TickSpan>& span, const std::string& label) {
   KeyTimes out;
-  double t0 = INFINITY;
+  out.span = span;
   for (unsigned c = 0; c < anim->mNumChannels; ++c) add_times(anim->mChannels[c], out.all);
-  for (double t : out.all) t0 = std::min(t0, t);
-  out.first = std::isfinite(t0) ? t0 : 0.0;
-  out.whole_ticks = !out.all.empty();
-  for (double t : out.all) out.whole_ticks = out.whole_ticks && std::abs(t - std::round(t)) < kWholeTickTolerance;
   for (double t : out.all)
     if (!std::isfinite(t)) return make_error(label + ": a key time is not finite");
+  if (span) out.all = within(out.all, *span);
+  double t0 = INFINITY, t1 = -INFINITY;
+  for (double t : out.all) t0 = std::min(t0, t), t1 = std::max(t1, t);
+  out.first = span ? span->lo : std::isfinite(t0) ? t0 : 0.0;
+  out.last = std::isfinite(t1) ? t1 : out.first;
+  out.distinct = distinct_ticks(out.all).size();
+  out.whole_ticks = !out.all.empty();
+  for (double t : out.all) out.whole_ticks = out.whole_ticks && std::abs(t - std::round(t)) < kWholeTickTolerance;
   return out;
 }
 
 // A joint's keys at the union of its chain's key times: a helper and its bone may
 // be keyed at different times, and the joint is their product at every one of them.
-JointKeys sample_joint(const NodeRec& rec, bool animated, const Channels& channels, double first_tick) {
+JointKeys sample_joint(const NodeRec& rec, bool animated, const Channels& channels, const KeyTimes& times) {
   std::vector<const aiNode*> path = rec.chain;
   path.push_back(rec.node);
   JointKeys out;
@@ -144,8 +137,13 @@ JointKeys sample_joint(const NodeRec& rec, bool animated, const Channels& channe
   std::vector<double> ticks;
   for (const aiNode* x : path)
     if (const aiNodeAnim* ch = channels.of(x)) add_times(ch, ticks);
+  if (times.span && !ticks.empty()) {
+    ticks = within(ticks, *times.span);
+    ticks.push_back(times.span->lo);
+    ticks.push_back(times.span->hi);
+  }
   out.ticks = distinct_ticks(std::move(ticks));
-  if (out.ticks.empty()) out.ticks.push_back(first_tick);
+  if (out.ticks.empty()) out.ticks.push_back(times.first);
   out.keys.reserve(out.ticks.size());
   // A channel on the node itself is assimp's simple FBX animation (only translation,
   // rotation, scaling and pre/post rotations): its keys are the node's whole local
@@ -171,11 +169,9 @@ JointKeys sample_joint(const NodeRec& rec, bool animated, const Channels& channe
 // keys' uniform grid, snapped to an integer or NTSC rate within the tolerance.
 double detect_frame_time(const KeyTimes& times, double tps) {
   if (times.whole_ticks && tps <= kMaxFrameRate) return 1.0 / tps;
-  if (const double step = uniform_grid_step(times.all) / tps; step > 0.0) {
-    const std::optional<Rate> exact = recognize_rate(1.0 / step, kRateSnapTolerance);
-    return exact ? exact->period() : step;
-  }
-  return 0.0;
+  std::vector<double> seconds = times.all;
+  for (double& t : seconds) t /= tps;
+  return uniform_frame_time(std::move(seconds));
 }
 
 }  // namespace rotinterp::scene_parts

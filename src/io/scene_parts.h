@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -71,24 +72,36 @@ struct Trs {
   Vec3 s = Vec3::Ones();
 };
 
+// A take's span in ticks, on the animation's clock. FBX declares one per take
+// (LocalStart..LocalStop, else its keys' span); assimp re-bases the keys to its start,
+// so it is [0, mDuration] there. Keys outside it only shape the curves inside it.
+struct TickSpan {
+  double lo = 0.0, hi = 0.0;
+};
+
 struct KeyTimes {
-  std::vector<double> all;   // every key of every channel, ticks
-  double first = 0.0;        // the animation's first key: where unanimated joints get theirs
+  std::vector<double> all;   // every key of every channel within the span, ticks
+  double first = 0.0;        // the span's start, else the first key: where unanimated joints get theirs
+  double last = 0.0;         // the last key within the span
+  std::size_t distinct = 0;  // distinct times in `all`
+  std::optional<TickSpan> span;
   bool whole_ticks = false;  // every key on a whole tick (within kWholeTickTolerance)
 };
 
-// The union over all channels: unanimated joints and the frame rate need it.
-Result<KeyTimes> key_times(const aiAnimation* anim, const std::string& label);
+// The union over all channels (within `span` where given): unanimated joints and
+// the frame rate need it.
+Result<KeyTimes> key_times(const aiAnimation* anim, const std::optional<TickSpan>& span, const std::string& label);
 
 struct JointKeys {
   Trs rest;                   // the chain's static transforms composed
-  std::vector<double> ticks;  // distinct key times of the chain's channels (or the first key)
+  std::vector<double> ticks;  // distinct key times of the chain's channels in the span, and its ends (or the first key)
   std::vector<Trs> keys;      // the chain's local transform at each tick
 };
 
 // A joint's keys at the union of its chain's key times: a helper and its bone may
 // be keyed at different times, and the joint is their product at every one of them.
-JointKeys sample_joint(const NodeRec& rec, bool animated, const Channels& channels, double first_tick);
+// With a span, keys outside it are dropped and its two ends are keys.
+JointKeys sample_joint(const NodeRec& rec, bool animated, const Channels& channels, const KeyTimes& times);
 
 // Seconds per frame, 0 if the keys lie on no grid. Ticks at a frame rate (FBX, .x)
 // give it directly; float seconds (glTF) and fine ticks (Collada) the step of the

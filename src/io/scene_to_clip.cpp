@@ -102,9 +102,7 @@ std::string short_number(double v) {
 // unit).
 void add_scene_facts(const aiScene* scene, const aiAnimation* anim, double tps, Clip& clip) {
   clip.source_meshes = scene->mNumMeshes;
-  if (std::int32_t mode = 0; scene->mMetaData && scene->mMetaData->Get("FrameRate", mode) && mode != 0 &&
-                             anim->mTicksPerSecond > 0.0)
-    clip.file_rate_hz = tps;
+  if (scene_states_rate(scene) && anim->mTicksPerSecond > 0.0) clip.file_rate_hz = tps;
   if (scene->mMetaData) {
     double f = 0.0;
     float ff = 0.0f;
@@ -139,13 +137,20 @@ std::shared_ptr<const BvhLayout> kept_bvh_layout(const std::vector<NodeRec>& rec
 
 }  // namespace
 
-Status scene_to_clip(const aiScene* scene, const aiAnimation* anim, double tps, Clip& clip, std::size_t& folded,
-                     const Warnings& warn, const std::string& label) {
+bool scene_states_rate(const aiScene* scene) {
+  std::int32_t mode = 0;
+  return scene->mMetaData && scene->mMetaData->Get("FrameRate", mode) && mode != 0;
+}
+
+Status scene_to_clip(const aiScene* scene, const aiAnimation* anim, double tps, std::optional<double> take_ticks,
+                     Clip& clip, std::size_t& folded, const Warnings& warn, const std::string& label) {
   const std::vector<NodeRec> recs = fold_helpers(scene->mRootNode, folded);
   const Channels channels(anim);
   Result<Selection> sel = select_joints(scene, recs, channels, label);
   if (!sel) return sel.failure();
-  Result<KeyTimes> times = key_times(anim, label);
+  std::optional<TickSpan> span;
+  if (take_ticks && *take_ticks >= 0.0 && std::isfinite(*take_ticks)) span = TickSpan{0.0, *take_ticks};
+  Result<KeyTimes> times = key_times(anim, span, label);
   if (!times) return times.failure();
 
   const std::size_t n = sel->selected.size();
@@ -162,7 +167,7 @@ Status scene_to_clip(const aiScene* scene, const aiAnimation* anim, double tps, 
     joint.name = unique_name(rec.node, node, names);
     joint.parent = rec.real_parent >= 0 ? sel->joint_of[static_cast<std::size_t>(rec.real_parent)] : -1;
     const double parent_scale = joint.parent >= 0 ? cum_scale[static_cast<std::size_t>(joint.parent)] : 1.0;
-    keys[j] = sample_joint(rec, sel->animated[node], channels, times->first);
+    keys[j] = sample_joint(rec, sel->animated[node], channels, *times);
     joint.offset = keys[j].rest.t * parent_scale;
     joint.rest_rotation = keys[j].rest.r;
     cum_scale[j] = parent_scale * baked_scale(keys[j].keys, joint.name, warn, label);
@@ -175,9 +180,11 @@ Status scene_to_clip(const aiScene* scene, const aiAnimation* anim, double tps, 
   for (std::size_t j = 0; j < n; ++j)
     if (sel->animated[sel->selected[j]])
       add_mesh_end_sites(scene, recs[sel->selected[j]].node, static_cast<int>(j), cum_scale[j], is_joint, clip.skeleton);
-  if (const double ft = detect_frame_time(*times, tps); ft > 0.0) clip.frame_time = ft;
   clip.bvh_layout = kept_bvh_layout(recs, *sel, clip);
   add_scene_facts(scene, anim, tps, clip);
+  // The file's own rate is the frames' rate, even where keys lie off its grid.
+  if (const double ft = clip.file_rate_hz > 0.0 ? 1.0 / clip.file_rate_hz : detect_frame_time(*times, tps); ft > 0.0)
+    clip.frame_time = ft;
   return Ok{};
 }
 

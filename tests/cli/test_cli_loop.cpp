@@ -24,7 +24,7 @@ fs::path temp_file(const std::string& name) {
 TEST(LoopCli, InfoReportsTheCycleAndTheJointThatMissesClosure) {
   const auto text = run_cli("info " + kRun);
   ASSERT_EQ(text.exit_code, 0) << text.err;
-  EXPECT_NE(text.out.find("cycle:       looks like a cycle (closed form: 38 frames"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("cycle:       looks like a cycle (closed form: 40 frames"), std::string::npos) << text.out;
   EXPECT_NE(text.out.find("L_Arm 4.39°"), std::string::npos) << text.out;
   const auto json = run_cli("info --json " + kRun);
   ASSERT_EQ(json.exit_code, 0) << json.err;
@@ -40,13 +40,13 @@ TEST(LoopCli, ResampleLoopWritesOnePeriodAtTheNewRateAndSaysHow) {
   const fs::path out = temp_file("run25.bvh");
   const auto r = run_cli("resample " + kRun + " -o " + out.string() + " --fps 25 --loop");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.out.find("39 → 33 frames"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("cycle (closed form): 38 → 32 frames per period of 1.267 s; period +1.05% (1.28 s)"),
+  EXPECT_NE(r.out.find("41 → 34 frames"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("cycle (closed form): 40 → 33 frames per period of 1.333 s; period -1.00% (1.32 s)"),
             std::string::npos)
       << r.out;
   EXPECT_NE(r.out.find("1 joint misses closure (a pop at the seam in the source): L_Arm 4.39°, kept as it is"), std::string::npos) << r.out;
   const auto again = run_cli("info " + out.string());
-  EXPECT_NE(again.out.find("looks like a cycle (closed form: 32 frames"), std::string::npos) << again.out;
+  EXPECT_NE(again.out.find("looks like a cycle (closed form: 33 frames"), std::string::npos) << again.out;
   fs::remove(out);
 }
 

@@ -102,19 +102,20 @@ TEST_F(InfoCli, NtscOutputsReadBackAsTheExactRational) {
   }
 }
 
-// Dude's keys lie on no grid, but the FBX states 30 fps (GlobalSettings): `info`
-// shows it and `resample` without --fps takes it as the output rate.
+// Dude's keys lie on no grid, but the FBX states 30 fps (GlobalSettings): its frames
+// are at that rate, `info` says the file states it, and `resample` without --fps
+// keeps it.
 TEST_F(InfoCli, FbxOwnFrameRateIsTheDefaultWhereKeysGiveNone) {
   const std::string in = (kData / "fbx" / "digitalrune_Dude.fbx").string();
   const test::CliResult info = test::run_cli("info '" + in + "'");
   ASSERT_EQ(info.exit_code, 0) << info.err;
-  EXPECT_NE(info.out.find("frame rate:  none (keys not on a uniform grid); the file's own: 30 Hz"), std::string::npos) << info.out;
+  EXPECT_NE(info.out.find("frame rate:  30 Hz (frame time 0.0333333333 s), stated by the file"), std::string::npos) << info.out;
   const test::CliResult json = test::run_cli("info --json '" + in + "'");
   EXPECT_EQ(nlohmann::json::parse(json.out)["file_frame_rate_hz"], 30.0);
   const fs::path& dir = dir_;
   const test::CliResult r = test::run_cli("resample '" + in + "' -o '" + (dir / "out.bvh").string() + "'");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.out.find("→ 39 frames (unknown rate → 30 Hz)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("39 → 39 frames (30 Hz → 30 Hz)"), std::string::npos) << r.out;
 }
 
 }  // namespace

@@ -4,7 +4,9 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <optional>
 #include <stdexcept>
+#include <utility>
 
 namespace rotinterp::test {
 
@@ -59,7 +61,7 @@ double figure_height(const BlenderImport& source) {
   return hi - lo;
 }
 
-Deviation worst_deviation(const BlenderImport& ours, const BlenderImport& source, double cut) {
+Deviation worst_deviation(const BlenderImport& ours, const BlenderImport& source, double cut, CompareAt at) {
   Deviation d;
   // Where each joint of ours is in `source`: a bone (index ≥ 0) or an object (−1 − index).
   std::vector<long> where(ours.bones.size());
@@ -78,22 +80,38 @@ Deviation worst_deviation(const BlenderImport& ours, const BlenderImport& source
   for (const std::string& name : source.bones)
     if (std::find(ours.bones.begin(), ours.bones.end(), name) == ours.bones.end()) d.problem += "no bone " + name + "; ";
   if (!d.problem.empty()) return d;
-  for (std::size_t k = 0; k < ours.times.size(); ++k) {
-    const double t = cut + ours.times[k];
-    const auto near = std::min_element(source.times.begin(), source.times.end(),
+  if (ours.times.empty()) return d.problem = "no keys", d;
+  // The index in `times` of the key at t, if there is one.
+  const auto key_at = [](const std::vector<double>& times, double t) -> std::optional<std::size_t> {
+    const auto near = std::min_element(times.begin(), times.end(),
                                        [t](double a, double b) { return std::abs(a - t) < std::abs(b - t); });
-    if (std::abs(*near - t) > kSameKeyTime) {
-      d.problem = "no source key at " + std::to_string(t) + " s";
-      return d;
+    if (near == times.end() || std::abs(*near - t) > kSameKeyTime) return std::nullopt;
+    return static_cast<std::size_t>(near - times.begin());
+  };
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;  // (key of ours, key of the source)
+  if (at == CompareAt::every_key_of_ours) {
+    for (std::size_t k = 0; k < ours.times.size(); ++k) {
+      const std::optional<std::size_t> s = key_at(source.times, cut + ours.times[k]);
+      if (!s) return d.problem = "no source key at " + std::to_string(cut + ours.times[k]) + " s", d;
+      pairs.emplace_back(k, *s);
     }
-    const std::size_t s = static_cast<std::size_t>(near - source.times.begin());
+  } else {
+    for (std::size_t s = 0; s < source.times.size(); ++s) {
+      const double t = source.times[s] - cut;
+      if (t < ours.times.front() - kSameKeyTime || t > ours.times.back() + kSameKeyTime) continue;
+      const std::optional<std::size_t> k = key_at(ours.times, t);
+      if (!k) return d.problem = "no key of ours at the source's key " + std::to_string(source.times[s]) + " s", d;
+      pairs.emplace_back(*k, s);
+    }
+  }
+  d.keys = pairs.size();
+  for (const auto& [k, s] : pairs)
     for (std::size_t b = 0; b < ours.bones.size(); ++b) {
       const Vec3& truth = where[b] >= 0 ? source.heads[s][static_cast<std::size_t>(where[b])]
                                         : source.origins[s][static_cast<std::size_t>(-1 - where[b])];
       const double distance = (ours.heads[k][b] - truth).norm();
-      if (distance > d.distance) d.distance = distance, d.joint = ours.bones[b], d.time = t;
+      if (distance > d.distance) d.distance = distance, d.joint = ours.bones[b], d.time = source.times[s];
     }
-  }
   return d;
 }
 

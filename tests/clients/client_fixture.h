@@ -38,18 +38,25 @@ double figure_height(const BlenderImport& source);
 // Keys of `ours` and `source` lie at the same clip times when within this (s).
 constexpr double kSameKeyTime = 1e-4;
 
+// Where two imports are compared: at every key of ours (sparse keys: reduce), or at
+// every key of the source within ours' span (a resample at the file's rate, whose
+// frames between a sparse source's keys have no pose in the source to compare).
+enum class CompareAt { every_key_of_ours, every_key_of_the_source };
+
 // The largest distance between a joint of `ours` and the same node of `source` at
-// the same key time, over every key of `ours`, with nothing fitted. Joints are
+// the same key time, over the keys `at` says, with nothing fitted. Joints are
 // matched by name: a bone of `source`, else an object (Blender makes FBX Nulls the
 // armature object or empties). `problem` is non-empty when a joint, a bone of
-// `source` or a key time of `ours` has no counterpart. `cut`: the key of `ours` at
+// `source` or a key time to compare has no counterpart. `cut`: the key of `ours` at
 // t is the source's at cut + t (s; resample --range starts its output at 0).
 struct Deviation {
   double distance = 0.0;  // metres
   std::string joint;
-  double time = 0.0;  // s
+  double time = 0.0;  // s, the source's
   std::string problem;
+  std::size_t keys = 0;  // key times compared
 };
-Deviation worst_deviation(const BlenderImport& ours, const BlenderImport& source, double cut = 0.0);
+Deviation worst_deviation(const BlenderImport& ours, const BlenderImport& source, double cut = 0.0,
+                          CompareAt at = CompareAt::every_key_of_ours);
 
 }  // namespace rotinterp::test

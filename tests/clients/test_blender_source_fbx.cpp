@@ -28,7 +28,8 @@ TEST(BlenderSourceFbx, TheCurvesWrittenBackShowInBlenderAsTheSourceDoes) {
     const BlenderImport &ours = imports[i], &source = imports[i + 1];
     ASSERT_EQ(ours.armatures, 1) << paths[i];
     const double height = figure_height(source);
-    const Deviation d = worst_deviation(ours, source);
+    const Deviation d = worst_deviation(ours, source, 0.0, CompareAt::every_key_of_the_source);
+    EXPECT_EQ(d.keys, source.times.size()) << paths[i];
     EXPECT_EQ(d.problem, "") << paths[i];
     EXPECT_LE(d.distance, 1e-3 * height) << paths[i] << ": " << d.joint << " at " << d.time << " s";
     std::printf("[ blender ] %s: %zu keys, worst %.4g mm at %s, %.4g s\n", paths[i].c_str(), ours.times.size(),

@@ -26,6 +26,9 @@ constexpr double kDeg = 180.0 / kPi;
 
 // Round-off of the seam stencils on a C¹ curve (deg/s); a slerp seam jumps by hundreds.
 constexpr double kRoundOffVelocity = 0.01;
+// A closure miss of the source (≤ 0.005°; Marine_Run's joints miss by up to 0.0008°)
+// as a velocity over two 30 Hz frames, °/s.
+constexpr double kClosureVelocity = 0.02;
 
 Clip load(const std::string& rel) {
   auto c = read_clip(fs::path(ROTINTERP_SHARED_DATA) / rel);
@@ -92,7 +95,7 @@ TEST(EvalSeam, WithoutTheLoopTheOrdinaryCurvesJumpAtTheSeam) {
           const double with = seam_figures(*looped, j, *b).jumps.velocity * kDeg;
           const double without = seam_figures(*plain, j, *a).jumps.velocity * kDeg;
           if (m.continuity == 0) {  // up to the closure misses (≤ 0.005°): frame 0 against the last frame
-            EXPECT_NEAR(with, without, 0.01 * without + kRoundOffVelocity) << file << " " << m.name << " " << keep;
+            EXPECT_NEAR(with, without, 0.01 * without + kClosureVelocity) << file << " " << m.name << " " << keep;
           }
           worst_plain = std::max(worst_plain, without);
           worst_looped = std::max(worst_looped, with);
@@ -112,8 +115,8 @@ TEST(EvalSeam, KeyFramesWrapAroundThePeriod) {
   auto closed = prepare_reference(load(run), run, o);
   ASSERT_TRUE(closed) << closed.error();
   std::vector<std::size_t> want;
-  for (std::size_t k = 0; k < 38; k += 4) want.push_back(k);
-  want.push_back(38);
+  for (std::size_t k = 0; k < 40; k += 4) want.push_back(k);  // 1.333 s at its file's 30 Hz
+  want.push_back(40);
   EXPECT_EQ(key_frames(*closed, 4), want);
   o.loop_form = LoopForm::open;
   auto open = prepare_reference(test::cycle_clip(test::CycleTruth{1.0, Vec3(0.5, 0.0, 0.0)}, 24, LoopForm::open),
@@ -123,7 +126,7 @@ TEST(EvalSeam, KeyFramesWrapAroundThePeriod) {
   o.loop = false;
   auto plain = prepare_reference(load(run), run, o);
   ASSERT_TRUE(plain);
-  EXPECT_EQ(key_frames(*plain, 8), (std::vector<std::size_t>{0, 8, 16, 24, 32, 38}));
+  EXPECT_EQ(key_frames(*plain, 8), (std::vector<std::size_t>{0, 8, 16, 24, 32, 40}));
 }
 
 TEST(EvalSeam, AClipThatIsNotACycleFailsUnlessItsFormIsGiven) {

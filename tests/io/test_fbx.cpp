@@ -241,7 +241,9 @@ TEST(Fbx, ReportsUnitScaleAndFrameRate) {
   Result<Clip> inch = read_clip(kData / "fbx" / "digitalrune_XboxAvatars_Jump.fbx");
   ASSERT_TRUE(inch) << inch.error();
   EXPECT_NEAR(inch->unit.metres_per_unit, 0.0254, 1e-7);
-  EXPECT_LT(inch->start_time(), 0.0);  // first key at t = −1 tick is kept
+  // Its take spans LocalStart..LocalStop: the key 1 tick before LocalStart shapes the
+  // curves but is no frame (it was one, at t = −1 tick).
+  EXPECT_EQ(inch->start_time(), 0.0);
 }
 
 }  // namespace

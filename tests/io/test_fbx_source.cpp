@@ -98,7 +98,7 @@ TEST(FbxSource, PreRotationIsAppliedOnceBeforeTheEulerCurves) {
   ASSERT_GE(j, 0);
   const RotationTrack& track = replayed.rotations[static_cast<std::size_t>(j)];
   for (std::size_t k = 0; k < track.times.size(); ++k) {
-    const double ticks = static_cast<double>(take.start) + track.times[k] * static_cast<double>(kFbxTicksPerSecond);
+    const double ticks = static_cast<double>(fbx_take_span(take).start) + track.times[k] * static_cast<double>(kFbxTicksPerSecond);
     const double degrees = 90.0 + evaluate_fbx_curve(*z, ticks);
     const Quat expected(Eigen::AngleAxisd(degrees / kDegreesPerRadian, Vec3::UnitZ()));
     EXPECT_LT(angle_degrees(track.keys[k], expected), 1e-6) << "key " << k;
@@ -140,7 +140,7 @@ TEST(FbxSource, ATakeWhoseFirstKeyIsNotAtZeroIsReplayedOnTheClipsClock) {
   auto read = read_source_clip(path, {});
   ASSERT_TRUE(read.ok()) << read.error();
   auto source = std::make_shared<const SourceClip>(std::move(*read));
-  EXPECT_EQ(fbx_take_origin(source->curves.takes.at(source->take)), 1539538600);
+  EXPECT_EQ(fbx_take_span(source->curves.takes.at(source->take)).start, 1539538600);
   auto motion = source_motion(source, "late.fbx");
   ASSERT_TRUE(motion.ok()) << motion.error();
   const Clip& clip = source->clip;

@@ -165,12 +165,12 @@ def test_commands_release_the_gil(name, tmp_path):
 def test_resample_loop_gives_one_period_closing_as_the_input():
     clip = rotinterp.read_clip(str(DATA / "fbx" / "digitalrune_Marine_Run.fbx"))
     looped = rotinterp.resample(clip, fps=25, loop=True)
-    assert looped.frame_count == 33  # 32 frames per period, closed: the last repeats the first
+    assert looped.frame_count == 34  # 33 frames per period (1.333 s at 25 Hz), closed: the last repeats the first
     seam = np.degrees(rotinterp.angle(looped.rotations[0], looped.rotations[-1]))
     names = list(looped.joint_names)
     pop = names.index("L_Arm")  # the source's own 4.4° pop: reported, kept
     assert seam[pop] == pytest.approx(4.39, abs=0.01)
     assert np.delete(seam, pop).max() < 1e-7
-    assert rotinterp.resample(clip, fps=25, loop="closed").frame_count == 33
+    assert rotinterp.resample(clip, fps=25, loop="closed").frame_count == 34
     with pytest.raises(ValueError, match="expected auto, closed or open"):
         rotinterp.resample(clip, fps=25, loop="wrap")

@@ -119,6 +119,15 @@ struct FbxTake {
   std::vector<FbxAnimatedProperty> properties;  // every animated property, curves or not
 };
 
+// A take's span in ticks, the one clock every reader places frames on: the stack's
+// LocalStart..LocalStop (6.1: LocalTime) where it declares a non-empty one, else its
+// keys' first..last (assimp re-bases a take's keys to the same start). Keys outside
+// it only shape the curves inside it.
+struct FbxTickSpan {
+  std::int64_t start = 0, stop = 0;
+};
+FbxTickSpan fbx_take_span(const FbxTake& take);
+
 struct FbxAnimation {
   std::uint32_t version = 0;  // the file's FBX version (6100, 7500, …)
   std::vector<FbxTake> takes;

@@ -57,11 +57,7 @@ Quat fbx_local_rotation(const FbxTake& take, const FbxJointCurves& joint, double
 // place). Joints named in `keep` get none. Errors as replay_fbx_rotations's.
 Result<std::vector<FbxJointCurves>> fbx_joint_curves(const Clip& clip, const SourceClip& source,
                                                      const std::vector<std::string>& keep, const std::string& label);
-// The FBX time (ticks) of clip time 0, as assimp re-bases a take's keys: the stack's
-// LocalStart where it declares a span (LocalStart or LocalStop not 0), else the take's
-// first key (a file whose keys start at 1/30 s has its first key at clip time 0).
-std::int64_t fbx_take_origin(const FbxTake& take);
-// The FBX time (ticks) of clip time t: fbx_take_origin + t.
+// The FBX time (ticks) of clip time t: the take's span start (fbx_take_span) + t.
 double fbx_source_ticks(const SourceClip& source, double t);
 
 // The file's own motion: joint j's local rotation at clip time t, evaluated from its

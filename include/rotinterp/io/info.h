@@ -21,7 +21,21 @@ struct AnimationSummary {
   double ticks_per_second = 0.0;  // as used (kDefaultTicksPerSecond where the file gives 0)
   bool default_rate = false;      // the file gave 0 ticks per second
   std::size_t channels = 0;       // animated nodes
+  // The take as read (one clock for every reader): its span starts at `start` in file
+  // time (seconds; FBX: LocalStart where declared, else its first key; NaN where the
+  // reader cannot see the file's time) and lasts `duration`; `keys` distinct key times
+  // lie in it; frames are placed at `frame_rate_hz` (0: none), stated by the file
+  // (FBX TimeMode, BVH Frame Time) or inferred from its key times.
+  double start = 0.0;
+  std::size_t keys = 0;
+  double frame_rate_hz = 0.0;
+  bool rate_stated = false;
 };
+
+// The take's frames: duration × rate + 1 at its rate, else its key count.
+std::size_t take_frames(const AnimationSummary& take);
+// "stated by the file" or "inferred from its key times" (info's words for rate_stated).
+const char* rate_origin_text(bool stated);
 
 struct ClipFileInfo {
   std::string format;  // lower-case extension: "bvh", "fbx", "glb", …
@@ -43,6 +57,10 @@ std::string static_scene_contents(const std::string& no_animation_error);
 
 // Reads `path` like read_clip() and also reports what the file holds.
 Result<ClipFileInfo> inspect_clip(const std::filesystem::path& path, const ReadOptions& options = {});
+// inspect_clip() as `info` reads: an FBX with its own curves too (ReadOptions::
+// read_curves), so that its takes show in file time (assimp re-bases them); where our
+// reader of the curves fails and they were not asked for, without them.
+Result<ClipFileInfo> inspect_clip_for_info(const std::filesystem::path& path, ReadOptions options);
 
 // Things about a valid clip a user may want to know, one line each: non-uniform
 // key spacing, joints without keys, tracks with differing key counts or spans,
@@ -64,8 +82,6 @@ std::string curves_info_json(const ClipFileInfo& info, double sample_hz);
 // The take info --curves describes: the selected animation's, else the first; nullptr
 // when the file has no curves.
 const FbxTake* selected_take(const ClipFileInfo& info);
-// The last sample time of that take in ticks: its LocalStop, or its last key.
-std::int64_t take_end_ticks(const FbxTake& take);
 
 // Its "unit" object (clip/units.h), as JSON text; info --summary's rows use it too.
 std::string unit_info_json(const ClipUnit& unit);

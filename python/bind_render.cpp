@@ -27,7 +27,7 @@ std::vector<std::string> render(const py::object& input, const std::optional<std
                                 const std::optional<std::string>& backend) {
   render::ComparisonOptions o;
   if (!out_dir && !video) value_error("render: give out_dir (frame PNGs), video, or both");
-  bool source = false;  // "source": the file's own curves, a panel beside the methods
+  bool source = false;  // "source": the file's own motion, a panel beside the methods
   if (method_names_in) {
     for (const std::string& m : *method_names_in) {
       source = source || is_source_method(m);
@@ -40,7 +40,7 @@ std::vector<std::string> render(const py::object& input, const std::optional<std
   for (const std::string& m : o.methods)
     if (!is_source_method(m)) method_of(m, "methods: ");
   if (source && py::isinstance<Clip>(input))
-    value_error("methods: 'source' replays a file's own curves: give the FBX file's path, not a Clip");
+    value_error("methods: 'source' replays a file's own motion: give the file's path (FBX, glTF, BVH), not a Clip");
   if (keep_every < 1) value_error("keep_every must be a whole number >= 1, got " + std::to_string(keep_every));
   o.keep_every = static_cast<std::size_t>(keep_every);
   if (frames) o.frames = checked(render::parse_frame_range(*frames));

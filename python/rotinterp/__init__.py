@@ -141,7 +141,8 @@ def render(input, out_dir=None, methods=None, keep_every=10, frames=None, size="
     ``keep_every``-th frame, side by side. Options as the command's, in its forms:
     ``frames`` "START:END:STEP", ``size`` "WxH", ``colour`` "error" or "method", ``camera``
     "fixed" or "follow", ``backend`` "osmesa" or "egl". ``methods`` may name "source" when
-    ``input`` is the path of an FBX file with curves: a panel of the file's own motion, as
+    ``input`` is the path of a file with motion of its own (FBX curves, glTF samplers, BVH
+    frames): a panel of the file's own motion, as
     ``render -m source`` draws it. Returns the paths written (frames,
     then the sheet, then the video). Raises RuntimeError where the module was built
     without the renderer. Releases the GIL."""

@@ -185,7 +185,7 @@ int run(const EvalArgs& a) {
                    "(listed in %s/%s)\n", report->skipped.size(), a.output.c_str(), kSummaryJsonName);
     fmt::print("{}", format_summary_table(report->summary, table));
     if (!a.truth.empty())
-      fmt::print("truth: {}\n", a.truth == "source" ? "each FBX file's own rotation curves (--truth source)"
+      fmt::print("truth: {}\n", a.truth == "source" ? "each file's own motion: FBX rotation curves, glTF animation samplers, BVH frames (--truth source)"
                                                     : "each synth clip's analytic motion (--truth)");
     if (table == TableFormat::text)
       fmt::print("wrote {}/{}, {}/{}, {}/{}{}\n", a.output, kErrorsCsvName, a.output, kClipsCsvName, a.output,
@@ -225,9 +225,9 @@ void add_eval_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   auto* truth = sub->add_option("--truth", args->truth,
                                 "Compare at every frame and subframe with: synth (bare --truth), the analytic motion "
-                                "of synth clips (CLIP.synth, from rotinterp synth); or source, an FBX file's own "
-                                "rotation curves (as resample --method source replays them). A clip without one "
-                                "fails (default: off, compare with the source frames)")
+                                "of synth clips (CLIP.synth, from rotinterp synth); or source, the file's own "
+                                "motion as resample --method source replays it (an FBX file's rotation curves, a "
+                                "glTF file's animation samplers, a BVH's frames). A clip without one fails (default: off, compare with the source frames)")
                     ->expected(0, 1);
   add_anim_option(*sub, args->anim, true);
   sub->add_option("--min-frames", args->min_frames,

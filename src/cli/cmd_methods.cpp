@@ -1,7 +1,7 @@
 // rotinterp methods [--json]: the registered interpolators, and `source`, the file's own curves.
 #include "common.h"
 #include "rotinterp/interp/interpolator.h"
-#include "rotinterp/io/fbx_source.h"
+#include "rotinterp/io/source_motion.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
@@ -15,11 +15,11 @@ namespace rotinterp::cli {
 
 namespace {
 
-// `source` is no interpolator of keys (interp/interpolator.h): it replays the curves
-// an FBX file stores, so the properties of a curve through keys do not apply.
+// `source` is no interpolator of keys (interp/interpolator.h): it replays the motion
+// a file stores (io/source_motion.h), so the properties of a curve through keys do not apply.
 std::string source_description() {
-  return std::string("the file's own FBX curves as the DCC evaluates them; needs an FBX file with rotation curves; "
-                     "runs in ") + kSourceRunsIn;
+  return std::string("the file's own motion: FBX curves as the DCC evaluates them, glTF animation samplers as the "
+                     "glTF spec does, BVH frames; runs in ") + kSourceRunsIn;
 }
 // Where the interpolators run: every command that takes -m.
 constexpr const char* kMethodsRunIn = "resample, eval, reduce, render";

@@ -6,8 +6,8 @@
 #include "rotinterp/clip/metrics.h"
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/io/atomic_file.h"
-#include "rotinterp/io/fbx_source.h"
 #include "rotinterp/io/read.h"
+#include "rotinterp/io/source_motion.h"
 #include "rotinterp/render/comparison.h"
 #include "rotinterp/render/option_text.h"
 #include "rotinterp/render/context.h"
@@ -227,8 +227,8 @@ void add_render_command(CLI::App& app, int& exit_code) {
   add_output_option(*sub, args->out_dir,
                     "Output directory for frame_NNNNNN.png (created if missing); default none, then --video is needed");
   add_method_option(*sub, args->methods, true,
-                    "all, one panel each; 'source' adds a panel of an FBX file's own curves (the animator's "
-                    "motion, not rebuilt from keys)");
+                    "all, one panel each; 'source' adds a panel of the file's own motion (FBX curves, glTF "
+                    "samplers, BVH frames: the animator's motion, not rebuilt from keys)");
   add_keep_every_option(*sub, args->keep_every, false, "default 10");
   sub->add_option("--frames", args->frames,
                   "Frames to draw, START:END:STEP (END included; frame 0 = first frame). Default: 8 frames spread "

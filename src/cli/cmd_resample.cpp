@@ -91,15 +91,15 @@ Status resample_file(FileRun& run, const ResampleArgs& a, const ResampleOptions&
   read_options.threads = opt.threads;
   stage("reading " + run.input);
   // --method source: the frames come from the grid and the default method, then the
-  // joints with curves are evaluated from them (io/fbx_source.h).
+  // joints the file has its own motion for are evaluated on them (io/source_motion.h).
   const bool source = opt.method == kSourceMethodName;
-  std::optional<SourceClip> curves;
+  std::optional<FileSource> own;
   Result<Clip> clip = make_error("");
   if (source) {
-    auto read = read_source_clip(run.input, read_options);
+    auto read = read_file_source(run.input, read_options);
     if (!read) return read.failure();
-    curves = std::move(*read);
-    clip = curves->clip;
+    own = std::move(*read);
+    clip = own->clip;
   } else {
     clip = read_clip(run.input, read_options);
   }
@@ -123,12 +123,11 @@ Status resample_file(FileRun& run, const ResampleArgs& a, const ResampleOptions&
     out = resample_clip(std::move(*clip), base);  // the clip is not needed after
   }
   if (!out) return out.failure(run.input + ": ");
-  if (curves) {
-    std::vector<std::string> keep;
-    for (const auto& [joint, method] : opt.method_for) keep.push_back(joint);
-    auto replayed = replay_fbx_rotations(*out, *curves, keep, run.input);
-    if (!replayed) return replayed.failure();
-    run.replayed = *replayed;
+  std::vector<std::string> keep;  // --method-for joints keep their method
+  for (const auto& [joint, method] : opt.method_for) keep.push_back(joint);
+  if (own) {
+    run.replayed = replay_source_rotations(*out, *own, keep);
+    run.replays = own->replays;
   }
   if (a.out_unit_m) convert_unit(*out, *a.out_unit_m, "--out-unit " + a.out_unit);
   run.output_metres_per_unit = out->unit.metres_per_unit;
@@ -144,11 +143,9 @@ Status resample_file(FileRun& run, const ResampleArgs& a, const ResampleOptions&
   Status written = Ok{};
   std::string ext = run.output.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (curves && !opt.fps && ext == ".fbx") {
+  if (own && own->fbx && !opt.fps && ext == ".fbx") {
     // The source's own key times: its curves go back as stored (io/fbx_source.h).
-    std::vector<std::string> keep;
-    for (const auto& [joint, method] : opt.method_for) keep.push_back(joint);
-    auto fbx = encode_source_fbx(*out, *curves, keep, a.fbx_ascii, run.input);
+    auto fbx = encode_source_fbx(*out, *own->fbx, keep, a.fbx_ascii, run.input);
     if (!fbx) return fbx.failure();
     run.copied_curves = fbx->copied;
     written = write_file_atomically(run.output, [&](std::ostream& stream) -> Status {
@@ -195,8 +192,9 @@ int run_single(const ResampleArgs& a, ResampleOptions opt) {
                                           : "?");
     std::string methods = opt.method;
     if (run.replayed)
-      methods += fmt::format(" ({} of {} joints from the file's curves, the rest {} over the baked keys)", run.replayed,
-                             run.joints, kDefaultResampleMethod);
+      methods += fmt::format(" ({} of {} joints from {}{})", run.replayed, run.joints, run.replays,
+                             run.replayed < run.joints ? fmt::format(", the rest {} over the baked keys", kDefaultResampleMethod)
+                                                       : std::string());
     if (run.copied_curves)
       methods += fmt::format("; FBX: the curves of {} joints written back as stored (keys and tangents)", run.copied_curves);
     if (!opt.method_for.empty()) methods += fmt::format(" (+{} per-joint override{})", opt.method_for.size(),
@@ -217,7 +215,7 @@ int run_resample(ResampleArgs a) {
   if (!loop) return fail_usage(loop.error());
   a.loop_request = *loop;
   if (opt->method == kSourceMethodName && (opt->keep_every || opt->range || a.loop_request))
-    return fail_usage("--method source evaluates the file's curves on the output grid (--fps); --keep-every, --range "
+    return fail_usage("--method source evaluates the file's own motion on the output grid (--fps); --keep-every, --range "
                       "and --loop do not apply to it");
   auto unit = parse_unit_option(a.unit);
   if (!unit) return fail_usage(unit.error());
@@ -266,9 +264,11 @@ void add_resample_command(CLI::App& app, int& exit_code) {
   add_keep_every_option(*sub, a->keep_every, false, "every source frame is rebuilt (default: unset, see --fps)");
   add_method_option(*sub, a->method, false,
                     std::string(kDefaultResampleMethod) +
-                        ", for every joint; 'source' replays an FBX file's own curves (tangents, Euler order, "
-                        "pre/post-rotation) on the joints that have them, " + kDefaultResampleMethod + " on the rest; "
-                        "to .fbx without --fps it writes those curves back as stored (keys and tangents)");
+                        ", for every joint; 'source' replays the file's own motion on the joints that have it: "
+                        "an FBX file's curves (tangents, Euler order, pre/post-rotation), a glTF file's animation "
+                        "samplers (STEP, LINEAR, CUBICSPLINE), a BVH's frames (slerp between them); " +
+                        kDefaultResampleMethod + " on the rest; FBX to .fbx without --fps writes its curves back as "
+                        "stored (keys and tangents)");
   sub->add_option("--method-for", a->method_for, "Per-joint override JOINT=METHOD (repeatable; default none)");
   sub->add_option("--translation", a->translation,
                   "Translation tracks: linear, or cubic (default: C¹, Steffen tangents — never overshoots between keys)");

@@ -48,7 +48,8 @@ struct FileRun {
   ClipUnit unit;             // the input's (clip/units.h)
   double output_metres_per_unit = 0.0;
   std::string cycle;  // --loop: the cycle's summary (clip/resample_loop.h)
-  std::size_t replayed = 0;  // --method source: joints evaluated from the file's curves
+  std::size_t replayed = 0;  // --method source: joints evaluated from the file's own motion
+  std::string replays;       // … which is (FileSource::replays): "the file's curves", …
   std::size_t copied_curves = 0;  // --method source to FBX without --fps: joints whose curves were written back
 };
 

@@ -5,8 +5,8 @@
 #include "rotinterp/core/nearest_name.h"
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/io/atomic_file.h"
-#include "rotinterp/io/fbx_source.h"
 #include "rotinterp/io/folder_run.h"
+#include "rotinterp/io/source_motion.h"
 
 #include <CLI/CLI.hpp>
 
@@ -144,7 +144,7 @@ Result<std::vector<std::string>> parse_methods(const std::string& text, bool sev
     }
     const MethodInfo* m = find_method(item);
     if (!m && is_source_method(item))
-      return make_error("--method '" + item + "' replays an FBX file's own curves, it rebuilds nothing from keys: " +
+      return make_error("--method '" + item + "' replays the file's own motion, it rebuilds nothing from keys: " +
                         "this command cannot run it (it runs in " + kSourceRunsIn + ")");
     if (!m) return make_error("--method: " + unknown_method_message(item));
     if (std::find(names.begin(), names.end(), m->name) == names.end()) names.push_back(m->name);

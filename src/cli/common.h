@@ -103,7 +103,7 @@ CLI::Option* add_output_option(CLI::App& sub, std::string& output, const std::st
 // -m,--method (also --methods): one method name, or with `several` a comma list or
 // "all". Names are checked by parse_methods.
 CLI::Option* add_method_option(CLI::App& sub, std::string& methods, bool several, const std::string& default_text);
-// Where `source` (io/fbx_source.h: the FBX file's own curves, no interpolator of keys)
+// Where `source` (io/source_motion.h: the file's own motion, no interpolator of keys)
 // runs: "resample -m source, render -m source, eval --truth source". `methods` says it,
 // and a command whose -m does not take it refuses it with this line.
 extern const char* const kSourceRunsIn;

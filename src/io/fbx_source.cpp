@@ -6,19 +6,11 @@
 #include "rotinterp/track/sample.h"
 
 #include <algorithm>
-#include <cctype>
 #include <map>
 #include <memory>
 #include <optional>
 
 namespace rotinterp {
-
-bool is_source_method(const std::string& name) {
-  const std::string want = kSourceMethodName;
-  return name.size() == want.size() &&
-         std::equal(name.begin(), name.end(), want.begin(),
-                    [](char a, char b) { return std::tolower(static_cast<unsigned char>(a)) == b; });
-}
 
 Quat fbx_local_rotation(const FbxTake& take, const FbxJointCurves& joint, double ticks) {
   return fbx_node_rotation(*joint.model, fbx_lcl_values(take, *joint.model, &joint.layers, ticks).rotation);
@@ -30,15 +22,19 @@ Result<SourceClip> read_source_clip(const std::filesystem::path& path, const Rea
   with_curves.read_curves = true;
   Result<ClipFileInfo> info = inspect_clip(path, with_curves);
   if (!info) return info.failure();
-  if (!info->curves)
-    return make_error(label + ": --method source replays FBX curves; this is a '" + info->format +
+  return source_clip_of(std::move(*info), label);
+}
+
+Result<SourceClip> source_clip_of(ClipFileInfo&& info, const std::string& label) {
+  if (!info.curves)
+    return make_error(label + ": --method source replays FBX curves; this is a '" + info.format +
                       "' file (use an interpolator, e.g. clamped)");
-  const FbxTake* take = selected_take(*info);
+  const FbxTake* take = selected_take(info);
   if (!take) return make_error(label + ": --method source: the file has no animation stack, so no curves to replay");
   SourceClip out;
-  out.take = static_cast<std::size_t>(take - info->curves->takes.data());
-  out.clip = std::move(info->clip);
-  out.curves = std::move(*info->curves);
+  out.take = static_cast<std::size_t>(take - info.curves->takes.data());
+  out.clip = std::move(info.clip);
+  out.curves = std::move(*info.curves);
   return out;
 }
 
@@ -87,26 +83,27 @@ Result<std::size_t> replay_fbx_rotations(Clip& clip, const SourceClip& source, c
   return replayed;
 }
 
-Result<SourceMotion> source_motion(std::shared_ptr<const SourceClip> source, const std::string& label) {
+Result<FileSource> fbx_file_source(std::shared_ptr<const SourceClip> source, const std::string& label) {
   auto curves = fbx_joint_curves(source->clip, *source, {}, label);
   if (!curves) return curves.failure();
   auto joints = std::make_shared<const std::vector<FbxJointCurves>>(std::move(*curves));
-  return SourceMotion([source, joints](std::size_t j, double t) {
+  FileSource out;
+  out.clip = source->clip;
+  for (const FbxJointCurves& c : *joints) out.own.push_back(c.model != nullptr);
+  out.replays = "the file's curves";
+  out.fbx = source;
+  out.motion = [source, joints](std::size_t j, double t) {
     const FbxJointCurves& c = (*joints)[j];
     return c.model ? fbx_local_rotation(source->curves.takes.at(source->take), c, fbx_source_ticks(*source, t))
                    : sample_rotation(source->clip.rotations[j], t);
-  });
+  };
+  return out;
 }
 
-Result<Clip> read_clip_with_source_motion(const std::filesystem::path& path, const ReadOptions& options,
-                                          SourceMotion& motion) {
-  auto read = read_source_clip(path, options);
-  if (!read) return read.failure();
-  auto file = std::make_shared<const SourceClip>(std::move(*read));
-  auto own = source_motion(file, path.string());
-  if (!own) return own.failure();
-  motion = std::move(*own);
-  return file->clip;
+Result<SourceMotion> source_motion(std::shared_ptr<const SourceClip> source, const std::string& label) {
+  auto file = fbx_file_source(std::move(source), label);
+  if (!file) return file.failure();
+  return file->motion;
 }
 
 }  // namespace rotinterp

@@ -1,5 +1,6 @@
-// eval --truth source: every method measured against the FBX file's own rotation
-// curves, where between frames the interpolators of the baked keys miss them.
+// eval --truth source: every method measured against the file's own motion — an FBX
+// file's rotation curves, where between frames the interpolators of the baked keys miss
+// them; a glTF file's samplers; a BVH's frames.
 #include "support/run_cli.h"
 
 #include <gtest/gtest.h>
@@ -31,7 +32,7 @@ std::map<std::string, double> max_errors(const std::string& truth_option, const 
                          " --methods slerp,squad,c2 --keep-every 1 --subframe 4 --no-plots -o " + out.string());
   EXPECT_EQ(r.exit_code, 0) << r.err;
   if (!truth_option.empty()) {
-    EXPECT_NE(r.out.find("truth: each FBX file's own rotation curves"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("truth: each file's own motion: FBX rotation curves"), std::string::npos) << r.out;
   }
   std::map<std::string, double> out_max;
   const nlohmann::json summary = nlohmann::json::parse(slurp(out / "summary.json"));
@@ -62,18 +63,43 @@ TEST(EvalSourceTruth, AnFbx61FileAndALayeredFileAreMeasuredAgainstTheirCurves) {
     const auto r = run_cli("eval " + kData + "/" + file + " --truth source -m slerp,c2 --keep-every 2 --no-plots -o " +
                            out.string());
     EXPECT_EQ(r.exit_code, 0) << file << ": " << r.err;
-    EXPECT_NE(r.out.find("truth: each FBX file's own rotation curves"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("truth: each file's own motion: FBX rotation curves"), std::string::npos) << r.out;
     const nlohmann::json summary = nlohmann::json::parse(slurp(out / "summary.json"));
     EXPECT_EQ(summary.at("results").size(), 2u) << file;
   }
 }
 
-TEST(EvalSourceTruth, AClipWithoutCurvesIsNamedAndTheRunIsPartial) {
+// A BVH's source is its frames: between them their slerp, so slerp's error is 0.
+TEST(EvalSourceTruth, ABvhIsMeasuredAgainstItsFrames) {
   const fs::path out = fresh_dir("bvh");
-  const auto r = run_cli("eval " + kData + "/bvh/bvhio_example.bvh --truth source -m slerp -q --no-plots -o " +
-                         out.string());
+  const auto r = run_cli("eval " + kData + "/bvh/NC_bandai2_raise-up-both-hands_active_031.bvh --truth source -m slerp "
+                         "--keep-every 1 --subframe 4 --no-plots -o " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json summary = nlohmann::json::parse(slurp(out / "summary.json"));
+  ASSERT_EQ(summary.at("results").size(), 1u);
+  EXPECT_LT(summary["results"][0]["max_deg"].get<double>(), 1e-3);
+}
+
+// glTF: the samplers; a GLB written by our writer (LINEAR) and measured with its truth.
+TEST(EvalSourceTruth, AGlbIsMeasuredAgainstItsAnimationSamplers) {
+  const fs::path out = fresh_dir("glb");
+  const std::string glb = (out / "clip.glb").string();
+  ASSERT_EQ(run_cli("resample " + kData + "/fbx/digitalrune_Marine_Run.fbx -o " + glb + " -q").exit_code, 0);
+  const auto r = run_cli("eval " + glb + " --truth source -m slerp,c2 --keep-every 2 --no-plots -o " + (out / "eval").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("glTF animation samplers"), std::string::npos) << r.out;
+  const nlohmann::json summary = nlohmann::json::parse(slurp(out / "eval" / "summary.json"));
+  EXPECT_EQ(summary.at("results").size(), 2u);
+}
+
+// Collada stores no motion we replay: the file is named and the run is partial.
+TEST(EvalSourceTruth, AClipWithNoMotionToReplayIsNamedAndTheRunIsPartial) {
+  const fs::path out = fresh_dir("dae");
+  const std::string dae = (out / "walk.dae").string();
+  ASSERT_EQ(run_cli("resample " + kData + "/bvh/bvhio_example.bvh -o " + dae + " -q").exit_code, 0);
+  const auto r = run_cli("eval " + dae + " --truth source -m slerp -q --no-plots -o " + (out / "eval").string());
   EXPECT_EQ(r.exit_code, 3);
-  EXPECT_NE(r.err.find("bvhio_example.bvh: --method source replays FBX curves"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("walk.dae: --method source replays a file's own motion"), std::string::npos) << r.err;
 }
 
 }  // namespace

@@ -159,7 +159,9 @@ TEST(FbxSource, ATakeWhoseFirstKeyIsNotAtZeroIsReplayedOnTheClipsClock) {
   EXPECT_EQ(matched, 5u);
 }
 
-TEST(FbxSource, ABvhIsRefusedInOneLineNamingTheFile) {
+// A file that is not FBX has no curves: read_source_clip (the FBX reader behind
+// read_file_source, io/source_motion.h, which replays BVH and glTF too) says so in one line.
+TEST(FbxSource, ReadingCurvesFromAFileThatIsNotFbxIsRefusedInOneLineNamingTheFile) {
   const auto path = test::kData / "bvh/bvhio_example.bvh";
   auto read = read_source_clip(path, {});
   ASSERT_FALSE(read.ok());

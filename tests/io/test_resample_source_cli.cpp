@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 namespace rotinterp {
 namespace {
 
@@ -46,13 +48,37 @@ TEST(ResampleSourceCli, AnFbx61FileIsWrittenWithItsJointsFromTheTakesCurves) {
   EXPECT_TRUE(std::filesystem::is_regular_file(out));
 }
 
-TEST(ResampleSourceCli, ABvhIsRefusedInOneLineAndNothingIsWritten) {
+// glTF: the samplers replayed on the output grid; BVH: its frames (slerp between them).
+TEST(ResampleSourceCli, AGlbAndABvhAreResampledFromTheirOwnMotion) {
   test::TempDir dir;
+  const std::string bvh = (test::kData / "bvh/NC_bandai2_raise-up-both-hands_active_031.bvh").string();
+  const auto glb = dir / "clip.glb";
+  ASSERT_EQ(test::run_cli("resample '" + bvh + "' -o '" + glb.string() + "' -q").exit_code, 0);
+  const test::CliResult from_glb =
+      test::run_cli("resample '" + glb.string() + "' -o '" + (dir / "from_glb.bvh").string() + "' --fps 60 -m source");
+  ASSERT_EQ(from_glb.exit_code, 0) << from_glb.err;
+  EXPECT_NE(from_glb.out.find("51 → 101 frames (30 Hz → 60 Hz), method source (22 of 22 joints from the file's "
+                              "animation samplers)"),
+            std::string::npos)
+      << from_glb.out;
+  EXPECT_TRUE(std::filesystem::is_regular_file(dir / "from_glb.bvh"));
+  const test::CliResult from_bvh = test::run_cli("resample '" + bvh + "' -o '" + (dir / "from_bvh.fbx").string() + "' -m source");
+  ASSERT_EQ(from_bvh.exit_code, 0) << from_bvh.err;
+  EXPECT_NE(from_bvh.out.find("method source (22 of 22 joints from the file's frames)"), std::string::npos) << from_bvh.out;
+  EXPECT_TRUE(std::filesystem::is_regular_file(dir / "from_bvh.fbx"));
+}
+
+TEST(ResampleSourceCli, AColladaFileIsRefusedInOneLineAndNothingIsWritten) {
+  test::TempDir dir;
+  const auto dae = dir / "walk.dae";
+  ASSERT_EQ(test::run_cli("resample '" + (test::kData / "bvh/bvhio_example.bvh").string() + "' -o '" + dae.string() +
+                          "' -q").exit_code, 0);
   const auto out = dir / "run.bvh";
-  const std::string in = (test::kData / "bvh/bvhio_example.bvh").string();
-  const test::CliResult r = test::run_cli("resample '" + in + "' -o '" + out.string() + "' -m source");
+  const test::CliResult r = test::run_cli("resample '" + dae.string() + "' -o '" + out.string() + "' -m source");
   EXPECT_NE(r.exit_code, 0);
-  EXPECT_NE(r.err.find(in + ": --method source replays FBX curves; this is a 'bvh' file"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(dae.string() + ": --method source replays a file's own motion"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("this is a 'dae' file"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 
@@ -63,7 +89,7 @@ TEST(ResampleSourceCli, KeepEveryRangeAndLoopAreUsageErrorsWithSource) {
     const test::CliResult r =
         test::run_cli("resample '" + in + "' -o '" + (dir / "x.bvh").string() + "' -m source " + extra);
     EXPECT_EQ(r.exit_code, 2) << extra << ": " << r.err;
-    EXPECT_NE(r.err.find("--method source evaluates the file's curves"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("--method source evaluates the file's own motion"), std::string::npos) << r.err;
   }
 }
 

@@ -123,13 +123,16 @@ def test_render_draws_the_files_own_curves_as_the_command_does(tmp_path):
     assert (tmp_path / "slerp2" / names[0]).read_bytes() != (tmp_path / "py" / names[0]).read_bytes()
 
 
-def test_render_source_needs_a_file_with_curves(tmp_path):
+def test_render_source_needs_a_file_with_motion_of_its_own(tmp_path):
     if not hasattr(rotinterp._rotinterp, "render"):
         pytest.skip("built without the renderer")
-    with pytest.raises(ValueError, match="give the FBX file's path"):
-        rotinterp.render(rotinterp.read_clip(SAMPLES / "walk.bvh"), tmp_path, methods=["source"])
-    with pytest.raises(ValueError, match="walk.bvh"):
-        rotinterp.render(SAMPLES / "walk.bvh", tmp_path, methods=["slerp", "source"])
+    walk = rotinterp.read_clip(SAMPLES / "walk.bvh")
+    with pytest.raises(ValueError, match="give the file's path"):
+        rotinterp.render(walk, tmp_path, methods=["source"])
+    # Collada keeps no curves or samplers that source replays (a BVH's source is its frames).
+    rotinterp.write_clip(walk, tmp_path / "walk.dae")
+    with pytest.raises(ValueError, match="walk.dae"):
+        rotinterp.render(tmp_path / "walk.dae", tmp_path / "out", methods=["slerp", "source"])
 
 
 def largest_pause_of_another_thread(call):

@@ -69,14 +69,19 @@ TEST(RenderSource, TheSourcePanelIsTheFilesPoseAtItsKeysAndNotSlerpsBetweenKeepE
   EXPECT_GT(slerp_worst, 1.0);
 }
 
-TEST(RenderSource, AFileWithoutCurvesIsRefusedInOneLineNamingItAndNothingIsWritten) {
-  const fs::path dir = test::fresh_dir("source_bvh");
-  const auto r = test::run_cli("render " + kWalk + " -m source -o " + dir.string() + " --size 160x90 -q");
+// Collada: no curves, samplers or frames of its own that we replay (io/source_motion.h).
+TEST(RenderSource, AFileWithNoMotionToReplayIsRefusedInOneLineNamingItAndNothingIsWritten) {
+  const fs::path dae_dir = test::fresh_dir("source_dae_input");
+  const std::string dae = (dae_dir / "walk.dae").string();
+  ASSERT_EQ(test::run_cli("resample " + kWalk + " -o " + dae + " -q").exit_code, 0);
+  const fs::path dir = test::fresh_dir("source_dae");
+  const auto r = test::run_cli("render " + dae + " -m source -o " + dir.string() + " --size 160x90 -q");
   EXPECT_NE(r.exit_code, 0);
-  EXPECT_NE(r.err.find(kWalk), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(dae + ": --method source replays a file's own motion"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("source"), std::string::npos) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   EXPECT_FALSE(fs::exists(dir));
+  fs::remove_all(dae_dir);
 }
 
 TEST(RenderSource, SourceIsListedApartFromTheRegistryAndNeedsTheFilesMotion) {

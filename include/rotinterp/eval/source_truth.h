@@ -1,4 +1,5 @@
-// The FBX file's own curves as the truth of eval (eval --truth source).
+// The file's own motion as the truth of eval (eval --truth source): FBX curves, glTF
+// animation samplers, BVH frames (io/source_motion.h).
 #pragma once
 
 #include "rotinterp/clip/clip.h"
@@ -9,12 +10,12 @@
 
 namespace rotinterp {
 
-// Reads `clip_file` again with its curves (io/fbx_source.h; the take named like
-// the clip, else the first) and returns, at any time, each joint's local rotation
-// from the curves where its node has rotation curves, else the clip's own track
-// (sampled as the reference always is); translations are the clip's tracks, or the
-// joints' offsets. Errors (one line, naming the file): as read_source_clip and
-// fbx_joint_curves, or a second read whose joints differ from the clip's.
+// Reads `clip_file` again with its own motion (read_file_source; the animation named
+// like the clip, else the first) and returns, at any time, each joint's local rotation
+// from that motion where the file has it, else the clip's own track (sampled as the
+// reference always is); translations are the clip's tracks, or the joints' offsets.
+// Errors (one line, naming the file): as read_file_source, or a second read whose
+// joints differ from the clip's.
 Result<TruthFn> source_truth(const std::string& clip_file, const Clip& clip);
 
 }  // namespace rotinterp

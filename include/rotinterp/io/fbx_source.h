@@ -14,6 +14,7 @@
 #include "rotinterp/io/fbx_curves.h"
 #include "rotinterp/io/fbx_transform.h"
 #include "rotinterp/io/read.h"
+#include "rotinterp/io/source_motion.h"
 
 #include <array>
 #include <cstddef>
@@ -26,11 +27,7 @@
 
 namespace rotinterp {
 
-// What --method takes for it; not a method of the registry (interp/interpolator.h):
-// it needs the file's curves, not a joint's keys.
-inline constexpr const char* kSourceMethodName = "source";
-// Whether `name` is kSourceMethodName, ignoring ASCII case.
-bool is_source_method(const std::string& name);
+struct ClipFileInfo;  // io/info.h
 
 // A clip read with its curves (ReadOptions::read_curves): the baked clip assimp
 // gives, and the take of the selected animation.
@@ -44,6 +41,8 @@ struct SourceClip {
 // Errors (one line naming the file): not an FBX file, a file without an animation
 // stack, and every error read_clip() gives.
 Result<SourceClip> read_source_clip(const std::filesystem::path& path, const ReadOptions& options);
+// The same from a file already read with ReadOptions::read_curves (inspect_clip).
+Result<SourceClip> source_clip_of(ClipFileInfo&& info, const std::string& label);
 
 // The node and animated properties of one joint (model nullptr: the joint has
 // no rotation curves, or is kept).
@@ -60,16 +59,13 @@ Result<std::vector<FbxJointCurves>> fbx_joint_curves(const Clip& clip, const Sou
 // The FBX time (ticks) of clip time t: the take's span start (fbx_take_span) + t.
 double fbx_source_ticks(const SourceClip& source, double t);
 
-// The file's own motion: joint j's local rotation at clip time t, evaluated from its
-// curves where it has them and sampled from `source.clip`'s keys elsewhere (as eval
-// --truth source reads it; render -m source draws it). Errors as fbx_joint_curves's.
-using SourceMotion = std::function<Quat(std::size_t joint, double t)>;
+// The file's own motion (io/source_motion.h): joint j's local rotation at clip time t,
+// evaluated from its curves where it has them (FileSource::own) and sampled from
+// `source.clip`'s keys elsewhere (as eval --truth source reads it; render -m source
+// draws it). Errors as fbx_joint_curves's.
+Result<FileSource> fbx_file_source(std::shared_ptr<const SourceClip> source, const std::string& label);
+// Its motion alone.
 Result<SourceMotion> source_motion(std::shared_ptr<const SourceClip> source, const std::string& label);
-
-// The clip of `path` as read_source_clip() reads it, and its own motion (source_motion)
-// into `motion`: what render -m source draws beside the methods. Errors as theirs.
-Result<Clip> read_clip_with_source_motion(const std::filesystem::path& path, const ReadOptions& options,
-                                          SourceMotion& motion);
 
 // Replaces every rotation key of each joint of `clip` whose node has Lcl Rotation
 // curves in `source`'s take with the curves' value at the key's time (clip time t

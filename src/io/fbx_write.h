@@ -8,7 +8,7 @@
 //    rotations are baked: no PreRotation is written, Lcl Rotation carries the whole
 //    local rotation, so every reader composes the same transform;
 //  * one AnimationStack and AnimationLayer spanning exactly the clip's first to last
-//    key; `GlobalSettings` with the clip's rate (TimeMode where FBX has a mode for
+//    key (several takes: one stack and layer per take, each spanning its own keys); `GlobalSettings` with the clip's rate (TimeMode where FBX has a mode for
 //    it, else custom + CustomFrameRate), Y up, Z front, X right (right-handed,
 //    as BVH), UnitScaleFactor = centimetres per clip unit (100 × metres per unit);
 //  * per joint an AnimationCurveNode "R" (and "T" where the joint has a translation
@@ -82,9 +82,27 @@ Result<std::string> encode_fbx(const Clip& clip, FbxEncoding encoding);
 // not match its joints.
 Result<std::string> encode_fbx_curves(const Clip& clip, const std::vector<FbxOutJoint>& curves, FbxEncoding encoding);
 
+// One take as written: its AnimationStack's name and its curves (one per joint).
+struct FbxOutTake {
+  std::string name;
+  std::vector<FbxOutJoint> curves;
+};
+// The FBX file of `clip`'s skeleton and unit with these takes (each some rotation
+// curve with keys on every joint; every take's joints in the first take's rotation
+// orders, and its node properties the first take's), in order, the first the active
+// one; each stack spans its own curves' first to last key. TimeMode states `rate`,
+// none (0) without one: takes at different rates leave it to each take's key grid.
+Result<std::string> encode_fbx_takes(const Clip& clip, const std::vector<FbxOutTake>& takes,
+                                     const std::optional<Rate>& rate, FbxEncoding encoding);
+// The FBX file of several takes of one skeleton (io/write.h write_clips: named,
+// unique, same skeleton, checked there), each keyed from its own t = 0.
+Result<std::string> encode_fbx_clips(const std::vector<Clip>& takes, FbxEncoding encoding);
+
 // The writer's curves for `clip` (valid): a linear key at every key time of the clip
-// (the union over all joints), Euler angles each nearest the previous key's.
+// (the union over all joints), Euler angles each nearest the previous key's, in each
+// joint's fbx_joint_axes order, or in `axes` (one per joint) where given.
 std::vector<FbxOutJoint> fbx_frame_curves(const Clip& clip);
+std::vector<FbxOutJoint> fbx_frame_curves(const Clip& clip, const std::vector<EulerAxes>& axes);
 
 // The joint's rotation order as written: its BVH rotation channels where they are
 // three different axes, else FBX's default XYZ.

@@ -77,12 +77,18 @@ int fbx_time_mode(std::int64_t num, std::int64_t den) {
 }
 
 std::vector<FbxOutJoint> fbx_frame_curves(const Clip& clip) {
+  std::vector<EulerAxes> axes(clip.skeleton.joints.size());
+  for (std::size_t j = 0; j < axes.size(); ++j) axes[j] = fbx_joint_axes(clip, j);
+  return fbx_frame_curves(clip, axes);
+}
+
+std::vector<FbxOutJoint> fbx_frame_curves(const Clip& clip, const std::vector<EulerAxes>& axes) {
   const std::vector<double> times = all_key_times(clip);
   const std::vector<std::int64_t> ticks = fbx_ticks(times, clip_rate(clip));
   std::vector<FbxOutJoint> out(clip.skeleton.joints.size());
   for (std::size_t j = 0; j < out.size(); ++j) {
     FbxOutJoint& joint = out[j];
-    joint.axes = fbx_joint_axes(clip, j);
+    joint.axes = axes[j];
     // Angle i of a sequence turns about axis axes[i]; FBX stores them by axis (X, Y, Z).
     Vec3 previous = Vec3::Zero();
     for (std::size_t k = 0; k < times.size(); ++k) {
@@ -105,6 +111,27 @@ std::vector<FbxOutJoint> fbx_frame_curves(const Clip& clip) {
 Result<std::string> encode_fbx(const Clip& clip, FbxEncoding encoding) {
   if (Status s = clip.validate(); !s) return s.failure("cannot write an invalid clip: ");
   return encode_fbx_curves(clip, fbx_frame_curves(clip), encoding);
+}
+
+Result<std::string> encode_fbx_clips(const std::vector<Clip>& takes, FbxEncoding encoding) {
+  if (takes.empty()) return make_error("no takes to write");
+  const Clip& first = takes.front();
+  std::vector<EulerAxes> axes(first.skeleton.joints.size());
+  for (std::size_t j = 0; j < axes.size(); ++j) axes[j] = fbx_joint_axes(first, j);
+  std::optional<Rate> rate = clip_rate(first);
+  std::vector<FbxOutTake> out;
+  for (const Clip& take : takes) {
+    if (Status s = take.validate(); !s) return s.failure("take '" + take.name + "': cannot write an invalid clip: ");
+    if (clip_rate(take) != rate) rate.reset();  // TimeMode then states none: each take keeps its own grid
+    out.push_back({take.name, fbx_frame_curves(take, axes)});
+  }
+  // A joint's rest translation is shifted off its parent's axis only where it is keyed
+  // in every take (fbx_rest.h): a take without its keys holds the rest value.
+  Clip skeleton = first;
+  for (const Clip& take : takes)
+    for (std::size_t j = 0; j < take.translations.size(); ++j)
+      if (!take.translations[j]) skeleton.translations[j].reset();
+  return encode_fbx_takes(skeleton, out, rate, encoding);
 }
 
 }  // namespace rotinterp

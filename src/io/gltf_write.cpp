@@ -144,38 +144,16 @@ Result<std::vector<OwnSampler>> own_samplers(Builder& b, const Clip& clip, std::
   return out;
 }
 
-Result<Document> build(const Clip& clip, const GltfKeys& keys) {
-  if (Status s = clip.validate(); !s) return s.failure("cannot write an invalid clip: ");
-  const Skeleton& sk = clip.skeleton;
-  const std::size_t n = sk.joints.size();
-  if ((keys.cubic_rotations || keys.cubic_translations) && !keys.own_times)
-    return make_error("CUBICSPLINE samplers need each track at its own key times");
+// One animation: per joint its rotation sampler (and translation sampler), its
+// samplers' accessors appended to the buffer in joint order.
+Result<nlohmann::json> animation(Builder& b, const Clip& clip, const GltfKeys& keys) {
   const std::vector<double> times = keys.own_times ? std::vector<double>{} : all_key_times(clip);
   // glTF's unit is the metre: translations are converted with the clip's unit scale
   // (an FBX in centimetres keeps its real size; BVH, which has none, is taken as is).
   const double metres = metres_per_unit(clip);
-  Builder b;
-
   const int input = keys.own_times ? -1 : time_accessor(b, times);
-  std::size_t start = 0;
-
-  nlohmann::json nodes = nlohmann::json::array(), roots = nlohmann::json::array();
   nlohmann::json samplers = nlohmann::json::array(), channels = nlohmann::json::array();
-  std::vector<nlohmann::json> children(n, nlohmann::json::array());
-  for (std::size_t j = 0; j < n; ++j) {
-    const int p = sk.joints[j].parent;
-    if (p < 0) roots.push_back(j);
-    else children[static_cast<std::size_t>(p)].push_back(j);
-  }
-  for (std::size_t j = 0; j < n; ++j) {
-    const Joint& joint = sk.joints[j];
-    const Quat r = joint.rest_rotation.normalized();
-    nlohmann::json node = {{"name", joint.name},
-                           {"translation", {joint.offset.x() * metres, joint.offset.y() * metres, joint.offset.z() * metres}},
-                           {"rotation", {r.x(), r.y(), r.z(), r.w()}}};
-    if (!children[j].empty()) node["children"] = children[j];
-    nodes.push_back(node);
-
+  for (std::size_t j = 0; j < clip.skeleton.joints.size(); ++j) {
     auto channel = [&](int output, const char* path, int in = -1, const char* interpolation = "LINEAR") {
       samplers.push_back({{"input", in < 0 ? input : in}, {"output", output}, {"interpolation", interpolation}});
       channels.push_back({{"sampler", samplers.size() - 1}, {"target", {{"node", j}, {"path", path}}}});
@@ -186,7 +164,7 @@ Result<Document> build(const Clip& clip, const GltfKeys& keys) {
       for (const OwnSampler& o : *own) channel(o.output, o.path, o.input, o.interpolation);
       continue;
     }
-    start = b.bin.size();
+    std::size_t start = b.bin.size();
     // Sign-continuous keys (the clip's tracks are): no reader takes the long way round.
     Quat previous = sample_rotation(clip.rotations[j], times.front());
     for (double t : times) {
@@ -205,7 +183,46 @@ Result<Document> build(const Clip& clip, const GltfKeys& keys) {
       channel(b.accessor(start, times.size(), "VEC3"), "translation");
     }
   }
-  start = b.bin.size();
+  return nlohmann::json{{"name", clip.name.empty() ? std::string("clip") : clip.name}, {"samplers", samplers}, {"channels", channels}};
+}
+
+// The document of the takes' skeleton (the first's: every take has it) with one
+// animation per take, in order.
+Result<Document> build(const std::vector<const Clip*>& takes, const GltfKeys& keys) {
+  for (const Clip* take : takes)
+    if (Status s = take->validate(); !s)
+      return s.failure(takes.size() > 1 ? "take '" + take->name + "': cannot write an invalid clip: " : "cannot write an invalid clip: ");
+  const Clip& clip = *takes.front();
+  const Skeleton& sk = clip.skeleton;
+  const std::size_t n = sk.joints.size();
+  if ((keys.cubic_rotations || keys.cubic_translations) && !keys.own_times)
+    return make_error("CUBICSPLINE samplers need each track at its own key times");
+  const double metres = metres_per_unit(clip);
+  Builder b;
+
+  nlohmann::json nodes = nlohmann::json::array(), roots = nlohmann::json::array();
+  std::vector<nlohmann::json> children(n, nlohmann::json::array());
+  for (std::size_t j = 0; j < n; ++j) {
+    const int p = sk.joints[j].parent;
+    if (p < 0) roots.push_back(j);
+    else children[static_cast<std::size_t>(p)].push_back(j);
+  }
+  for (std::size_t j = 0; j < n; ++j) {
+    const Joint& joint = sk.joints[j];
+    const Quat r = joint.rest_rotation.normalized();
+    nlohmann::json node = {{"name", joint.name},
+                           {"translation", {joint.offset.x() * metres, joint.offset.y() * metres, joint.offset.z() * metres}},
+                           {"rotation", {r.x(), r.y(), r.z(), r.w()}}};
+    if (!children[j].empty()) node["children"] = children[j];
+    nodes.push_back(node);
+  }
+  nlohmann::json animations = nlohmann::json::array();
+  for (const Clip* take : takes) {
+    Result<nlohmann::json> a = animation(b, *take, keys);
+    if (!a) return takes.size() > 1 ? a.failure("take '" + take->name + "': ") : a.failure();
+    animations.push_back(std::move(*a));
+  }
+  const std::size_t start = b.bin.size();
   for (double v : rest_world_inverse(sk, metres)) put_float(b.bin, v);
   const int ibm = b.accessor(start, n, "MAT4");
 
@@ -220,7 +237,7 @@ Result<Document> build(const Clip& clip, const GltfKeys& keys) {
       {"scenes", {{{"nodes", roots}}}},
       {"nodes", nodes},
       {"skins", {skin}},
-      {"animations", {{{"name", clip.name.empty() ? std::string("clip") : clip.name}, {"samplers", samplers}, {"channels", channels}}}},
+      {"animations", animations},
       {"buffers", {buffer}},
       {"bufferViews", b.views},
       {"accessors", b.accessors}};
@@ -250,8 +267,14 @@ std::optional<std::filesystem::path> previous_buffer(const std::filesystem::path
 }  // namespace
 
 Status write_gltf(const Clip& clip, const std::filesystem::path& path, bool binary, const GltfKeys& keys) {
+  return write_gltf(std::vector<const Clip*>{&clip}, path, binary, keys);
+}
+
+Status write_gltf(const std::vector<const Clip*>& takes, const std::filesystem::path& path, bool binary,
+                  const GltfKeys& keys) {
   const std::string label = path.string();
-  Result<Document> doc = build(clip, keys);
+  if (takes.empty()) return make_error(label + ": no takes to write");
+  Result<Document> doc = build(takes, keys);
   if (!doc) return doc.failure(label + ": ");
   if (binary) {
     std::string json = doc->json.dump();

@@ -4,7 +4,7 @@
 //    roots are the scene's nodes;
 //  * one skin over all joints, inverse bind matrices from the rest pose, so that
 //    readers (Blender) build an armature;
-//  * one animation: per joint a rotation channel (and a translation channel where
+//  * one animation (several takes: one per take, write_clips): per joint a rotation channel (and a translation channel where
 //    the joint has a translation track), LINEAR, keys at every key time of the clip
 //    (the union over all joints), times as the float nearest start + k/rate.
 // Translations are in clip units (glTF means metres; BVH has no unit).
@@ -17,6 +17,7 @@
 #include "rotinterp/core/result.h"
 
 #include <filesystem>
+#include <vector>
 
 namespace rotinterp {
 
@@ -29,5 +30,9 @@ struct GltfKeys {
   bool cubic_translations = false; // CUBICSPLINE translations (Steffen cubic), else LINEAR
 };
 Status write_gltf(const Clip& clip, const std::filesystem::path& path, bool binary, const GltfKeys& keys = {});
+// Several takes of one skeleton (the first's; io/write.h write_clips checks that
+// every take has it): one animation per take, named by Clip::name, in order.
+Status write_gltf(const std::vector<const Clip*>& takes, const std::filesystem::path& path, bool binary,
+                  const GltfKeys& keys = {});
 
 }  // namespace rotinterp

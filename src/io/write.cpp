@@ -1,4 +1,5 @@
-// write_clip: BVH, FBX and glTF/GLB by our writers, Collada through assimp's exporter.
+// write_clip: BVH, FBX and glTF/GLB by our writers, Collada through assimp's exporter;
+// write_clips: several takes of one skeleton into one FBX or glTF/GLB.
 #include "rotinterp/io/write.h"
 
 #include "rotinterp/io/atomic_file.h"
@@ -6,8 +7,12 @@
 #include "export.h"
 #include "fbx_write.h"
 #include "gltf_write.h"
+#include "key_times.h"
 
+#include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <set>
 
 namespace rotinterp {
 
@@ -17,6 +22,58 @@ std::string lower_extension(const std::filesystem::path& path) {
   std::string ext = path.extension().string();
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return ext;
+}
+
+// Skeletons compare within this: offsets relative to max(1, |offset|) in clip units,
+// rest rotations as sin(half the angle between them), units relative.
+constexpr double kSameSkeletonTolerance = 1e-9;
+
+bool near(double a, double b) { return std::abs(a - b) <= kSameSkeletonTolerance * std::max(1.0, std::abs(a)); }
+
+// Why `b`'s skeleton is not `a`'s, or "" when it is the same.
+std::string skeleton_difference(const Clip& a, const Clip& b) {
+  const auto& ja = a.skeleton.joints;
+  const auto& jb = b.skeleton.joints;
+  if (ja.size() != jb.size()) return std::to_string(jb.size()) + " joints, the first take has " + std::to_string(ja.size());
+  for (std::size_t j = 0; j < ja.size(); ++j) {
+    const std::string which = "joint " + std::to_string(j) + " ('" + jb[j].name + "')";
+    if (ja[j].name != jb[j].name) return which + " is '" + ja[j].name + "' in the first take";
+    if (ja[j].parent != jb[j].parent) return which + " has another parent than in the first take";
+    for (int c = 0; c < 3; ++c)
+      if (!near(ja[j].offset[c], jb[j].offset[c])) return which + " has another offset than in the first take";
+    if ((ja[j].rest_rotation.conjugate() * jb[j].rest_rotation).vec().norm() > kSameSkeletonTolerance)
+      return which + " has another rest rotation than in the first take";
+  }
+  if (!near(a.unit.metres_per_unit, b.unit.metres_per_unit)) return "another unit than the first take";
+  return "";
+}
+
+// The take keyed from t = 0: every track's times moved back by its first key time.
+Clip from_time_zero(const Clip& take) {
+  const std::vector<double> times = all_key_times(take);
+  if (times.empty() || times.front() == 0.0) return take;
+  Clip out = take;
+  const double t0 = times.front();
+  for (RotationTrack& r : out.rotations)
+    for (double& t : r.times) t -= t0;
+  for (auto& tr : out.translations)
+    if (tr)
+      for (double& t : tr->times) t -= t0;
+  return out;
+}
+
+// "Take N" for an empty name, " 2", " 3", … after a name already taken.
+std::vector<std::string> unique_take_names(const std::vector<Clip>& takes) {
+  std::vector<std::string> names;
+  std::set<std::string> used;
+  for (std::size_t i = 0; i < takes.size(); ++i) {
+    const std::string base = takes[i].name.empty() ? "Take " + std::to_string(i + 1) : takes[i].name;
+    std::string name = base;
+    for (int k = 2; used.count(name); ++k) name = base + " " + std::to_string(k);
+    used.insert(name);
+    names.push_back(name);
+  }
+  return names;
 }
 
 }  // namespace
@@ -51,6 +108,45 @@ Status write_clip(const Clip& clip, const std::filesystem::path& path, const Wri
     return make_error(label + ": cannot write '" + (ext.empty() ? std::string("(no extension)") : ext) +
                       "' files; use .bvh, .fbx, .gltf, .glb or .dae");
   return export_with_assimp(clip, path, *format);
+}
+
+Status write_clips(const std::vector<Clip>& takes, const std::filesystem::path& path, const WriteOptions& options) {
+  const std::string label = path.string();
+  const std::string ext = lower_extension(path);
+  const bool fbx = ext == ".fbx", gltf = ext == ".glb" || ext == ".gltf";
+  if (!fbx && !gltf) {
+    if (!can_write_format(path))
+      return make_error(label + ": cannot write '" + (ext.empty() ? std::string("(no extension)") : ext) +
+                        "' files with several takes; use .fbx, .gltf or .glb");
+    return make_error(label + ": a " + ext + " file holds one take; put {anim} in the output name to write one file per take");
+  }
+  if (takes.empty()) return make_error(label + ": no takes to write");
+  const std::vector<std::string> names = unique_take_names(takes);
+  std::vector<Clip> named;
+  named.reserve(takes.size());
+  for (std::size_t i = 0; i < takes.size(); ++i) {
+    if (i > 0)
+      if (const std::string why = skeleton_difference(takes.front(), takes[i]); !why.empty())
+        return make_error(label + ": take '" + names[i] + "' has another skeleton than take '" + names[0] + "': " + why);
+    named.push_back(from_time_zero(takes[i]));
+    named.back().name = names[i];
+  }
+  const auto with_meshes = std::find_if(takes.begin(), takes.end(), [](const Clip& c) { return c.source_meshes > 0; });
+  if (with_meshes != takes.end() && options.on_warning)
+    options.on_warning(label + ": the source's " + std::to_string(with_meshes->source_meshes) +
+                       " mesh(es) and their skins are not written, only the skeleton and its motion");
+  if (gltf) {
+    std::vector<const Clip*> pointers;
+    for (const Clip& c : named) pointers.push_back(&c);
+    return write_gltf(pointers, path, ext == ".glb",
+                      GltfKeys{options.gltf_own_key_times, options.gltf_cubic_rotations, options.gltf_cubic_translations});
+  }
+  Result<std::string> bytes = encode_fbx_clips(named, options.fbx_ascii ? FbxEncoding::ascii : FbxEncoding::binary);
+  if (!bytes) return bytes.failure(label + ": ");
+  return write_file_atomically(path, [&](std::ostream& out) -> Status {
+    out.write(bytes->data(), static_cast<std::streamsize>(bytes->size()));
+    return Ok{};
+  });
 }
 
 }  // namespace rotinterp

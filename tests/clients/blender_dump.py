@@ -3,7 +3,8 @@
 # importer, default options, and dumps what a user sees: the armatures, the
 # scene's frame rate, the bones Blender connected, and at each key of the
 # armature's action (with its clip time) every bone's world head and the origin of
-# every armature and empty object (FBX Nulls that Blender did not make bones).
+# every armature and empty object (FBX Nulls that Blender did not make bones);
+# every action's name, and where there are several (takes), each one's keys.
 # A BVH is imported at global_scale 0.01, centimetres (`FILE@SCALE` sets another).
 import builtins
 import json
@@ -104,6 +105,21 @@ for spec in files:
         r["times"] = [(k - first_frame) / fps for k in sorted(keys)]
         r["positions"] = frames
         r["object_positions"] = origins
+        # Every action the import made (FBX: one per stack; glTF: one per animation)
+        # and, where there are several, the bone heads at each key of each, played
+        # on the armature in turn.
+        r["actions"] = [a.name for a in bpy.data.actions]
+        if len(bpy.data.actions) > 1 and arm.animation_data:
+            r["action_keys"] = {}
+            for a in bpy.data.actions:
+                arm.animation_data.action = a
+                keys = sorted({round(k.co[0], 6) for fc in a.fcurves for k in fc.keyframe_points})
+                heads = []
+                for key in keys:
+                    whole = int(key // 1)
+                    scene.frame_set(whole, subframe=key - whole)
+                    heads.append([list(arm.matrix_world @ b.head) for b in arm.pose.bones])
+                r["action_keys"][a.name] = {"times": [(k - first_frame) / fps for k in keys], "positions": heads}
     results[spec] = r
 with open(out_path, "w") as f:
     json.dump(results, f)

@@ -49,6 +49,10 @@ std::vector<BlenderImport> blender_imports(const std::vector<std::string>& files
     if (r.contains("times")) b.times = r["times"].get<std::vector<double>>();
     if (r.contains("positions")) b.heads = points(r["positions"]);
     if (r.contains("object_positions")) b.origins = points(r["object_positions"]);
+    b.actions = strings(r, "actions");
+    if (r.contains("action_keys"))
+      for (const auto& [name, keys] : r["action_keys"].items())
+        b.action_keys[name] = {keys.at("times").get<std::vector<double>>(), points(keys.at("positions"))};
     out.push_back(std::move(b));
   }
   return out;

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,13 @@ struct BlenderImport {
   std::vector<std::vector<Vec3>> heads;  // [key][bone], world, metres
   std::vector<std::string> objects;      // armature and empty objects (FBX Nulls)
   std::vector<std::vector<Vec3>> origins;  // [key][object], their FBX node origins, metres
+  std::vector<std::string> actions;        // every action's name, as Blender made them
+  // Where there are several actions (takes): each one played on the armature, its keys.
+  struct ActionKeys {
+    std::vector<double> times;             // s
+    std::vector<std::vector<Vec3>> heads;  // [key][bone], world, metres
+  };
+  std::map<std::string, ActionKeys> action_keys;
 };
 
 // Runs Blender once on `files` (a BVH may end in "@SCALE", its global_scale;

@@ -1,5 +1,5 @@
 // Writing clips: BVH, FBX and glTF/GLB by writers of our own, Collada through
-// assimp's exporter. The format follows the extension of the path. Every write is
+// assimp's exporter; several takes into one FBX or glTF/GLB (write_clips). The format follows the extension of the path. Every write is
 // atomic (see io/atomic_file.h).
 #pragma once
 
@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace rotinterp {
 
@@ -41,6 +42,22 @@ struct WriteOptions {
 // Atomic (io/atomic_file.h), missing folders created; an error about the output has
 // ErrorKind::cannot_write and names the file or folder.
 Status write_clip(const Clip& clip, const std::filesystem::path& path, const WriteOptions& options = {});
+
+// Writes several takes of one skeleton into one file: FBX (one AnimationStack and
+// AnimationLayer per take, named by its Clip::name) or glTF/GLB (one animation per
+// take, named). Every take is keyed from its own t = 0 (a take whose first key lies
+// later is moved back by it): in FBX every stack's LocalStart/ReferenceStart is 0 and
+// its LocalStop/ReferenceStop its own duration, all on one timeline from 0. TimeMode
+// states the takes' rate where they share one, else none (each take's keys keep
+// their own grid, which readers infer). The file's first take is the active one.
+// Names: an empty name becomes "Take N" (N its place, from 1); a name already used
+// gets " 2", " 3", … Every take must have the first's skeleton (joint names,
+// parents, offsets and rest rotations within 1e-9, and its unit), else a one-line
+// error naming the take that differs. Single-take formats (BVH, CSV, Collada) are
+// refused ("FILE: a .bvh file holds one take; put {anim} in the output name to write
+// one file per take"). Atomic like write_clip: the previous file stays whole on error.
+// write_clip of one clip writes the same bytes as before (take name "clip" if empty).
+Status write_clips(const std::vector<Clip>& takes, const std::filesystem::path& path, const WriteOptions& options = {});
 
 // Whether write_clip writes the format named by `path`'s extension (any case), so
 // that callers can reject an output name before doing the work.

@@ -229,7 +229,7 @@ void add_eval_command(CLI::App& app, int& exit_code) {
                                 "motion as resample --method source replays it (an FBX file's rotation curves, a "
                                 "glTF file's animation samplers, a BVH's frames). A clip without one fails (default: off, compare with the source frames)")
                     ->expected(0, 1);
-  add_anim_option(*sub, args->anim, true);
+  add_anim_option(*sub, args->anim, "a clip per take, named FILE#TAKE");
   sub->add_option("--min-frames", args->min_frames,
                   "Skip clips with fewer frames (listed); spacings N need at least 2N+1 frames in any case")
       ->capture_default_str()->check(CLI::Range(0LL, 1000000000LL));

@@ -333,7 +333,7 @@ void add_info_command(CLI::App& app, int& exit_code) {
                   "Clip file (BVH, FBX, glTF/GLB, Collada, … anything assimp imports); with --summary, several "
                   "files and folders (searched recursively)")
       ->required();
-  add_anim_option(*sub, args->anim, false);
+  add_anim_option(*sub, args->anim, nullptr);
   add_unit_option(*sub, args->unit);
   add_json_option(*sub, args->json);
   sub->add_flag("--summary", args->summary,

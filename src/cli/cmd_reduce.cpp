@@ -8,6 +8,7 @@
 #include "cmd_reduce.h"
 #include "common.h"
 #include "rotinterp/io/atomic_file.h"
+#include "rotinterp/io/takes.h"
 #include "rotinterp/reduce/reduce.h"
 
 #include <CLI/CLI.hpp>
@@ -105,7 +106,16 @@ int run_reduce(const ReduceArgs& a) {
       !a.output.empty() && (a.output.back() == '/' || std::filesystem::is_directory(a.output, ec));
   const bool one_file = a.inputs.size() == 1 && !std::filesystem::is_directory(a.inputs.front(), ec) &&
                         !into_directory && a.format.empty();
+  const bool several = names_several_takes(a.anim) || a.output.find(kTakePlaceholder) != std::string::npos ||
+                       a.report.find(kTakePlaceholder) != std::string::npos;
+  if (!one_file && several)
+    return fail_usage("--anim " + a.anim + " takes several takes of one input file; a folder run reads one take of each");
   if (!one_file) return run_reduce_folder(a, *setup);
+  if (several && a.output.find(kTakePlaceholder) == std::string::npos && !a.output.empty())
+    return fail_usage("--anim " + a.anim + ": reduce writes one take per file; put " + kTakePlaceholder +
+                      " in the output name (and in --report's)");
+  if (several && !a.report.empty() && a.report.find(kTakePlaceholder) == std::string::npos)
+    return fail_usage("--anim " + a.anim + ": put " + kTakePlaceholder + " in --report's name too (a report per take)");
   if (!a.shard.empty() || !a.manifest.empty() || a.skip_existing)
     return fail_usage("--shard, --manifest and --skip-existing are for folder runs (-o DIR)");
   if (!a.output.empty())
@@ -120,12 +130,27 @@ int run_reduce(const ReduceArgs& a) {
     if (!out.empty())
       if (Status s = check_not_an_input(out); !s) return fail(s.error());
 
-  ReduceFileOptions o;
-  o.output = a.output;
-  o.report = a.report;
-  o.show_progress = !a.quiet;
-  ReduceFileRun run;
-  if (Status s = reduce_one_file(input, a, *setup, o, run); !s) return run.usage_error ? fail_usage(s.error()) : fail(s.error());
+  std::vector<TakeRef> takes = {TakeRef{0, a.anim}};
+  if (several) {
+    ReadOptions read_options;
+    read_options.unit = setup->unit_m;
+    read_options.on_warning = warn;
+    auto chosen = select_takes(input, a.anim, read_options);
+    if (!chosen) return fail(chosen.error());
+    takes = std::move(*chosen);
+  }
+  // A take each: {anim} in the output (and report) names is its name (io/takes.h).
+  for (const TakeRef& take : takes) {
+    ReduceArgs one = a;
+    if (several) one.anim = std::to_string(take.index);
+    ReduceFileOptions o;
+    o.output = several ? with_take_name(a.output, take) : a.output;
+    o.report = several ? with_take_name(a.report, take) : a.report;
+    o.show_progress = !a.quiet;
+    ReduceFileRun run;
+    if (Status s = reduce_one_file(input, one, *setup, o, run); !s)
+      return run.usage_error ? fail_usage(s.error()) : fail(s.error());
+  }
   return kExitOk;
 }
 
@@ -163,7 +188,7 @@ void add_reduce_command(CLI::App& app, int& exit_code) {
                   "per-cycle offset) and the seam is one key; the output closes: each looped track's last key is its "
                   "first again, one period on.");
   add_unit_option(*sub, a->unit);
-  add_anim_option(*sub, a->anim, false);
+  add_anim_option(*sub, a->anim, "a file per take: {anim} in the output name is the take's name");
   add_quiet_option(*sub, a->quiet);
   add_jobs_option(*sub, a->jobs, "Folder runs: files reduced at once");
   add_folder_run_options(*sub, a->shard, a->skip_existing, a->format,

@@ -242,7 +242,7 @@ void add_render_command(CLI::App& app, int& exit_code) {
                   "frames drawn")
       ->default_val(1.0);
   sub->add_flag("--sheet", args->sheet, "Also write sheet.png: a row per method, a column per frame (default: off)");
-  add_anim_option(*sub, args->anim, false);
+  add_anim_option(*sub, args->anim, nullptr);
   add_unit_option(*sub, args->unit);
   sub->add_option("--colour", args->colour,
                   "error: each bone coloured by its joint's angular error (viridis, one scale per frame, shared by "

@@ -14,6 +14,7 @@
 #include "rotinterp/io/atomic_file.h"
 #include "rotinterp/io/fbx_source.h"
 #include "rotinterp/io/read.h"
+#include "rotinterp/io/takes.h"
 #include "rotinterp/io/write.h"
 
 #include <CLI/CLI.hpp>
@@ -81,9 +82,9 @@ Result<ResampleOptions> resample_options(const ResampleArgs& a) {
 
 }  // namespace
 
-Status resample_file(FileRun& run, const ResampleArgs& a, const ResampleOptions& opt,
-                     const std::function<void(const std::string&)>& stage) {
-  const auto started = std::chrono::steady_clock::now();
+Result<ResampledFile> resample_input(FileRun& run, const ResampleArgs& a, const ResampleOptions& opt,
+                                     const std::function<void(const std::string&)>& stage) {
+  run.started = std::chrono::steady_clock::now();
   ReadOptions read_options;
   read_options.animation = a.anim;
   read_options.unit = a.unit_m;
@@ -123,23 +124,38 @@ Status resample_file(FileRun& run, const ResampleArgs& a, const ResampleOptions&
     out = resample_clip(std::move(*clip), base);  // the clip is not needed after
   }
   if (!out) return out.failure(run.input + ": ");
-  std::vector<std::string> keep;  // --method-for joints keep their method
-  for (const auto& [joint, method] : opt.method_for) keep.push_back(joint);
-  if (own) {
-    run.replayed = replay_source_rotations(*out, *own, keep);
-    run.replays = own->replays;
+  ResampledFile done{std::move(*out), std::move(own), {}};
+  for (const auto& [joint, method] : opt.method_for) done.keep.push_back(joint);  // they keep their method
+  if (done.own) {
+    run.replayed = replay_source_rotations(done.clip, *done.own, done.keep);
+    run.replays = done.own->replays;
   }
-  if (a.out_unit_m) convert_unit(*out, *a.out_unit_m, "--out-unit " + a.out_unit);
-  run.output_metres_per_unit = out->unit.metres_per_unit;
-  run.output_frames = out->frame_count();
-  run.output_rate = clip_rate(*out);
+  if (a.out_unit_m) convert_unit(done.clip, *a.out_unit_m, "--out-unit " + a.out_unit);
+  run.output_metres_per_unit = done.clip.unit.metres_per_unit;
+  run.output_frames = done.clip.frame_count();
+  run.output_rate = clip_rate(done.clip);
+  return done;
+}
 
+namespace {
+
+WriteOptions resample_write_options(const ResampleArgs& a, const ResampleOptions& opt) {
   WriteOptions write_options;
   write_options.bvh_order = a.bvh_order;
   write_options.fbx_ascii = a.fbx_ascii;
   write_options.on_warning = warn;
   write_options.threads = opt.threads;
+  return write_options;
+}
+
+}  // namespace
+
+Status write_resampled(FileRun& run, const ResampledFile& done, const ResampleArgs& a, const ResampleOptions& opt,
+                       const std::function<void(const std::string&)>& stage) {
   stage("writing " + run.output.string());
+  const std::optional<FileSource>& own = done.own;
+  const Clip* out = &done.clip;
+  const std::vector<std::string>& keep = done.keep;
   Status written = Ok{};
   std::string ext = run.output.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
@@ -153,57 +169,125 @@ Status resample_file(FileRun& run, const ResampleArgs& a, const ResampleOptions&
       return Ok{};
     });
   } else {
-    written = write_clip(*out, run.output, write_options);
+    written = write_clip(*out, run.output, resample_write_options(a, opt));
   }
-  run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - run.started).count();
   return written;
 }
 
+Status resample_file(FileRun& run, const ResampleArgs& a, const ResampleOptions& opt,
+                     const std::function<void(const std::string&)>& stage) {
+  Result<ResampledFile> done = resample_input(run, a, opt, stage);
+  if (!done) return done.failure();
+  return write_resampled(run, *done, a, opt, stage);
+}
+
 namespace {
+
+// The summary line of one file's (or take's) run.
+void print_run(const FileRun& run, const std::string& input, const std::string& output, const ResampleArgs& a,
+               const ResampleOptions& opt) {
+  const std::string from = run.rate ? run.rate->to_string() + " Hz" : "unknown rate";
+  std::string how;
+  if (opt.keep_every)
+    how = fmt::format("keys every {} frame{}", *opt.keep_every, *opt.keep_every == 1 ? "" : "s");
+  else
+    how = fmt::format("{} → {} Hz", from,
+                      opt.fps        ? opt.fps->to_string()
+                      : run.rate        ? run.rate->to_string()
+                      : run.output_rate ? run.output_rate->to_string()
+                                        : "?");
+  std::string methods = opt.method;
+  if (run.replayed)
+    methods += fmt::format(" ({} of {} joints from {}{})", run.replayed, run.joints, run.replays,
+                           run.replayed < run.joints ? fmt::format(", the rest {} over the baked keys", kDefaultResampleMethod)
+                                                     : std::string());
+  if (run.copied_curves)
+    methods += fmt::format("; FBX: the curves of {} joints written back as stored (keys and tangents)", run.copied_curves);
+  if (!opt.method_for.empty()) methods += fmt::format(" (+{} per-joint override{})", opt.method_for.size(),
+                                                      opt.method_for.size() == 1 ? "" : "s");
+  fmt::print("{} → {}: {} → {} frames ({}), method {}, translation {}, {:.3f} s; unit {}{}\n", input, output,
+             run.frames, run.output_frames, how, methods, translation_interp_name(opt.translation), run.seconds,
+             describe_unit(run.unit), a.out_unit_m ? ", written in " + unit_name(*a.out_unit_m) : std::string());
+  if (!run.cycle.empty()) fmt::print("  {}\n", run.cycle);
+}
+
+// Stage names on the progress line (reading and writing long clips take seconds).
+std::function<void(const std::string&)> progress_stage(bool quiet) {
+  const bool show = !quiet && ::isatty(STDERR_FILENO);
+  return [show, quiet](const std::string& what) {
+    end_progress(quiet);
+    if (show) std::fprintf(stderr, "\r\033[K%s …", what.c_str());
+  };
+}
 
 int run_single(const ResampleArgs& a, ResampleOptions opt) {
   const std::string& input = a.inputs.front();
   protect_input(input);
   if (Status s = check_not_an_input(a.output); !s) return fail(s.error());
-  // Stage names on the progress line (reading and writing long clips take seconds).
-  const bool show = !a.quiet && ::isatty(STDERR_FILENO);
-  auto stage = [show, &a](const std::string& what) {
-    end_progress(a.quiet);
-    if (show) std::fprintf(stderr, "\r\033[K%s …", what.c_str());
-  };
   opt.progress = make_progress("resample", a.quiet, "joints");
   FileRun run;
   run.input = input;
   run.output = a.output;
-  const Status done = resample_file(run, a, opt, stage);
+  const Status done = resample_file(run, a, opt, progress_stage(a.quiet));
   end_progress(a.quiet);
   if (!done) return fail(done.error());
+  if (!a.quiet) print_run(run, input, a.output, a, opt);
+  return kExitOk;
+}
 
-  if (!a.quiet) {
-    const std::string from = run.rate ? run.rate->to_string() + " Hz" : "unknown rate";
-    std::string how;
-    if (opt.keep_every)
-      how = fmt::format("keys every {} frame{}", *opt.keep_every, *opt.keep_every == 1 ? "" : "s");
-    else
-      how = fmt::format("{} → {} Hz", from,
-                        opt.fps        ? opt.fps->to_string()
-                        : run.rate        ? run.rate->to_string()
-                        : run.output_rate ? run.output_rate->to_string()
-                                          : "?");
-    std::string methods = opt.method;
-    if (run.replayed)
-      methods += fmt::format(" ({} of {} joints from {}{})", run.replayed, run.joints, run.replays,
-                             run.replayed < run.joints ? fmt::format(", the rest {} over the baked keys", kDefaultResampleMethod)
-                                                       : std::string());
-    if (run.copied_curves)
-      methods += fmt::format("; FBX: the curves of {} joints written back as stored (keys and tangents)", run.copied_curves);
-    if (!opt.method_for.empty()) methods += fmt::format(" (+{} per-joint override{})", opt.method_for.size(),
-                                                        opt.method_for.size() == 1 ? "" : "s");
-    fmt::print("{} → {}: {} → {} frames ({}), method {}, translation {}, {:.3f} s; unit {}{}\n", input, a.output,
-               run.frames, run.output_frames, how, methods, translation_interp_name(opt.translation), run.seconds,
-               describe_unit(run.unit), a.out_unit_m ? ", written in " + unit_name(*a.out_unit_m) : std::string());
-    if (!run.cycle.empty()) fmt::print("  {}\n", run.cycle);
+// --anim all, a list of takes, or {anim} in the output name: each take resampled on
+// its own clock, then written, one file per take ({anim} filled with its name) or all
+// into one file (FBX, glTF: a take each).
+int run_takes(const ResampleArgs& a, ResampleOptions opt) {
+  const std::string& input = a.inputs.front();
+  protect_input(input);
+  const bool per_take = a.output.find(kTakePlaceholder) != std::string::npos;
+  if (!per_take && !can_write_takes(a.output))
+    return fail_usage("--anim " + a.anim + ": " + a.output + " holds one take; put " + kTakePlaceholder +
+                      " in the output name to write one file per take (or write .fbx, .glb or .gltf)");
+  ReadOptions read_options;
+  read_options.unit = a.unit_m;
+  read_options.on_warning = warn;
+  auto takes = select_takes(input, a.anim, read_options);
+  if (!takes) return fail(takes.error());
+  std::vector<FileRun> runs(takes->size());
+  for (std::size_t k = 0; k < runs.size(); ++k) {
+    runs[k].input = input;
+    runs[k].output = per_take ? with_take_name(a.output, (*takes)[k]) : a.output;
+    for (std::size_t i = 0; i < k; ++i)
+      if (per_take && runs[i].output == runs[k].output)
+        return fail(input + ": takes '" + (*takes)[i].name + "' and '" + (*takes)[k].name + "' both make " +
+                    runs[k].output.string() + "; name the takes apart, or put {anim} where they differ");
+    if (Status s = check_not_an_input(runs[k].output.string()); !s) return fail(s.error());
   }
+  // Every take is read and resampled before anything is written: a take that fails
+  // leaves no file of the others.
+  opt.progress = make_progress("resample", a.quiet, "joints");
+  const auto stage = progress_stage(a.quiet);
+  std::vector<ResampledFile> done;
+  for (std::size_t k = 0; k < runs.size(); ++k) {
+    ResampleArgs one = a;
+    one.anim = std::to_string((*takes)[k].index);
+    auto resampled = resample_input(runs[k], one, opt, stage);
+    if (!resampled) return end_progress(a.quiet), fail(resampled.error());
+    resampled->clip.name = (*takes)[k].name;
+    done.push_back(std::move(*resampled));
+  }
+  Status written = Ok{};
+  if (per_take) {
+    for (std::size_t k = 0; k < runs.size() && written; ++k) written = write_resampled(runs[k], done[k], a, opt, stage);
+  } else {
+    stage("writing " + a.output);
+    std::vector<Clip> clips;
+    for (ResampledFile& d : done) clips.push_back(std::move(d.clip));
+    written = write_clips(clips, a.output, resample_write_options(a, opt));
+  }
+  end_progress(a.quiet);
+  if (!written) return fail(written.error());
+  if (!a.quiet)
+    for (std::size_t k = 0; k < runs.size(); ++k)
+      print_run(runs[k], input + "#" + (*takes)[k].name, runs[k].output.string(), a, opt);
   return kExitOk;
 }
 
@@ -237,11 +321,14 @@ int run_resample(ResampleArgs a) {
                               (std::filesystem::is_directory(a.output, ec) && !can_write_format(a.output));
   const bool one_file = a.inputs.size() == 1 && !std::filesystem::is_directory(a.inputs.front(), ec) &&
                         !into_directory && a.format.empty();
+  if (!one_file && names_several_takes(a.anim))
+    return fail_usage("--anim " + a.anim + " takes several takes of one input file; a folder run reads one take of each");
   if (!one_file) return run_resample_folder(a, *opt);
   if (!a.shard.empty() || !a.manifest.empty() || a.skip_existing)
     return fail_usage("--shard, --manifest and --skip-existing are for folder runs (-o DIR)");
   if (!can_write_format(a.output))
     return fail_usage("output '" + a.output + "': unknown format (use .bvh, .fbx, .glb, .gltf or .dae)");
+  if (names_several_takes(a.anim) || a.output.find(kTakePlaceholder) != std::string::npos) return run_takes(a, *opt);
   return run_single(a, *opt);
 }
 
@@ -277,7 +364,7 @@ void add_resample_command(CLI::App& app, int& exit_code) {
                   "The output is one period again, closing the same way; with --fps the period keeps whole frames "
                   "(the rate is kept, the period stretched by under half a frame where needed, and the summary says "
                   "so); --keep-every takes the wrap-around neighbours.");
-  add_anim_option(*sub, a->anim, false);
+  add_anim_option(*sub, a->anim, "each resampled on its own clock; written into one .fbx, .glb or .gltf, a take each, or one file per take with {anim} in the output name");
   add_unit_option(*sub, a->unit);
   sub->add_option("--out-unit", a->out_unit,
                   "Unit of the written file: m, cm, mm, in, ft or metres per unit (default: the input's; glTF is "

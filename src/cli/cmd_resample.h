@@ -8,7 +8,9 @@
 #include "rotinterp/clip/sampling.h"
 #include "rotinterp/clip/units.h"
 #include "rotinterp/core/result.h"
+#include "rotinterp/io/source_motion.h"
 
+#include <chrono>
 #include <cstddef>
 #include <filesystem>
 #include <functional>
@@ -51,7 +53,22 @@ struct FileRun {
   std::size_t replayed = 0;  // --method source: joints evaluated from the file's own motion
   std::string replays;       // … which is (FileSource::replays): "the file's curves", …
   std::size_t copied_curves = 0;  // --method source to FBX without --fps: joints whose curves were written back
+  std::chrono::steady_clock::time_point started;
 };
+
+// A file (one take) read and resampled, before it is written.
+struct ResampledFile {
+  Clip clip;
+  std::optional<FileSource> own;  // --method source: the file's own motion
+  std::vector<std::string> keep;  // --method-for joints: they keep their method
+};
+
+// Reads and resamples one file (its take a.anim), filling `run`; `stage` names each step.
+Result<ResampledFile> resample_input(FileRun& run, const ResampleArgs& a, const ResampleOptions& opt,
+                                     const std::function<void(const std::string&)>& stage);
+// Writes it to run.output (the source's own FBX curves where they go back as stored).
+Status write_resampled(FileRun& run, const ResampledFile& done, const ResampleArgs& a, const ResampleOptions& opt,
+                       const std::function<void(const std::string&)>& stage);
 
 // Reads, resamples and writes one file, filling `run`; `stage` names each step.
 Status resample_file(FileRun& run, const ResampleArgs& a, const ResampleOptions& opt,

@@ -186,10 +186,11 @@ Result<std::optional<LoopRequest>> parse_loop_option(const std::string& text) {
   return std::optional<LoopRequest>(LoopRequest{*form});
 }
 
-CLI::Option* add_anim_option(CLI::App& sub, std::string& anim, bool all_takes) {
+CLI::Option* add_anim_option(CLI::App& sub, std::string& anim, const char* several) {
   return sub.add_option("--anim", anim,
                         std::string("Animation (take) to read: its name or 0-based index") +
-                            (all_takes ? ", or 'all' (one clip per take, named FILE#TAKE)" : "") +
+                            (several ? std::string(", 'all', or a comma list of names and indices (") + several + ")"
+                                     : std::string()) +
                             "; default the first");
 }
 

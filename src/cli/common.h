@@ -127,8 +127,9 @@ struct LoopRequest {
   std::optional<LoopForm> form;
 };
 Result<std::optional<LoopRequest>> parse_loop_option(const std::string& text);
-// --anim NAME|INDEX (with `all_takes`, also "all").
-CLI::Option* add_anim_option(CLI::App& sub, std::string& anim, bool all_takes);
+// --anim NAME|INDEX; where `several` says what several takes give, also "all" or a
+// comma list (io/takes.h).
+CLI::Option* add_anim_option(CLI::App& sub, std::string& anim, const char* several);
 // -j,--jobs N: worker threads, 0 = one per core.
 CLI::Option* add_jobs_option(CLI::App& sub, int& jobs, const std::string& what);
 // -q,--quiet: no progress and no summary; errors and warnings still print.

@@ -10,6 +10,7 @@
 #include "rotinterp/io/atomic_file.h"
 #include "rotinterp/io/info.h"
 #include "rotinterp/io/read.h"
+#include "rotinterp/io/takes.h"
 
 #include <fmt/format.h>
 
@@ -78,11 +79,14 @@ Result<std::vector<std::pair<std::string, Clip>>> read_takes(const std::string& 
                                                              std::optional<double> unit, unsigned threads) {
   ReadOptions ro;
   ro.threads = threads;
-  ro.animation = animation == "all" ? "" : animation;
+  const bool several = names_several_takes(animation);
+  ro.animation = several ? "" : animation;
   ro.unit = unit;
   auto info = inspect_clip(file, ro);
   if (!info) return info.failure();
   const std::vector<AnimationSummary>& anims = info->animations;
+  auto chosen = choose_takes(anims, several ? animation : "", file);
+  if (!chosen) return chosen.failure();
   auto id_of = [&](std::size_t a) {
     if (anims.size() <= 1) return file;
     const std::string& name = anims[a].name;
@@ -90,15 +94,17 @@ Result<std::vector<std::pair<std::string, Clip>>> read_takes(const std::string& 
     return file + "#" + (name.empty() || !unique ? std::to_string(a) : name);
   };
   std::vector<std::pair<std::string, Clip>> takes;
-  takes.emplace_back(id_of(info->selected), std::move(info->clip));
-  if (animation == "all")
-    for (std::size_t a = 0; a < anims.size(); ++a) {
-      if (a == info->selected) continue;
-      ro.animation = std::to_string(a);
-      auto clip = read_clip(file, ro);
-      if (!clip) return clip.failure(id_of(a) + ": ");
-      takes.emplace_back(id_of(a), std::move(*clip));
+  if (!several) takes.emplace_back(id_of(info->selected), std::move(info->clip));
+  for (const TakeRef& take : several ? *chosen : std::vector<TakeRef>{}) {
+    if (take.index == info->selected) {
+      takes.emplace_back(id_of(take.index), info->clip);
+      continue;
     }
+    ro.animation = std::to_string(take.index);
+    auto clip = read_clip(file, ro);
+    if (!clip) return clip.failure(id_of(take.index) + ": ");
+    takes.emplace_back(id_of(take.index), std::move(*clip));
+  }
   std::sort(takes.begin(), takes.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
   return takes;
 }

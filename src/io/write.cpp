@@ -110,11 +110,16 @@ Status write_clip(const Clip& clip, const std::filesystem::path& path, const Wri
   return export_with_assimp(clip, path, *format);
 }
 
+bool can_write_takes(const std::filesystem::path& path) {
+  const std::string ext = lower_extension(path);
+  return ext == ".fbx" || ext == ".glb" || ext == ".gltf";
+}
+
 Status write_clips(const std::vector<Clip>& takes, const std::filesystem::path& path, const WriteOptions& options) {
   const std::string label = path.string();
   const std::string ext = lower_extension(path);
-  const bool fbx = ext == ".fbx", gltf = ext == ".glb" || ext == ".gltf";
-  if (!fbx && !gltf) {
+  const bool fbx = ext == ".fbx";
+  if (!can_write_takes(path)) {
     if (!can_write_format(path))
       return make_error(label + ": cannot write '" + (ext.empty() ? std::string("(no extension)") : ext) +
                         "' files with several takes; use .fbx, .gltf or .glb");
@@ -135,7 +140,7 @@ Status write_clips(const std::vector<Clip>& takes, const std::filesystem::path& 
   if (with_meshes != takes.end() && options.on_warning)
     options.on_warning(label + ": the source's " + std::to_string(with_meshes->source_meshes) +
                        " mesh(es) and their skins are not written, only the skeleton and its motion");
-  if (gltf) {
+  if (!fbx) {  // glTF or GLB
     std::vector<const Clip*> pointers;
     for (const Clip& c : named) pointers.push_back(&c);
     return write_gltf(pointers, path, ext == ".glb",

@@ -114,12 +114,14 @@ for spec in files:
             for a in bpy.data.actions:
                 arm.animation_data.action = a
                 keys = sorted({round(k.co[0], 6) for fc in a.fcurves for k in fc.keyframe_points})
-                heads = []
+                heads, action_origins = [], []
                 for key in keys:
                     whole = int(key // 1)
                     scene.frame_set(whole, subframe=key - whole)
                     heads.append([list(arm.matrix_world @ b.head) for b in arm.pose.bones])
-                r["action_keys"][a.name] = {"times": [(k - first_frame) / fps for k in keys], "positions": heads}
+                    action_origins.append([list(node_origin(o, geom).translation) for o in nodes])
+                r["action_keys"][a.name] = {"times": [(k - first_frame) / fps for k in keys], "positions": heads,
+                                            "object_positions": action_origins}
     results[spec] = r
 with open(out_path, "w") as f:
     json.dump(results, f)

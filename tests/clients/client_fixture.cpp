@@ -27,6 +27,17 @@ std::vector<std::string> strings(const nlohmann::json& r, const char* key) {
 
 }  // namespace
 
+BlenderImport playing(const BlenderImport& b, const std::string& action) {
+  BlenderImport out = b;
+  out.times.clear(), out.heads.clear(), out.origins.clear();
+  if (const auto it = b.action_keys.find(action); it != b.action_keys.end()) {
+    out.times = it->second.times;
+    out.heads = it->second.heads;
+    out.origins = it->second.origins;
+  }
+  return out;
+}
+
 std::vector<BlenderImport> blender_imports(const std::vector<std::string>& files, const std::filesystem::path& dir) {
   const auto json = dir / "blender.json", log = dir / "blender.log";
   std::string cmd = "blender -b --factory-startup --python " + std::string(ROTINTERP_SOURCE_DIR) +
@@ -52,7 +63,8 @@ std::vector<BlenderImport> blender_imports(const std::vector<std::string>& files
     b.actions = strings(r, "actions");
     if (r.contains("action_keys"))
       for (const auto& [name, keys] : r["action_keys"].items())
-        b.action_keys[name] = {keys.at("times").get<std::vector<double>>(), points(keys.at("positions"))};
+        b.action_keys[name] = {keys.at("times").get<std::vector<double>>(), points(keys.at("positions")),
+                               points(keys.at("object_positions"))};
     out.push_back(std::move(b));
   }
   return out;

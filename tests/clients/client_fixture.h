@@ -29,11 +29,16 @@ struct BlenderImport {
   std::vector<std::string> actions;        // every action's name, as Blender made them
   // Where there are several actions (takes): each one played on the armature, its keys.
   struct ActionKeys {
-    std::vector<double> times;             // s
-    std::vector<std::vector<Vec3>> heads;  // [key][bone], world, metres
+    std::vector<double> times;               // s
+    std::vector<std::vector<Vec3>> heads;    // [key][bone], world, metres
+    std::vector<std::vector<Vec3>> origins;  // [key][object], as `origins`
   };
   std::map<std::string, ActionKeys> action_keys;
 };
+
+// `b` playing one of its actions: that action's keys as the import's own (none where
+// it has no such action).
+BlenderImport playing(const BlenderImport& b, const std::string& action);
 
 // Runs Blender once on `files` (a BVH may end in "@SCALE", its global_scale;
 // default 0.01) and returns each import by its entry in `files`.

@@ -15,18 +15,6 @@
 namespace rotinterp::test {
 namespace {
 
-Clip cut(const std::string& source, const std::string& fps, double start, double end, const std::string& name) {
-  Result<Clip> a = read_clip(kData / source);
-  EXPECT_TRUE(a) << a.error();
-  ResampleOptions o;
-  o.fps = *parse_rate(fps);
-  o.range = TimeRange{start, end};
-  Result<Clip> b = resample_clip(*a, o);
-  EXPECT_TRUE(b) << b.error();
-  b->name = name;
-  return *b;
-}
-
 // The actions Blender made for take `name`: Blender 3.4's FBX importer names them
 // "OBJECT|STACK|LAYER" ("Armature|Jump|BaseLayer"), its glTF importer "ANIMATION"
 // or "ANIMATION_OBJECT".
@@ -40,9 +28,9 @@ std::vector<std::string> actions_of(const BlenderImport& b, const std::string& n
 }
 
 TEST(BlenderTakes, EachTakeIsOneNamedActionPlayedAsTheTakeWrittenAlone) {
-  const std::vector<Clip> takes = {cut("bvh/cmu_01_01.bvh", "30", 0.0, 2.0, "Jump"),
-                                   cut("bvh/cmu_01_03.bvh", "24", 1.0, 2.5, "Climb"),
-                                   cut("bvh/cmu_01_01.bvh", "60", 3.0, 3.5, "Hop")};
+  const std::vector<Clip> takes = {cut_take("bvh/cmu_01_01.bvh", "30", 0.0, 2.0, "Jump"),
+                                   cut_take("bvh/cmu_01_03.bvh", "24", 1.0, 2.5, "Climb"),
+                                   cut_take("bvh/cmu_01_01.bvh", "60", 3.0, 3.5, "Hop")};
   const TempDir dir;
   std::vector<std::string> paths;
   for (const char* ext : {".fbx", ".glb"}) {
@@ -70,9 +58,7 @@ TEST(BlenderTakes, EachTakeIsOneNamedActionPlayedAsTheTakeWrittenAlone) {
       ASSERT_EQ(found.size(), 1u) << file << ": take " << takes[i].name << " among " << names;
       ASSERT_TRUE(many.action_keys.count(found[0])) << file;
       const BlenderImport& alone = imports[base + 1 + i];
-      BlenderImport played = many;
-      played.times = many.action_keys.at(found[0]).times;
-      played.heads = many.action_keys.at(found[0]).heads;
+      const BlenderImport played = playing(many, found[0]);
       EXPECT_EQ(played.times.size(), alone.times.size()) << file << " " << takes[i].name;
       const Deviation d = worst_deviation(played, alone);
       EXPECT_EQ(d.problem, "") << file << " " << takes[i].name;

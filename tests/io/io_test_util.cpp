@@ -1,7 +1,11 @@
 #include "io_test_util.h"
 
 #include "rotinterp/clip/bvh_layout.h"
+#include "rotinterp/clip/resample.h"
+#include "rotinterp/clip/sampling.h"
+#include "rotinterp/core/rotation.h"
 #include "rotinterp/io/fbx_nodes.h"
+#include "rotinterp/io/read.h"
 
 #include <gtest/gtest.h>
 
@@ -88,6 +92,20 @@ WorldPose pose_at(const Clip& clip, double t) {
   forward_kinematics(clip.skeleton, r, p, w);
   return w;
 }
+
+Clip cut_take(const std::string& relative, const std::string& fps, double start, double end, const std::string& name) {
+  Result<Clip> a = read_clip(kData / relative);
+  EXPECT_TRUE(a) << a.error();
+  ResampleOptions o;
+  o.fps = *parse_rate(fps);
+  o.range = TimeRange{start, end};
+  Result<Clip> b = resample_clip(*a, o);
+  EXPECT_TRUE(b) << b.error();
+  b->name = name;
+  return *b;
+}
+
+double angle_degrees(const Quat& a, const Quat& b) { return angular_distance(a, b) * 180.0 / kPi; }
 
 Clip resample_uniform(const Clip& clip, double frame_time) {
   Clip out = clip;

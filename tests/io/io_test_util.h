@@ -43,6 +43,13 @@ WorldPose pose_at(const Clip& clip, double t);
 // The clip resampled on the grid start + k·frame_time (test-side resampler).
 Clip resample_uniform(const Clip& clip, double frame_time);
 
+// Take `name`: the shared clip `relative` (under kData) cut to [start, end] s and
+// resampled at `fps` (a rate text: "30", "30000/1001").
+Clip cut_take(const std::string& relative, const std::string& fps, double start, double end, const std::string& name);
+
+// The angle between two orientations, degrees.
+double angle_degrees(const Quat& a, const Quat& b);
+
 // Largest distance between joint origins over all pairs in the clip's rest pose
 // (a skeleton size for relative tolerances).
 double skeleton_size(const Clip& clip);

@@ -18,9 +18,7 @@ namespace {
 
 constexpr double kDegreesPerRadian = 180.0 / kPi;
 
-double angle_degrees(const Quat& a, const Quat& b) {
-  return 2.0 * std::acos(std::min(1.0, std::abs(a.normalized().dot(b.normalized())))) * kDegreesPerRadian;
-}
+using test::angle_degrees;
 
 SourceClip read_source(const std::string& relative) {
   auto read = read_source_clip(test::kData / relative, {});

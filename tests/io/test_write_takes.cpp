@@ -16,29 +16,18 @@
 namespace rotinterp {
 namespace {
 
+using test::cut_take;
 using test::kData;
 
 constexpr double kDegrees = 180.0 / kPi;
-
-Clip cut(const std::string& source, const std::string& fps, double start, double end, const std::string& name) {
-  Result<Clip> a = read_clip(kData / source);
-  EXPECT_TRUE(a) << a.error();
-  ResampleOptions o;
-  o.fps = *parse_rate(fps);
-  o.range = TimeRange{start, end};
-  Result<Clip> b = resample_clip(*a, o);
-  EXPECT_TRUE(b) << b.error();
-  b->name = name;
-  return *b;
-}
 
 // Three takes of CMU subject 01's skeleton: lengths 2 s, 1.5 s (starting at 1 s in its
 // source: written from 0) and 0.5 s; rates 30, 24 and 60 Hz; two motions (01_01
 // jumps, 01_03 climbs), the last take played backwards.
 std::vector<Clip> three_takes() {
-  std::vector<Clip> takes = {cut("bvh/cmu_01_01.bvh", "30", 0.0, 2.0, "Jump"),
-                             cut("bvh/cmu_01_03.bvh", "24", 1.0, 2.5, "Climb"),
-                             cut("bvh/cmu_01_01.bvh", "60", 3.0, 3.5, "Back")};
+  std::vector<Clip> takes = {cut_take("bvh/cmu_01_01.bvh", "30", 0.0, 2.0, "Jump"),
+                             cut_take("bvh/cmu_01_03.bvh", "24", 1.0, 2.5, "Climb"),
+                             cut_take("bvh/cmu_01_01.bvh", "60", 3.0, 3.5, "Back")};
   Clip& back = takes[2];
   for (RotationTrack& r : back.rotations) std::reverse(r.keys.begin(), r.keys.end());
   for (auto& tr : back.translations)
@@ -140,7 +129,7 @@ TEST(WriteTakes, EmptyAndRepeatedNamesBecomeUnique) {
 
 TEST(WriteTakes, AnotherSkeletonIsRefusedNamingTheTakeAndTheFileStaysIntact) {
   std::vector<Clip> takes = three_takes();
-  takes[1] = cut("bvh/NC_bandai1_walk_normal_001.bvh", "30", 0.0, 1.0, "Walk");
+  takes[1] = cut_take("bvh/NC_bandai1_walk_normal_001.bvh", "30", 0.0, 1.0, "Walk");
   test::TempDir dir;
   test::write_text(dir / "out.fbx", "previous");
   for (const char* name : {"out.fbx", "out.glb"}) {
@@ -172,7 +161,7 @@ TEST(WriteTakes, SingleTakeFormatsAreRefusedWithTheWayToOneFilePerTake) {
 }
 
 TEST(WriteTakes, OneTakeWritesTheSameFbxAndGlbAsWriteClip) {
-  Clip take = cut("bvh/cmu_01_01.bvh", "30", 0.0, 1.0, "Jump");
+  Clip take = cut_take("bvh/cmu_01_01.bvh", "30", 0.0, 1.0, "Jump");
   test::TempDir dir;
   for (const char* ext : {".fbx", ".glb"}) {
     ASSERT_TRUE(write_clip(take, dir / (std::string("one") + ext)));

@@ -41,7 +41,7 @@ struct EvalOptions {
   int shard_index = 1, shard_count = 1;       // evaluate shard_of(files, index, count)
   bool plots = true;                          // write the plots (PNG and SVG)
   // Which takes of each file: empty, the first; a name or an index, that take; "all",
-  // every take. Each take evaluated is a clip of its own; in a file holding several
+  // every take; a comma list of names and indices, those (io/takes.h). Each take evaluated is a clip of its own; in a file holding several
   // takes it is named file#take (the take's name, or its index when the name is
   // empty or not unique), even when only one of them is evaluated; a file of one
   // take keeps its plain path.

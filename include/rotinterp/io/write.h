@@ -62,5 +62,7 @@ Status write_clips(const std::vector<Clip>& takes, const std::filesystem::path& 
 // Whether write_clip writes the format named by `path`'s extension (any case), so
 // that callers can reject an output name before doing the work.
 bool can_write_format(const std::filesystem::path& path);
+// Whether write_clips writes several takes into that format (FBX, glTF/GLB).
+bool can_write_takes(const std::filesystem::path& path);
 
 }  // namespace rotinterp

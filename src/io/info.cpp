@@ -1,8 +1,9 @@
 // What `rotinterp info` says of a clip beside its data: a static scene's contents, a clip's oddities.
 #include "rotinterp/io/info.h"
 
+#include "read_parts.h"
+
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -42,9 +43,7 @@ std::size_t take_frames(const AnimationSummary& take) {
 }
 
 Result<ClipFileInfo> inspect_clip_for_info(const std::filesystem::path& path, ReadOptions options) {
-  std::string ext = path.extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (options.read_curves || ext != ".fbx") return inspect_clip(path, options);
+  if (options.read_curves || extension_of(path) != "fbx") return inspect_clip(path, options);
   options.read_curves = true;
   Result<ClipFileInfo> with_curves = inspect_clip(path, options);
   if (with_curves || with_curves.error_kind() == ErrorKind::no_animation) return with_curves;

@@ -47,7 +47,7 @@ std::vector<std::string> render(const py::object& input, const std::optional<std
   const auto wh = checked(render::parse_size(size));
   o.width = wh.first;
   o.height = wh.second;
-  if (Status s = render::check_image_size(o.width, o.height, static_cast<int>(o.methods.size())); !s)
+  if (Status s = render::check_image_size(o.width, o.height, view == "side" ? static_cast<int>(o.methods.size()) : 1); !s)
     value_error("size: " + s.error());
   if (backend) {
     const render::Backend b = checked(render::parse_backend(*backend));
@@ -60,7 +60,9 @@ std::vector<std::string> render(const py::object& input, const std::optional<std
   o.trail_window = trail_window;
   if (sheet && !out_dir) value_error("sheet needs out_dir");
   o.sheet = sheet;
-  o.colouring = checked(render::parse_colouring(colour));
+  o.view = checked(render::parse_view(view));
+  if (Status s = render::check_colouring_view(o.view, colour.has_value()); !s) value_error(s.error());
+  if (colour) o.colouring = checked(render::parse_colouring(*colour));
   if (camera) o.camera = checked(render::parse_camera(*camera));
   o.focus_joint = focus;
   o.strip = strip;
@@ -91,7 +93,7 @@ std::vector<std::string> render(const py::object& input, const std::optional<std
 void bind_render(py::module_& m) {
   m.def("render", &render, py::arg("input"), py::arg("out_dir") = py::none(), py::arg("methods") = py::none(),
         py::arg("keep_every") = 10, py::arg("frames") = py::none(), py::arg("size") = "960x540",
-        py::arg("trail") = "", py::arg("trail_window") = 1.0, py::arg("sheet") = false, py::arg("colour") = "error",
+        py::arg("trail") = "", py::arg("trail_window") = 1.0, py::arg("sheet") = false, py::arg("view") = "overlay", py::arg("colour") = py::none(),
         py::arg("camera") = py::none(), py::arg("focus") = "", py::arg("strip") = true, py::arg("video") = py::none(),
         py::arg("video_fps") = 0.0, py::arg("backend") = py::none());
 }

@@ -1,6 +1,7 @@
-// font: the Latin-1 glyph atlas and the quads that draw a string.
+// font: the glyph atlas (Latin-1 and a few more) and the quads that draw a string.
 #include "font.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iterator>
@@ -17,7 +18,7 @@ Result<std::shared_ptr<const FontFile>> FontFile::load(const std::filesystem::pa
   return std::shared_ptr<const FontFile>(std::move(font));
 }
 
-std::vector<int> latin1_code_points(std::string_view s) {
+std::vector<int> glyph_indices(std::string_view s) {
   std::vector<int> out;
   for (std::size_t i = 0; i < s.size();) {
     const unsigned char c = static_cast<unsigned char>(s[i]);
@@ -28,13 +29,18 @@ std::vector<int> latin1_code_points(std::string_view s) {
     } else if ((c & 0xE0) == 0xC0 && i + 1 < s.size()) {
       cp = ((c & 0x1F) << 6) | (static_cast<unsigned char>(s[i + 1]) & 0x3F);
       len = 2;
-    } else if ((c & 0xF0) == 0xE0) {
+    } else if ((c & 0xF0) == 0xE0 && i + 2 < s.size()) {
+      cp = ((c & 0x0F) << 12) | ((static_cast<unsigned char>(s[i + 1]) & 0x3F) << 6) |
+           (static_cast<unsigned char>(s[i + 2]) & 0x3F);
       len = 3;
     } else if ((c & 0xF8) == 0xF0) {
       len = 4;
     }
-    if (cp < FontAtlas::kFirst || cp >= FontAtlas::kFirst + FontAtlas::kCount) cp = '?';
-    out.push_back(cp);
+    int glyph = '?' - FontAtlas::kFirst;
+    if (cp >= FontAtlas::kFirst && cp < FontAtlas::kFirst + FontAtlas::kCount) glyph = cp - FontAtlas::kFirst;
+    for (int e = 0; e < static_cast<int>(std::size(FontAtlas::kExtra)); ++e)
+      if (cp == FontAtlas::kExtra[e]) glyph = FontAtlas::kCount + e;
+    out.push_back(glyph);
     i += len;
   }
   return out;
@@ -44,7 +50,7 @@ Result<FontAtlas> FontAtlas::build(std::shared_ptr<const FontFile> font, int pix
   FontAtlas atlas;
   atlas.font_ = std::move(font);
   atlas.pixel_height_ = pixel_height;
-  atlas.chars_.resize(kCount);
+  atlas.chars_.resize(kGlyphs);
   // 2×2 oversampling: sharper glyphs at fractional positions. The atlas grows until
   // everything fits.
   for (int side = 128; side <= 4096; side *= 2) {
@@ -53,8 +59,17 @@ Result<FontAtlas> FontAtlas::build(std::shared_ptr<const FontFile> font, int pix
     stbtt_pack_context pack;
     if (!stbtt_PackBegin(&pack, atlas.bitmap_.data(), side, side, 0, 1, nullptr)) continue;
     stbtt_PackSetOversampling(&pack, 2, 2);
-    const int ok = stbtt_PackFontRange(&pack, atlas.font_->data.data(), 0, static_cast<float>(pixel_height), kFirst,
-                                       kCount, atlas.chars_.data());
+    int extra[std::size(kExtra)];
+    std::copy(std::begin(kExtra), std::end(kExtra), extra);
+    stbtt_pack_range ranges[2] = {};
+    ranges[0].font_size = ranges[1].font_size = static_cast<float>(pixel_height);
+    ranges[0].first_unicode_codepoint_in_range = kFirst;
+    ranges[0].num_chars = kCount;
+    ranges[0].chardata_for_range = atlas.chars_.data();
+    ranges[1].array_of_unicode_codepoints = extra;
+    ranges[1].num_chars = static_cast<int>(std::size(kExtra));
+    ranges[1].chardata_for_range = atlas.chars_.data() + kCount;
+    const int ok = stbtt_PackFontRanges(&pack, atlas.font_->data.data(), 0, ranges, 2);
     stbtt_PackEnd(&pack);
     if (ok) {
       int ascent = 0, descent = 0, gap = 0;
@@ -68,7 +83,7 @@ Result<FontAtlas> FontAtlas::build(std::shared_ptr<const FontFile> font, int pix
 
 float FontAtlas::text_width(std::string_view utf8) const {
   float width = 0;
-  for (int cp : latin1_code_points(utf8)) width += chars_[static_cast<std::size_t>(cp - kFirst)].xadvance;
+  for (int g : glyph_indices(utf8)) width += chars_[static_cast<std::size_t>(g)].xadvance;
   return width;
 }
 
@@ -78,10 +93,10 @@ std::vector<GlyphQuad> FontAtlas::layout(std::string_view utf8, float x, float b
   // identical pixels, and the text stays crisp.
   float px = std::round(x);
   float py = std::round(baseline);
-  for (int cp : latin1_code_points(utf8)) {
+  for (int g : glyph_indices(utf8)) {
     stbtt_aligned_quad q;
-    stbtt_GetPackedQuad(chars_.data(), width_, height_, cp - kFirst, &px, &py, &q, 0);
-    if (cp != ' ') quads.push_back(GlyphQuad{q.x0, q.y0, q.x1, q.y1, q.s0, q.t0, q.s1, q.t1});
+    stbtt_GetPackedQuad(chars_.data(), width_, height_, g, &px, &py, &q, 0);
+    if (g != ' ' - kFirst) quads.push_back(GlyphQuad{q.x0, q.y0, q.x1, q.y1, q.s0, q.t0, q.s1, q.t1});
   }
   return quads;
 }

@@ -11,6 +11,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <iterator>
 #include <vector>
 
 namespace rotinterp::render::detail {
@@ -32,6 +33,9 @@ class FontAtlas {
  public:
   static constexpr int kFirst = 32;   // ' '
   static constexpr int kCount = 224;  // through U+00FF
+  // Beyond Latin-1, the few the pictures write: ≥ (a saturated scale), … and —.
+  static constexpr int kExtra[] = {0x2265, 0x2026, 0x2014};
+  static constexpr int kGlyphs = kCount + static_cast<int>(std::size(kExtra));
 
   // Packs the glyphs at `pixel_height` (the font's ascent − descent in pixels).
   static Result<FontAtlas> build(std::shared_ptr<const FontFile> font, int pixel_height);
@@ -56,7 +60,8 @@ class FontAtlas {
   std::vector<stbtt_packedchar> chars_;
 };
 
-// Latin-1 code points of a UTF-8 string; anything else becomes '?'.
-std::vector<int> latin1_code_points(std::string_view utf8);
+// The atlas' glyph of each code point of a UTF-8 string: Latin-1 and kExtra; anything
+// else is '?'.
+std::vector<int> glyph_indices(std::string_view utf8);
 
 }  // namespace rotinterp::render::detail

@@ -105,23 +105,26 @@ void Batch::cylinder(const Vec3& a, const Vec3& b, double radius, double min_len
 }
 
 void add_pose(const Skeleton& skeleton, const WorldPose& pose, double radius, const Colour& colour, float alpha,
-              Batch& batch, const std::vector<Colour>& joint_colours) {
+              Batch& batch, const std::vector<Colour>& joint_colours, const std::vector<bool>& thin) {
   if (!pose_usable(pose, skeleton)) return;
   const bool per_joint = joint_colours.size() == skeleton.joints.size();
+  const bool thinning = thin.size() == skeleton.joints.size();
+  auto bone_radius = [&](std::size_t j) { return thinning && thin[j] ? kThinBone * radius : radius; };
   auto bone_colour = [&](std::size_t j) -> const Colour& { return per_joint ? joint_colours[j] : colour; };
   const double min_length = radius * 1e-3;
   for (std::size_t j = 0; j < skeleton.joints.size(); ++j) {
     const int p = skeleton.joints[j].parent;
     const auto turner = p >= 0 ? static_cast<std::size_t>(p) : j;
-    if (p >= 0) batch.cylinder(pose.position[turner], pose.position[j], radius, min_length, bone_colour(turner), alpha);
-    batch.sphere(pose.position[j], radius, bone_colour(turner), alpha);
+    if (p >= 0)
+      batch.cylinder(pose.position[turner], pose.position[j], bone_radius(turner), min_length, bone_colour(turner), alpha);
+    batch.sphere(pose.position[j], thinning && thin[j] ? kThinBone * radius : radius, bone_colour(turner), alpha);
   }
   if (pose.end_site_position.size() != skeleton.end_sites.size()) return;
   for (std::size_t e = 0; e < skeleton.end_sites.size(); ++e) {
     const auto parent = static_cast<std::size_t>(skeleton.end_sites[e].parent);
     const Vec3& b = pose.end_site_position[e];
-    batch.cylinder(pose.position[parent], b, radius, min_length, bone_colour(parent), alpha);
-    batch.sphere(b, radius, bone_colour(parent), alpha);
+    batch.cylinder(pose.position[parent], b, bone_radius(parent), min_length, bone_colour(parent), alpha);
+    batch.sphere(b, bone_radius(parent), bone_colour(parent), alpha);
   }
 }
 
@@ -145,11 +148,15 @@ void add_curve(const std::vector<Vec3>& points, std::size_t stride, double radiu
 
 void panel_figure(const Scene& scene, const Panel& panel, Batch& solid, Batch& translucent) {
   solid.clear();
-  add_pose(scene.skeleton, panel.pose, scene.bone_radius, panel.colour, 1.0f, solid, panel.joint_colours);
-  if (scene.axes) add_axes(scene.skeleton, panel.pose, axes_length(panel.view ? *panel.view : scene.bounds, scene.bone_radius),
-                            solid);
+  const double axes = axes_length(panel.view ? *panel.view : scene.bounds, scene.bone_radius);
+  add_pose(scene.skeleton, panel.pose, scene.bone_radius, panel.colour, 1.0f, solid, panel.joint_colours, scene.thin);
+  if (scene.axes) add_axes(scene.skeleton, panel.pose, axes, solid);
+  for (const Figure& figure : panel.figures) {
+    add_pose(scene.skeleton, figure.pose, kOverlayBone * scene.bone_radius, figure.colour, 1.0f, solid, {}, scene.thin);
+    if (scene.axes) add_axes(scene.skeleton, figure.pose, axes, solid);
+  }
   translucent.clear();
-  add_pose(scene.skeleton, panel.ghost, scene.bone_radius * 1.02, kGhostColour, kGhostAlpha, translucent);
+  add_pose(scene.skeleton, panel.ghost, scene.bone_radius * 1.02, kGhostColour, kGhostAlpha, translucent, {}, scene.thin);
 }
 
 void trail_figure(const Trail& trail, const Colour& colour, double zoom, Batch& solid, Batch& translucent) {

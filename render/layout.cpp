@@ -51,7 +51,8 @@ PanelLayout panel_layout(int width, int height, bool trail, bool strip, bool bar
   PanelLayout l;
   l.title_height = std::clamp(static_cast<int>(std::lround(0.075 * height)), 14, 40);
   if (strip) {
-    const int rows = std::clamp(static_cast<int>(std::lround(0.14 * height)), 18, 90);
+    // Room for a label line, a plot and its time labels.
+    const int rows = std::clamp(static_cast<int>(std::lround(0.18 * height)), 36, 140);
     if (height - l.title_height - rows >= 32) {
       l.strip = Rect{0, height - rows, width, rows};
       height -= rows;
@@ -82,6 +83,21 @@ PanelLayout panel_layout(int width, int height, bool trail, bool strip, bool bar
   }
   l.view = below_text(l.figure, corner_lines, panel_height);
   return l;
+}
+
+std::vector<double> axis_ticks(double lo, double hi, int at_least) {
+  if (!(hi > lo) || !std::isfinite(hi - lo)) return {lo};
+  const double span = hi - lo;
+  double step = std::pow(10.0, std::ceil(std::log10(span)));
+  // Smaller 1-2-5 steps until enough multiples fall in [lo, hi].
+  auto count = [&](double s) { return std::floor(hi / s + 1e-9) - std::ceil(lo / s - 1e-9) + 1.0; };
+  for (int i = 0; count(step) < at_least && i < 60; ++i) {
+    const double mantissa = step / std::pow(10.0, std::floor(std::log10(step) + 1e-9));
+    step *= mantissa > 4.0 ? 0.4 : 0.5;  // 5 → 2; 2 → 1 and 1 → 0.5
+  }
+  std::vector<double> ticks;
+  for (double k = std::ceil(lo / step - 1e-9); k * step <= hi + 1e-9 * step; k += 1.0) ticks.push_back(k * step + 0.0);  // + 0: no −0
+  return ticks;
 }
 
 int fitting_height(const TextWidth& width, int pixel_height, float max_width) {

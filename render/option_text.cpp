@@ -66,6 +66,18 @@ Result<Colouring> parse_colouring(std::string_view name) {
   return make_error("--colour '" + std::string(name) + "' is not error or method");
 }
 
+Result<View> parse_view(std::string_view name) {
+  if (name == "overlay") return View::overlay;
+  if (name == "side") return View::side;
+  return make_error("--view '" + std::string(name) + "' is not overlay or side");
+}
+
+Status check_colouring_view(View view, bool colour_given) {
+  if (view == View::overlay && colour_given)
+    return make_error("--colour applies to --view side: the overlay draws each method in its own colour");
+  return Ok{};
+}
+
 Result<CameraMode> parse_camera(std::string_view name) {
   if (name == "fixed") return CameraMode::fixed;
   if (name == "follow") return CameraMode::follow;

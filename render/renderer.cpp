@@ -24,13 +24,23 @@ Bounds ground_under(const Bounds& view, double ground_y) {
   return b;
 }
 
+// The layout of a panel: room for both corner lines whether drawn or not, so a
+// frame's panel and its sheet cell (no corner line) frame the figure alike.
+PanelLayout layout_of(const Panel& panel, int width, int height) {
+  return panel_layout(width, height, panel.trail && !panel.trail->reference.empty(), panel.strip != nullptr,
+                      panel.colour_scale_deg > 0.0, 2);
+}
+
 }  // namespace
 
+PanelCamera panel_camera(const Scene& scene, const Panel& panel, int width, int height) {
+  const Rect figure = layout_of(panel, width, height).view;
+  const Bounds& box = panel.view ? *panel.view : scene.bounds;
+  return PanelCamera{frame_bounds(box, static_cast<double>(figure.width) / figure.height, scene.view), figure};
+}
+
 Status Renderer::Impl::draw_panel(const Panel& panel, int width, int height) {
-  // Room for both corner lines whether drawn or not: a frame's panel and its sheet
-  // cell (no corner line) frame the figure alike.
-  const PanelLayout layout = panel_layout(width, height, panel.trail && !panel.trail->reference.empty(),
-                                          panel.strip != nullptr, panel.colour_scale_deg > 0.0, 2);
+  const PanelLayout layout = layout_of(panel, width, height);
   gl.BindFramebuffer(GL_FRAMEBUFFER, msaa_fbo);
   gl.Viewport(0, 0, width, height);
   gl.Disable(GL_SCISSOR_TEST);
@@ -50,7 +60,7 @@ Status Renderer::Impl::draw_panel(const Panel& panel, int width, int height) {
   gl.Enable(GL_DEPTH_TEST);
   gl.Enable(GL_MULTISAMPLE);
   const Bounds& box = panel.view ? *panel.view : scene.bounds;
-  const Camera camera = frame_bounds(box, static_cast<double>(figure.width) / figure.height, scene.view);
+  const Camera camera = panel_camera(scene, panel, width, height).camera;
   const Eigen::Matrix4f view_projection = to_float(camera.projection() * camera.view());
   if (panel.view)
     draw_lines(grid_lines(ground_under(*panel.view, scene.bounds.empty() ? box.min.y() : scene.bounds.min.y())),
@@ -67,6 +77,7 @@ Status Renderer::Impl::draw_panel(const Panel& panel, int width, int height) {
   if (layout.inset.width >= 32) draw_trail(panel, *panel.trail, layout.inset, height);
   if (layout.bar.height > 0) draw_colour_bar(panel, layout.bar, width, height);
   if (layout.strip.height > 0) draw_strip(*panel.strip, layout.strip, width, height);
+  draw_legend(panel, figure, width, height);
   {
     const int ph = corner_text_height(height);
     const float pad = static_cast<float>(corner_text_pad(height));
@@ -77,7 +88,8 @@ Status Renderer::Impl::draw_panel(const Panel& panel, int width, int height) {
     }
     if (layout.bar.height > 0) {  // the scale, stated: the same in every panel of the image
       const int small = std::max(8, ph * 4 / 5);
-      texts.push_back(TextItem{fmt::format("colours 0-{:g}°, all panels", panel.colour_scale_deg), pad, top, small});
+      texts.push_back(TextItem{fmt::format("joint error, colours 0-{}{:g}°, every image", panel.colour_scale_saturated ? "≥" : "",
+                                           panel.colour_scale_deg), pad, top, small});
     }
   }
 

@@ -290,7 +290,6 @@ void Renderer::Impl::draw_texts(int width, int height) {
   gl.UseProgram(text_program);
   gl.Uniform1i(text_atlas, 0);
   gl.Uniform2f(text_viewport, static_cast<float>(width), static_cast<float>(height));
-  gl.Uniform4f(text_colour, kTitleText[0], kTitleText[1], kTitleText[2], kTitleText[3]);
   gl.ActiveTexture(GL_TEXTURE0);
   gl.BindVertexArray(text_vao);
   gl.BindBuffer(GL_ARRAY_BUFFER, text_vbo);
@@ -302,6 +301,7 @@ void Renderer::Impl::draw_texts(int width, int height) {
       v.insert(v.end(), {q.x0, q.y0, q.s0, q.t0, q.x1, q.y0, q.s1, q.t0, q.x1, q.y1, q.s1, q.t1,
                          q.x0, q.y0, q.s0, q.t0, q.x1, q.y1, q.s1, q.t1, q.x0, q.y1, q.s0, q.t1});
     if (v.empty()) continue;
+    gl.Uniform4f(text_colour, t.rgba[0], t.rgba[1], t.rgba[2], t.rgba[3]);
     gl.BindTexture(GL_TEXTURE_2D, a.texture);
     gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(v.size() * sizeof(float)), v.data(), GL_STREAM_DRAW);
     gl.DrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(v.size() / 4));

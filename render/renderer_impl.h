@@ -26,9 +26,10 @@ using detail::GLApi;
 // ---- style (all colours linear 0…1) ------------------------------------------
 inline constexpr float kBackground[3] = {0.155f, 0.165f, 0.185f};
 inline constexpr float kTitleStrip[3] = {0.095f, 0.100f, 0.115f};
-inline constexpr float kTitleText[4] = {0.93f, 0.93f, 0.93f, 1.0f};
-inline constexpr float kStripMax[4] = {0.93f, 0.93f, 0.93f, 1.0f};
-inline constexpr float kStripMean[4] = {0.55f, 0.58f, 0.64f, 1.0f};
+inline constexpr float kStripAxis[4] = {0.55f, 0.58f, 0.64f, 1.0f};
+inline constexpr float kStripGrid[4] = {0.26f, 0.27f, 0.30f, 1.0f};
+// The ghost's colour in a legend: the pale ghost as it shows over the background.
+inline constexpr float kGhostSwatch[3] = {0.62f, 0.64f, 0.68f};
 inline constexpr float kStripKey[4] = {0.60f, 0.62f, 0.66f, 1.0f};
 inline constexpr float kStripCursor[4] = {0.98f, 0.62f, 0.20f, 1.0f};
 inline constexpr float kLeader[4] = {0.93f, 0.93f, 0.93f, 0.9f};
@@ -123,9 +124,14 @@ struct Renderer::Impl {
   // per row, labelled in degrees at both ends.
   void draw_colour_bar(const Panel& panel, const Rect& bar, int width, int height);
 
-  // The error-over-time strip: max (bright) and mean (dim) against frames, keys as
-  // ticks at the bottom, the cursor at the panel's frame, the scale at the top left.
+  // The error-over-time strip: its quantity named at the top left, degree ticks up
+  // the left, time ticks in seconds along the bottom, a line (or a per-column
+  // min/max band, when frames outnumber the columns) per series, keys, the cursor.
   void draw_strip(const ErrorStrip& strip, const Rect& r, int width, int height);
+
+  // The legend at the top right of the figure: a swatch and a line of text for the
+  // ghost and for each figure, in their colours.
+  void draw_legend(const Panel& panel, const Rect& figure, int width, int height);
 
   // `panel.joint_label` next to its joint of the pose, with a short leader line
   // (none when the joint is out of view), kept inside the figure.

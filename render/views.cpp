@@ -1,8 +1,9 @@
-// The camera's boxes over the frames drawn: fixed, or following the smoothed root or a focus joint.
+// The camera's boxes over the frames drawn: the body found, fixed or following the smoothed pelvis or a focus joint.
 #include "views.h"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace rotinterp::render {
 
@@ -27,24 +28,62 @@ std::vector<bool> subtree(const Skeleton& skeleton, int joint) {
   return in;
 }
 
-Views camera_views(const RebuiltClip& rebuild, const std::vector<WorldPose>& poses, std::size_t first, int followed,
-                   const std::vector<bool>& limb, bool follow, double smoothing, double min_side) {
+Body find_body(const Skeleton& skeleton, const std::vector<WorldPose>& poses) {
+  const std::size_t joints = skeleton.joints.size();
+  Body body;
+  body.marker.assign(joints, false);
+  const double height = skeleton_height(rest_pose(skeleton));
+  std::vector<double> shortest(joints, std::numeric_limits<double>::infinity()), longest(joints, 0.0);
+  for (const WorldPose& pose : poses) {
+    if (pose.position.size() != joints) continue;
+    for (std::size_t j = 0; j < joints; ++j) {
+      const int p = skeleton.joints[j].parent;
+      if (p < 0 || skeleton.joints[static_cast<std::size_t>(p)].parent >= 0) continue;  // bones from a root
+      const double length = (pose.position[j] - pose.position[static_cast<std::size_t>(p)]).norm();
+      if (!std::isfinite(length)) continue;
+      shortest[j] = std::min(shortest[j], length);
+      longest[j] = std::max(longest[j], length);
+    }
+  }
+  for (std::size_t j = 0; j < joints; ++j)
+    if (longest[j] - shortest[j] > kMarkerStretch * height)
+      body.marker[static_cast<std::size_t>(skeleton.joints[j].parent)] = true;
+  // Joints below each joint, children after parents: count them back to front.
+  std::vector<std::size_t> below(joints, 0);
+  for (std::size_t j = joints; j-- > 0;)
+    if (const int p = skeleton.joints[j].parent; p >= 0) below[static_cast<std::size_t>(p)] += below[j] + 1;
+  int best = -1;
+  for (std::size_t j = 0; j < joints; ++j) {
+    const int p = skeleton.joints[j].parent;
+    const bool top = !body.marker[j] && (p < 0 || body.marker[static_cast<std::size_t>(p)]);
+    if (top && (best < 0 || below[j] > below[static_cast<std::size_t>(best)])) best = static_cast<int>(j);
+  }
+  body.pelvis = std::max(best, 0);
+  body.kept.resize(joints);
+  for (std::size_t j = 0; j < joints; ++j) body.kept[j] = !body.marker[j];
+  return body;
+}
+
+Views camera_views(const RebuiltClip& rebuild, const std::vector<WorldPose>& poses, std::size_t first,
+                   const Framing& framing, bool follow) {
   const Skeleton& skeleton = rebuild.skeleton();
+  const std::vector<bool>& limb = framing.points;
   Views v;
   for (const WorldPose& pose : poses) for_each_point(skeleton, pose, limb, [&](const Vec3& p) { v.fixed.extend(p); });
   if (!follow || poses.empty()) return v;
-  const bool focus = !limb.empty();
+  const double smoothing = framing.smoothing, min_side = framing.min_side;
+  const auto followed = static_cast<std::size_t>(framing.followed);
   const std::size_t n = poses.size();
   // The smoothing window in frames, from the mean frame spacing.
   const double span = rebuild.time(first + n - 1) - rebuild.time(first);
   const double spacing = n > 1 && span > 0.0 ? span / static_cast<double>(n - 1) : 1.0;
   const auto half = static_cast<std::size_t>(std::lround(smoothing / spacing));
   std::vector<Vec3> path(n), prefix(n + 1, Vec3::Zero());
-  for (std::size_t i = 0; i < n; ++i) prefix[i + 1] = prefix[i] + poses[i].position[static_cast<std::size_t>(followed)];
+  for (std::size_t i = 0; i < n; ++i) prefix[i + 1] = prefix[i] + poses[i].position[followed];
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t lo = i >= half ? i - half : 0, hi = std::min(n - 1, i + half);
     path[i] = (prefix[hi + 1] - prefix[lo]) / static_cast<double>(hi - lo + 1);
-    if (!focus) path[i].y() = 0.0;
+    if (!framing.vertical) path[i].y() = 0.0;
   }
   // Each side of the box: where that side of the figure's own box lies, relative
   // to the path, in all but the most outlying frames.

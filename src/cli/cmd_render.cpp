@@ -94,7 +94,8 @@ struct RenderArgs {
   bool sheet = false;
   std::string backend;
   std::string anim, unit;
-  std::string colour = "error";
+  std::string view = "overlay";
+  std::string colour;  // empty: error (side)
   std::string camera;
   std::string focus;
   std::string axes = "auto";
@@ -129,11 +130,15 @@ int run_render(const RenderArgs& a) {
     if (!range) return fail_usage(range.error());
     options.frames = *range;
   }
+  auto view = render::parse_view(a.view);
+  if (!view) return fail_usage(view.error());
+  options.view = *view;
   auto size = render::parse_size(a.size);
   if (!size) return fail_usage(size.error());
   options.width = size->first;
   options.height = size->second;
-  if (Status s = render::check_image_size(options.width, options.height, static_cast<int>(options.methods.size()));
+  const bool side = options.view == render::View::side;
+  if (Status s = render::check_image_size(options.width, options.height, side ? static_cast<int>(options.methods.size()) : 1);
       !s)
     return fail_usage("--size: " + s.error());
   if (!a.backend.empty()) {
@@ -151,9 +156,12 @@ int run_render(const RenderArgs& a) {
   options.trail_window = a.trail_window;
   options.sheet = a.sheet;
   if (a.sheet && a.out_dir.empty()) return fail_usage("--sheet needs -o DIR");
-  auto colouring = render::parse_colouring(a.colour);
-  if (!colouring) return fail_usage(colouring.error());
-  options.colouring = *colouring;
+  if (Status s = render::check_colouring_view(options.view, !a.colour.empty()); !s) return fail_usage(s.error());
+  if (!a.colour.empty()) {
+    auto colouring = render::parse_colouring(a.colour);
+    if (!colouring) return fail_usage(colouring.error());
+    options.colouring = *colouring;
+  }
   if (!a.camera.empty()) {
     auto camera = render::parse_camera(a.camera);
     if (!camera) return fail_usage(camera.error());
@@ -241,17 +249,22 @@ void add_render_command(CLI::App& app, int& exit_code) {
                   "Seconds either side of the frame drawn on the trail, fading with distance in time; 0 = all the "
                   "frames drawn")
       ->default_val(1.0);
-  sub->add_flag("--sheet", args->sheet, "Also write sheet.png: a row per method, a column per frame (default: off)");
+  sub->add_flag("--sheet", args->sheet, "Also write sheet.png: a column per frame, a row per method (--view side) or one row of overlays "
+                "(default: off)");
   add_anim_option(*sub, args->anim, nullptr);
   add_unit_option(*sub, args->unit);
+  sub->add_option("--view", args->view,
+                  "overlay: one panel, the truth as a pale ghost and each method over it in its own colour, named "
+                  "in a legend (a 2° difference shows as a gap between bones); side: a panel per method, side by side")
+      ->default_val("overlay")
+      ->check(CLI::IsMember({"overlay", "side"}));
   sub->add_option("--colour", args->colour,
-                  "error: each bone coloured by its joint's angular error (viridis, one scale per frame, shared by "
-                  "the panels; sheet.png: one scale for the whole sheet); method: one colour per method")
-      ->default_val("error")
+                  "With --view side. error (default): each bone coloured by its joint's angular error (viridis, one "
+                  "scale for the whole run: every frame, video frame and sheet cell); method: one colour per method")
       ->check(CLI::IsMember({"error", "method"}));
   sub->add_option("--camera", args->camera,
-                  "fixed or follow (default: follow when the root travels farther than the skeleton's height over "
-                  "the frames drawn, or with --focus)")
+                  "fixed or follow (default: follow the body's pelvis when it travels farther than the skeleton's "
+                  "height over the frames drawn, or the joint with --focus)")
       ->check(CLI::IsMember({"fixed", "follow"}));
   sub->add_option("--focus", args->focus,
                   "Frame this joint and the joints below it (a hand, a foot), following it (default: the whole figure)");

@@ -88,10 +88,10 @@ def test_render_writes_the_pngs_the_command_writes(tmp_path):
     if not hasattr(rotinterp._rotinterp, "render"):
         pytest.skip("built without the renderer")
     options = ["--method", "slerp,c2", "--keep-every", "6", "--frames", "3:30:9", "--size", "192x108", "--sheet",
-               "--trail", "LeftHand"]
+               "--trail", "LeftHand", "--view", "side"]
     cli("render", SAMPLES / "walk.bvh", "-o", tmp_path / "cli", "-q", *options)
     files = rotinterp.render(SAMPLES / "walk.bvh", tmp_path / "py", methods=["slerp", "c2"], keep_every=6,
-                             frames="3:30:9", size="192x108", sheet=True, trail="LeftHand")
+                             frames="3:30:9", size="192x108", sheet=True, trail="LeftHand", view="side")
     names = sorted(p.name for p in (tmp_path / "cli").iterdir())
     assert sorted(Path(f).name for f in files) == names and "sheet.png" in names and len(names) == 5
     for name in names:

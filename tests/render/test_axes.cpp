@@ -31,7 +31,7 @@ std::size_t pixels_of(const test::Pixels& p, int channel) {
 
 test::Pixels render_frame(const fs::path& clip, const fs::path& out, const std::string& flags) {
   const auto r = run_cli("render " + clip.string() + " -o " + out.string() +
-                         " --methods slerp --keep-every 1 --frames 1 --size 240x180 -q " + flags);
+                         " --methods slerp --keep-every 1 --frames 1 --size 240x180 --view side -q " + flags);
   EXPECT_EQ(r.exit_code, 0) << r.err;
   return test::read_png(out / "frame_000001.png");
 }

@@ -38,7 +38,7 @@ TEST(RenderFraming, AFixedCameraKeepsATallFigureClearOfTheFrameLabel) {
                          "    End Site\n    {\n      OFFSET 0 20 0\n    }\n  }\n}\nMOTION\nFrames: 3\n"
                          "Frame Time: 0.1\n0 0 0 0 0 0\n2 0 0 2 0 0\n4 0 0 4 0 0\n";
   const auto r = test::run_cli("render " + clip.string() + " -o " + (dir / "out").string() +
-                               " --methods squad --keep-every 2 --frames 1 --size 480x360 --colour method "  // squad: vermillion
+                               " --methods squad --keep-every 2 --frames 1 --size 480x360 --view side --colour method "  // squad: vermillion
                                "--camera fixed --no-strip -q");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const test::Pixels p = test::read_png(dir / "out" / "frame_000001.png");

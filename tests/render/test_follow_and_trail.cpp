@@ -33,6 +33,7 @@ using test::fresh_dir;
 ComparisonOptions one_method(FrameRange frames, int width, int height) {
   ComparisonOptions o;
   o.methods = {"squad"};
+  o.view = View::side;
   o.frames = frames;
   o.width = width;
   o.height = height;

@@ -36,7 +36,7 @@ TEST(RenderMeshFigure, BoxesHangingOffJointsAtOnePointSpanThePanel) {
   const fs::path clip = dir / "boxes.gltf";
   test::write_box_chain_gltf(clip, 64);
   const auto r = test::run_cli("render " + clip.string() + " -o " + (dir / "out").string() +
-                               " --methods slerp --keep-every 1 --frames 0 --size 320x240 --colour method --camera fixed "
+                               " --methods slerp --keep-every 1 --frames 0 --size 320x240 --view side --colour method --camera fixed "
                                "--axes off --no-strip -q");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const test::Pixels p = test::read_png(dir / "out" / "frame_000000.png");

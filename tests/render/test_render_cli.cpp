@@ -36,7 +36,7 @@ Args methods(std::string m) { Args a; a.methods = std::move(m); return a; }
 
 std::string render_args(const fs::path& dir, const Args& a = {}) {
   return "render " + kClip + " -o " + dir.string() + " --methods " + a.methods + " --keep-every 12 --frames " +
-         a.frames + " --size " + a.size + " -q " + a.extra;
+         a.frames + " --size " + a.size + " --view side -q " + a.extra;
 }
 
 TEST(RenderCli, ASkeletonWhoseJointsAllLieAtOnePointIsWarnedAbout) {

@@ -27,7 +27,7 @@ const std::string kWalk = std::string(ROTINTERP_SOURCE_DIR) + "/samples/walk.bvh
 
 TEST(RenderSource, SlerpAndSourceDrawTwoPanelsTheSourceOneUnlikeSlerpsBetweenKeys) {
   const fs::path dir = test::fresh_dir("source");
-  const std::string common = " --frames 15 --size 320x180 --backend osmesa -q";  // frame 15: between keys 10 and 20
+  const std::string common = " --frames 15 --size 320x180 --view side --backend osmesa -q";  // frame 15: between keys 10 and 20
   const auto both = test::run_cli("render " + kRun + " -m slerp,source -o " + (dir / "both").string() + common);
   ASSERT_EQ(both.exit_code, 0) << both.err;
   const auto twice = test::run_cli("render " + kRun + " -m slerp,slerp -o " + (dir / "twice").string() + common);

@@ -23,6 +23,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -36,16 +37,21 @@ struct FrameRange {
   std::size_t step = 1;
 };
 
-// How the rebuilt poses are coloured.
+// How the methods are shown.
+enum class View {
+  overlay,  // one panel: the truth as a pale ghost, each method over it in its colour, a legend
+  side,     // a panel per method, side by side, each over the ghost
+};
+// How the rebuilt poses of side panels are coloured (the overlay: by method).
 enum class Colouring {
-  error,   // each bone by its joint's angular error at that frame (viridis, one scale per frame)
+  error,   // each bone by its joint's angular error (viridis, one scale for the whole run)
   method,  // one colour per method (its place in methods())
 };
 // Where the camera looks from.
 enum class CameraMode {
-  automatic,  // follow when the root travels farther than the skeleton's height over the frames drawn
+  automatic,  // follow when the pelvis travels farther than the skeleton's height over the frames drawn
   fixed,      // one view framing every pose of the frames drawn
-  follow,     // a view that follows the smoothed root (or the focus joint)
+  follow,     // a view that follows the smoothed pelvis (or the focus joint)
 };
 
 struct ComparisonOptions {
@@ -62,10 +68,13 @@ struct ComparisonOptions {
   int height = 540;
   std::string trail_joint;            // non-empty: draw this joint's bone-direction trail
   double trail_window = 1.0;          // seconds either side of the frame shown on the trail; 0: all frames drawn
-  bool sheet = false;                 // also write sheet.png: a row per method, a column per frame
+  bool sheet = false;                 // also write sheet.png: a row per panel, a column per frame
+  View view = View::overlay;
   Colouring colouring = Colouring::error;
   CameraMode camera = CameraMode::automatic;
-  std::string focus_joint;            // non-empty: the camera follows this joint and frames its limb
+  // Empty: the camera frames the body (find_body in views.h: not a ground marker at
+  // the root) and follows its pelvis; else it follows this joint and frames its limb.
+  std::string focus_joint;
   AxesMode axes = AxesMode::automatic;  // each joint's axes as an RGB triad (axes.h)
   bool strip = true;                  // an error-over-time strip under each panel
   bool pngs = true;                   // write frame_NNNNNN.png (and sheet.png) into the output directory
@@ -98,13 +107,48 @@ Result<std::vector<FrameError>> comparison_errors(const Clip& clip, const std::s
 // The frames the options select in `clip` (checked against its frame count).
 Result<std::vector<std::size_t>> comparison_frames(const Clip& clip, const ComparisonOptions& options);
 
+// What render_comparison draws, computed before any GL: the scene the panels share,
+// the frames selected and each frame's panels (poses, the camera's box, colours,
+// strip, trail) — for tests and for callers that draw them elsewhere.
+class ComparisonPlan {
+ public:
+  // Checks the options (the errors render_comparison gives, but those of writing)
+  // and rebuilds the methods. `clip` must outlive the plan.
+  static Result<ComparisonPlan> make(const Clip& clip, const ComparisonOptions& options);
+  ComparisonPlan(ComparisonPlan&&) noexcept;
+  ComparisonPlan& operator=(ComparisonPlan&&) noexcept;
+  ~ComparisonPlan();
+
+  const Scene& scene() const;
+  const std::vector<std::size_t>& frames() const;  // numbered over both periods with --loop
+  int columns() const;                              // panels per row of a frame's image
+  bool followed() const;                            // whether the camera follows
+  double video_fps() const;                         // the clip's rate over the frame step
+  struct Frame {
+    std::vector<Panel> panels;  // as drawn in the frame's image
+    std::vector<Panel> cells;   // its column of sheet.png, a cell per panel
+  };
+  Frame frame(std::size_t i) const;  // of frames()[i]
+
+ private:
+  struct Impl;
+  explicit ComparisonPlan(std::unique_ptr<Impl> impl);
+  // make's work; with `cycle` (--loop) its two periods are the clip drawn.
+  static Result<ComparisonPlan> plan(const Clip& clip, const ComparisonOptions& options,
+                                     std::optional<CyclePlayedTwice> cycle);
+  std::unique_ptr<Impl> impl_;
+};
+
 // Renders the comparison: into `out_dir` (created if missing; unused without
 // pngs) frame_NNNNNN.png per frame (NNNNNN the frame number, zero-padded to 6),
 // and sheet.png with --sheet; the video when asked.
-// Each panel: the title (method, mean and max error, "(key)" on kept keys), the
-// frame number and time at the top left, the rebuilt pose coloured by error
-// (with a colour bar and the worst joint labelled) or by method, the ghost of the
-// original, the trail inset, and the error strip.
+// Side panels: the title (method, mean and max error over joints, "(key)" on kept
+// keys), the frame number and time at the top left, the rebuilt pose coloured by
+// error (a colour bar on one scale for the whole run, the worst joint labelled) or
+// by method, the ghost of the original, the trail inset, and the error strip with
+// time and degree axes. The overlay: one panel, every method's pose in its colour
+// over the ghost, a legend with each method's errors, the worst joint labelled, one
+// strip with a line per method.
 // Errors (one line): unknown method or joint, "source" without `source` or with
 // a loop, frames outside the clip, a size outside limits, a backend that is not available, an unwritable directory, a
 // video that cannot be made (format, size, ffmpeg).

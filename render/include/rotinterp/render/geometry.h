@@ -50,9 +50,11 @@ struct Batch {
 // and End Site. Nothing when the pose's positions do not match the skeleton's
 // joints; no End Sites when its End Site positions do not match. With
 // `joint_colours` (one per joint) the colours are per bone as Panel::joint_colours
-// says, else all `colour`.
+// says, else all `colour`. With `thin` (one per joint) the bones a joint marked
+// there turns are kThinBone as thick, and its sphere too.
+inline constexpr double kThinBone = 0.3;
 void add_pose(const Skeleton& skeleton, const WorldPose& pose, double radius, const Colour& colour, float alpha,
-              Batch& batch, const std::vector<Colour>& joint_colours = {});
+              Batch& batch, const std::vector<Colour>& joint_colours = {}, const std::vector<bool>& thin = {});
 
 // The colour trails fade to (the trail inset's background).
 constexpr Colour kInsetBackground = {0.120f, 0.128f, 0.145f};
@@ -64,8 +66,10 @@ constexpr Colour kInsetBackground = {0.120f, 0.128f, 0.145f};
 void add_curve(const std::vector<Vec3>& points, std::size_t stride, double radius, const Colour& colour, float alpha,
                Batch& batch, const std::vector<float>& fade = {});
 
-// A panel's figure: its pose into `solid`, its ghost (pale, a little thicker)
+// A panel's figure: its pose and its figures (each kOverlayBone as thick, so that
+// the ghost shows around them) into `solid`, its ghost (pale, a little thicker)
 // into `translucent`. Both batches are cleared first.
+inline constexpr double kOverlayBone = 0.7;
 void panel_figure(const Scene& scene, const Panel& panel, Batch& solid, Batch& translucent);
 
 // Trail sizes on the unit sphere (sphere radii), before the inset's zoom.

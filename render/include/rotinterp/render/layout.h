@@ -4,6 +4,7 @@
 // the lines of text.
 #pragma once
 
+#include <array>
 #include <functional>
 #include <string>
 #include <vector>
@@ -28,8 +29,8 @@ std::vector<Rect> grid_layout(int count, int columns, int width, int height);
 // overlapping: the inset at the bottom right below the figure in tall panels,
 // at the top right beside it in wide ones. Rects are in the panel's pixels, y
 // downwards.
-// With a strip, an error-over-time strip across the bottom (about 0.14 of the
-// height, 18…90 rows) below the scene area; with a colour bar, a narrow vertical
+// With a strip, an error-over-time strip across the bottom (about 0.18 of the
+// height, 36…140 rows: a label line, the plot, its time labels) below the scene area; with a colour bar, a narrow vertical
 // bar at the figure's left (its labels right of it), over the figure, from 0.32 to
 // 0.82 of the scene's height (two lines of text fit above it).
 // With `corner_lines` lines of text at the figure's top left (frame and time, the
@@ -56,7 +57,13 @@ struct TextItem {
   float x = 0;           // left, pixels
   float top = 0;         // top of the line box, pixels from the panel's top
   int pixel_height = 0;  // the font's ascent − descent, pixels
+  std::array<float, 4> rgba = {0.93f, 0.93f, 0.93f, 1.0f};  // linear RGB, alpha
 };
+
+// Tick values of an axis from lo to hi: the multiples of the largest 1-2-5 step
+// (…, 0.1, 0.2, 0.5, 1, 2, …) that puts at least `at_least` of them in [lo, hi];
+// {lo} when the range is empty.
+std::vector<double> axis_ticks(double lo, double hi, int at_least = 3);
 
 // The width in pixels of a text at a pixel height.
 using TextWidth = std::function<float(int pixel_height)>;

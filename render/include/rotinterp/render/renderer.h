@@ -12,6 +12,7 @@
 #include "rotinterp/render/camera.h"
 #include "rotinterp/render/context.h"
 #include "rotinterp/render/image.h"
+#include "rotinterp/render/layout.h"
 
 #include <array>
 #include <cstddef>
@@ -39,18 +40,35 @@ struct Trail {
   std::vector<float> fade;
 };
 
-// An error-over-time strip under a panel: the method's max and mean error per
-// frame over a range of frames, a cursor at the panel's frame, keys ticked.
+// An error-over-time strip under a panel, with axes: time in seconds along the
+// bottom, degrees up the left. One line per series (a method's max over joints, say)
+// in its colour; a clip longer than the strip is wide is drawn as a per-column
+// min/max band. A cursor at the panel's frame, keys ticked.
+struct StripLine {
+  std::vector<float> deg;  // degrees, per frame of the range
+  Colour colour = {0.93f, 0.93f, 0.93f};
+  float alpha = 1.0f;      // < 1: a secondary line (drawn dimmer)
+};
 struct ErrorStrip {
-  std::vector<float> max_deg;      // degrees, per frame of the range
-  std::vector<float> mean_deg;     // same length
-  double scale_deg = 1.0;          // the strip's top (shared by the panels of an image)
+  std::vector<StripLine> lines;    // every line the same length: the frames of the range
+  std::string quantity;            // what the lines are, e.g. "max over joints"
+  double start_s = 0.0;            // time of the range's first frame, seconds (the time axis)
+  double end_s = 0.0;              // and of its last
+  double scale_deg = 1.0;          // the degree axis' top (shared by every image of a run)
   std::size_t cursor = 0;          // index of the panel's frame
   std::vector<std::size_t> keys;   // indices of key frames
 };
 
+// A pose drawn solid in one colour beside the panel's own (the overlay view: a
+// method each), named in the panel's legend.
+struct Figure {
+  WorldPose pose;
+  Colour colour = {0.95f, 0.55f, 0.2f};
+  std::string legend;  // its line in the legend; empty: none
+};
+
 struct Panel {
-  std::string title;            // UTF-8; characters outside Latin-1 show as '?'
+  std::string title;            // UTF-8; characters outside Latin-1 (and ≥ … —) show as '?'
   Colour colour = {0.95f, 0.55f, 0.2f};  // the solid pose and its trail
   WorldPose ghost;              // reference pose (positions used); empty = none
   WorldPose pose;               // the pose drawn solid; empty = none
@@ -60,8 +78,12 @@ struct Panel {
   // spheres at their far ends; the root's sphere in the root's colour.
   std::vector<Colour> joint_colours;
   double colour_scale_deg = 0.0;   // > 0: a viridis colour bar from 0 to this, labelled in degrees
+  bool colour_scale_saturated = false;  // errors above the scale exist (drawn at its top): labelled "≥ N°"
+  std::vector<Figure> figures;     // more poses drawn solid over the ghost, each in its colour
+  std::string ghost_legend;        // non-empty: the ghost's line in the legend (e.g. "truth")
   std::string corner;              // a line at the top left of the figure (frame, time)
   int label_joint = -1;            // ≥ 0: `joint_label` written next to this joint of `pose`
+  int label_figure = -1;           // ≥ 0: of figures[label_figure]'s pose instead
   std::string joint_label;
   std::optional<Bounds> view;      // the box this panel's camera frames; unset: the scene's
   std::shared_ptr<const ErrorStrip> strip;  // optional, under the figure
@@ -70,6 +92,9 @@ struct Panel {
 // What all panels share.
 struct Scene {
   Skeleton skeleton;        // bones: joint → parent, End Site → joint
+  // Per joint (or empty): the bones it turns are drawn thin, e.g. from a ground
+  // marker at the root to the hips of a figure that travels away from it.
+  std::vector<bool> thin;
   // Of every pose drawn: frames the camera (unless a panel has its own view) and
   // places the grid (its height always; its extent around a panel's view when set).
   Bounds bounds;
@@ -91,6 +116,14 @@ constexpr int kSamples = 4;           // multisampling per pixel (fewer if the G
 // Whether `panels` panels on `columns` columns (0 = automatic_columns) fit a
 // width × height image within the limits above; the error is one line.
 Status check_image_size(int width, int height, int panels, int columns = 0);
+
+// The camera of a width × height panel and the viewport it draws into (y downwards,
+// in the panel's pixels): what the renderer projects the panel's poses with.
+struct PanelCamera {
+  Camera camera;
+  Rect viewport;
+};
+PanelCamera panel_camera(const Scene& scene, const Panel& panel, int width, int height);
 
 class Renderer {
  public:

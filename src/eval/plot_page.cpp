@@ -49,29 +49,33 @@ void begin_page(FILE* file, const char* device, int w, int h) {
   }
   plinit();
   pladv(0);
-  plschr(0.0, kTextScale);
 }
+
+// Pixels per millimetre of the page (PLplot sizes text in mm).
+double px_per_mm() {
+  PLFLT xp, yp, x0, x1, y0, y1;
+  PLINT xlen, ylen, xoff, yoff;
+  plgpage(&xp, &yp, &xlen, &ylen, &xoff, &yoff);
+  plgspa(&x0, &x1, &y0, &y1);
+  return xlen / (x1 - x0);
+}
+
+void marker_size() { plschr(kMarkerPx / px_per_mm(), 1.0); }
 
 }  // namespace
 
-void log_labels(PLINT axis, PLFLT value, char* label, PLINT length, PLPointer) {
-  const double v = axis == PL_X_AXIS ? std::pow(2.0, value) : std::pow(10.0, value);
-  std::snprintf(label, static_cast<std::size_t>(length), "%g", v);
-}
-
-void draw_series(const std::string& method, const std::vector<double>& x, const std::vector<double>& y, const LogRange& yr,
-                 bool lines) {
+void draw_series(const std::string& method, const std::vector<double>& x, const std::vector<double>& y,
+                 const PlotAxis& yr, bool lines) {
   plcol0(series_colour(method));
   plwidth(2.0);
   pllsty(dash(method));
   std::vector<PLFLT> px, py;
   auto flush = [&] {
     if (lines && px.size() > 1) plline(static_cast<PLINT>(px.size()), px.data(), py.data());
-    plschr(0.0, kMarkerScale);
     if (!px.empty()) plstring(static_cast<PLINT>(px.size()), px.data(), py.data(), marker(method));
-    plschr(0.0, kTextScale);
     px.clear(), py.clear();
   };
+  marker_size();
   for (std::size_t i = 0; i < x.size(); ++i) {
     if (!yr.log) {
       px.push_back(x[i]), py.push_back(y[i]);
@@ -83,59 +87,58 @@ void draw_series(const std::string& method, const std::vector<double>& x, const 
     }
     flush();
     PLFLT zx = x[i], zy = yr.lo;
-    plschr(0.0, kMarkerScale);
     plstring(1, &zx, &zy, marker(method, true));
-    plschr(0.0, kTextScale);
   }
   flush();
   pllsty(1);
   plwidth(1.0);
 }
 
-void log_axes(bool log_x) {
+void draw_frame(const PlotLayout& L, const PlotPanel& p) {
+  const double w = L.width, h = L.height;
+  plvpor(p.frame.left / w, p.frame.right / w, p.frame.bottom / h, p.frame.top / h);
+  plwind(p.x.lo, p.x.hi, p.y.lo, p.y.hi);
+  // Ticks 5 px long inside the frame, in axis units.
+  const double tx = 5 * (p.x.hi - p.x.lo) / (p.frame.right - p.frame.left);
+  const double ty = 5 * (p.y.hi - p.y.lo) / (p.frame.top - p.frame.bottom);
   plcol0(kGrid);
-  plbox("g", 1.0, 0, "g", 1.0, 0);
+  for (const PlotTick& t : p.y.ticks) pljoin(p.x.lo, t.at, p.x.hi, t.at);
+  if (p.slots.empty())
+    for (const PlotTick& t : p.x.ticks) pljoin(t.at, p.y.lo, t.at, p.y.hi);
   plcol0(kText);
-  plslabelfunc(log_labels, nullptr);
-  plbox(log_x ? "bcnto" : "bcnt", 1.0, 0, "bcnstlov", 1.0, 0);
-  plslabelfunc(nullptr, nullptr);
+  plbox("bc", 0, 0, "bc", 0, 0);
+  for (const PlotTick& t : p.y.ticks) pljoin(p.x.lo, t.at, p.x.lo + tx, t.at), pljoin(p.x.hi, t.at, p.x.hi - tx, t.at);
+  for (const PlotTick& t : p.x.ticks) pljoin(t.at, p.y.lo, t.at, p.y.lo + ty), pljoin(t.at, p.y.hi, t.at, p.y.hi - ty);
 }
 
-void legend(const std::vector<std::string>& names, PLINT position, int columns, double y_offset) {
-  const std::size_t n = names.size();
-  std::vector<PLINT> opt(n, PL_LEGEND_LINE | PL_LEGEND_SYMBOL), colours(n), lstyle(n), nsym(n, 1);
-  std::vector<PLFLT> widths(n, 2.0), sscale(n, 0.8);
-  std::vector<const char*> text(n), sym(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    colours[i] = series_colour(names[i]);
-    lstyle[i] = dash(names[i]);
-    text[i] = names[i].c_str();
-    sym[i] = marker(names[i]);
+void draw_texts_and_legend(const PlotLayout& L) {
+  const double mm = 1 / px_per_mm();
+  plvpor(0, 1, 0, 1);
+  plwind(0, L.width, 0, L.height);
+  const PlotLegend& g = L.legend;
+  if (!g.methods.empty()) {
+    plcol0(kText);
+    std::vector<PLFLT> bx = {g.box.left, g.box.right, g.box.right, g.box.left, g.box.left},
+                       by = {g.box.bottom, g.box.bottom, g.box.top, g.box.top, g.box.bottom};
+    plline(5, bx.data(), by.data());
+    for (std::size_t i = 0; i < g.methods.size(); ++i) {  // a stretch of the method's line, its marker in the middle
+      PLFLT lx[2] = {g.sample_left, g.sample_right}, ly[2] = {g.row_y[i], g.row_y[i]};
+      PLFLT mx = 0.5 * (lx[0] + lx[1]), my = g.row_y[i];
+      plcol0(series_colour(g.methods[i]));
+      plwidth(2.0);
+      pllsty(dash(g.methods[i]));
+      plline(2, lx, ly);
+      pllsty(1);
+      plwidth(1.0);
+      marker_size();
+      plstring(1, &mx, &my, marker(g.methods[i]));
+    }
   }
-  std::vector<PLINT> text_colours(n, kText);
-  const PLINT ncol = std::max(1, columns), nrow = static_cast<PLINT>((static_cast<int>(n) + ncol - 1) / ncol);
-  PLFLT w = 0, h = 0;
-  pllegend(&w, &h, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX | (ncol > 1 ? PL_LEGEND_ROW_MAJOR : 0), position, 0.01,
-           y_offset, ncol > 1 ? 0.04 : 0.1, 0, kText, 1, nrow, ncol, static_cast<PLINT>(n), opt.data(), 0.8, 0.75, 1.8,
-           0.0, text_colours.data(), text.data(), nullptr, nullptr,
-           nullptr, nullptr, colours.data(), lstyle.data(), widths.data(), colours.data(), sscale.data(), nsym.data(),
-           sym.data());
-}
-
-// `text` cut to its last `max_chars` characters (UTF-8 safe), with a leading ellipsis.
-std::string tail(const std::string& text, std::size_t max_chars) {
-  if (text.size() <= max_chars) return text;
-  std::size_t start = text.size() - max_chars;
-  while (start < text.size() && (static_cast<unsigned char>(text[start]) & 0xC0) == 0x80) ++start;
-  return "…" + text.substr(start);
-}
-
-// Names written vertically under the slots 0 … span − 1 of the x axis.
-void joint_labels(const std::vector<std::string>& names, double span, double scale) {
-  plschr(0.0, names.size() > 40 ? std::min(scale, 0.5) : scale);
-  for (std::size_t i = 0; i < names.size(); ++i)
-    plmtex("bv", 0.7, (static_cast<double>(i) + 0.5) / span, 1.0, names[i].c_str());
-  plschr(0.0, kTextScale);
+  plcol0(kText);
+  for (const PlotText& t : L.texts) {
+    plschr(t.height_px * mm, 1.0);
+    plptex(t.x, t.y, t.vertical ? 0 : 1, t.vertical ? 1 : 0, t.justify, t.text.c_str());
+  }
 }
 
 Page::Page(AtomicOutput& out, const char* device, int w, int h) : sink_{&out} {

@@ -1,8 +1,9 @@
 // The PLplot page every eval plot is drawn on: the white page and its colour map
-// (methods in their interp/method_style.h colours, markers and dashes), log axes,
-// series, legends and labels, written through an AtomicOutput.
+// (methods in their interp/method_style.h colours, markers and dashes), frames,
+// series, texts and legends where eval/plot_layout.h puts them, written through an AtomicOutput.
 #pragma once
 
+#include "rotinterp/eval/plot_layout.h"
 #include "rotinterp/io/atomic_file.h"
 
 #include <plplot/plplot.h>
@@ -16,41 +17,21 @@ namespace rotinterp::plot {
 // Colour map 0: 0 background (white), 1 axes and text (black), 2 grid (light grey),
 // 3… the method styles (interp/method_style.h), one per slot.
 constexpr int kText = 1, kGrid = 2, kFirstSeries = 3;
-// Angles below this (degrees) are zero to round-off: drawn as zeros on a log axis
-// (a method that reproduces a still clip gives 1e-14°, which would stretch the axis
-// over fifteen decades).
-constexpr double kZeroDeg = 1e-9;
-// Character heights relative to PLplot's default: text, and the markers.
-constexpr double kTextScale = 0.8, kMarkerScale = 0.6;
+// Height of a marker glyph, pixels.
+constexpr double kMarkerPx = 10;
 
-// The y range of an axis: log₁₀ degrees (whole decades, capped at 180°) or, with
-// `log` false, degrees; `any` false when no value is positive.
-struct LogRange {
-  bool log = false;
-  bool any = false;
-  double lo = 0, hi = 1;
-};
-
-// One method's points (and, with `lines`, their line in its dash pattern). On a log
-// axis a zero (below kZeroDeg) is an open marker on the bottom edge and breaks the line.
+// One method's points (and, with `lines`, their line in its dash pattern), in the
+// current window. On a log axis (log₁₀ units) a zero (below kZeroDeg) is an open
+// marker on the bottom edge and breaks the line.
 void draw_series(const std::string& method, const std::vector<double>& x, const std::vector<double>& y,
-                 const LogRange& yr, bool lines);
+                 const PlotAxis& y_axis, bool lines);
 
-// PLplot label function: x axis labels 2ᵏ for a log₂ axis; y axis labels 10ᵏ for a log₁₀ axis.
-void log_labels(PLINT axis, PLFLT value, char* label, PLINT length, PLPointer);
+// A panel's frame, grid and tick marks at its labelled ticks; leaves the panel's
+// window set for draw_series.
+void draw_frame(const PlotLayout& layout, const PlotPanel& panel);
 
-// Grid and axes of a plot with log₂ x (or linear x) and log₁₀ y.
-void log_axes(bool log_x);
-
-// The methods' legend at `position` (PL_POSITION_*), in `columns` columns, `y_offset`
-// (fraction of the viewport's height) from the edge.
-void legend(const std::vector<std::string>& names, PLINT position, int columns, double y_offset = 0.01);
-
-// `text` cut to its last `max_chars` characters (UTF-8 safe), with a leading ellipsis.
-std::string tail(const std::string& text, std::size_t max_chars);
-
-// Names written vertically under the slots 0 … span − 1 of the x axis.
-void joint_labels(const std::vector<std::string>& names, double span, double scale = 0.65);
+// Every text of the layout and its legend, where the layout puts them.
+void draw_texts_and_legend(const PlotLayout& layout);
 
 // PLplot writes the image through a stdio stream of ours (plsfile) whose writes go
 // to an AtomicOutput, so each one is checked (PLplot and cairo ignore failed

@@ -19,21 +19,13 @@ constexpr const char* kClipsPlotName = "clip_errors.png";
 // Every file the plots are written to: the three PNGs and their SVGs (same stem).
 std::vector<std::string> plot_file_names();
 
-// Every method has its own colour, marker and dash pattern, and its points are
-// offset slightly sideways so that methods with equal values stay visible; legends
-// sit outside the frames (inside worst_clip_joints, above its bars); log axes span the values above 1e-9°, and values below
-// (zero to round-off) are drawn as open markers on the bottom edge.
 // error_vs_spacing: against keep_every (log₂), three panels (log₁₀ degrees): RMS
 // over all samples, the median over clips of the clip RMS, and the max.
 // worst_clip_joints: RMS angle per joint of the worst clip at its largest keep_every.
 // clip_errors: each clip's RMS angle at the largest keep_every it was evaluated at.
-// The vertical axis of each plot as drawn, in degrees (a log axis from 10^lo to 10^hi):
-// it covers the values and stops at 180°, where angles stop. One per panel, in drawing order.
-struct AngleAxis {
-  std::string plot;  // its PNG's name
-  double lo_deg, hi_deg;
-};
-std::vector<AngleAxis> plot_angle_axes(const Summary& summary);
+// Every method has its own colour, marker and dash pattern (interp/method_style.h),
+// and its points are offset slightly sideways so that methods with equal values stay
+// visible. Axes, texts and legends go where eval/plot_layout.h puts them.
 
 // Not thread-safe (PLplot has global state): call from one thread.
 Status write_plots(const Summary& summary, const std::filesystem::path& dir);

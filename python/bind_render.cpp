@@ -21,7 +21,8 @@ namespace {
 std::vector<std::string> render(const py::object& input, const std::optional<std::string>& out_dir,
                                 const std::optional<std::vector<std::string>>& method_names_in, long long keep_every,
                                 const std::optional<std::string>& frames, const std::string& size,
-                                const std::string& trail, double trail_window, bool sheet, const std::string& colour,
+                                const std::string& trail, double trail_window, bool sheet, const std::string& view,
+                                const std::optional<std::string>& colour,
                                 const std::optional<std::string>& camera, const std::string& focus, bool strip,
                                 const std::optional<std::string>& video, double video_fps,
                                 const std::optional<std::string>& backend) {

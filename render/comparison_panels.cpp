@@ -1,5 +1,4 @@
-// A comparison frame's panels: side by side or overlaid, on the run's one
-// colour scale.
+// A comparison frame's panels: side by side or overlaid, on the run's one colour scale.
 #include "comparison_panels.h"
 
 #include "views.h"
@@ -14,8 +13,7 @@
 
 namespace rotinterp::render {
 
-RunScale run_colour_scale(const RebuiltClip &rebuild, std::size_t methods,
-                          const std::vector<std::size_t> &frames) {
+RunScale run_colour_scale(const RebuiltClip& rebuild, std::size_t methods, const std::vector<std::size_t>& frames) {
   std::vector<double> errors, joint_error;
   WorldPose pose;
   double largest = 0.0;
@@ -34,14 +32,12 @@ RunScale run_colour_scale(const RebuiltClip &rebuild, std::size_t methods,
   return s;
 }
 
-std::vector<std::shared_ptr<ErrorStrip>>
-error_strips(const RebuiltClip &rebuild, const PanelPlan &plan,
-             std::size_t first, std::size_t last) {
+std::vector<std::shared_ptr<ErrorStrip>> error_strips(const RebuiltClip& rebuild, const PanelPlan& plan,
+                                                      std::size_t first, std::size_t last) {
   const std::size_t methods = plan.methods.size();
   ErrorStrip shared;
   for (std::size_t k : rebuild.keys())
-    if (k >= first && k <= last)
-      shared.keys.push_back(k - first);
+    if (k >= first && k <= last) shared.keys.push_back(k - first);
   shared.start_s = rebuild.time(first) - rebuild.time(0);
   shared.end_s = rebuild.time(last) - rebuild.time(0);
   std::vector<StripLine> max_lines(methods), mean_lines(methods);
@@ -68,8 +64,7 @@ error_strips(const RebuiltClip &rebuild, const PanelPlan &plan,
   }
   for (std::size_t m = 0; m < methods; ++m) {
     auto strip = std::make_shared<ErrorStrip>(shared);
-    strip->quantity =
-        "joint error per frame: max over joints (bright), mean (dim)";
+    strip->quantity = "joint error per frame: max over joints (bright), mean (dim)";
     strip->lines = {std::move(mean_lines[m]), std::move(max_lines[m])};
     strips.push_back(std::move(strip));
   }
@@ -78,56 +73,42 @@ error_strips(const RebuiltClip &rebuild, const PanelPlan &plan,
 
 namespace {
 
-std::string error_text(const FrameError &e) {
-  return fmt::format("mean {:.2f}°  max {:.2f}°", e.mean, e.max);
-}
+std::string error_text(const FrameError& e) { return fmt::format("mean {:.2f}°  max {:.2f}°", e.mean, e.max); }
 
-} // namespace
+}  // namespace
 
-FramePanels frame_panels(const RebuiltClip &rebuild, const PanelPlan &plan,
-                         std::size_t f, const WorldPose &ghost) {
+FramePanels frame_panels(const RebuiltClip& rebuild, const PanelPlan& plan, std::size_t f, const WorldPose& ghost) {
   const std::size_t methods = plan.methods.size();
-  const Skeleton &skeleton = rebuild.skeleton();
+  const Skeleton& skeleton = rebuild.skeleton();
   FramePanels out;
   out.errors.resize(methods);
   out.joint_error.resize(methods);
   std::vector<WorldPose> poses(methods);
   std::vector<int> worst(methods, -1);
   for (std::size_t m = 0; m < methods; ++m)
-    out.errors[m] =
-        rebuild.method_pose(m, f, poses[m], &out.joint_error[m], &worst[m]);
-  const bool is_key =
-      std::binary_search(rebuild.keys().begin(), rebuild.keys().end(), f);
+    out.errors[m] = rebuild.method_pose(m, f, poses[m], &out.joint_error[m], &worst[m]);
+  const bool is_key = std::binary_search(rebuild.keys().begin(), rebuild.keys().end(), f);
   const std::string key = is_key ? "  (key)" : "";
   Panel base;
   base.ghost = ghost;
-  base.corner =
-      fmt::format("frame {}   {:.3f} s", f, rebuild.time(f) - rebuild.time(0));
-  if (plan.view)
-    base.view = *plan.view;
-  if (!plan.moving.empty())
-    base.view = plan.moving[f - plan.first];
-  auto label_worst = [&](Panel &p, std::size_t m, const std::string &prefix) {
-    if (worst[m] < 0 || !(out.errors[m].max > 0.0))
-      return;
+  base.corner = fmt::format("frame {}   {:.3f} s", f, rebuild.time(f) - rebuild.time(0));
+  if (plan.view) base.view = *plan.view;
+  if (!plan.moving.empty()) base.view = plan.moving[f - plan.first];
+  auto label_worst = [&](Panel& p, std::size_t m, const std::string& prefix) {
+    if (worst[m] < 0 || !(out.errors[m].max > 0.0)) return;
     p.label_joint = worst[m];
-    p.joint_label =
-        fmt::format("{}{} {:.1f}°", prefix,
-                    skeleton.joints[static_cast<std::size_t>(worst[m])].name,
-                    out.errors[m].max);
+    p.joint_label = fmt::format("{}{} {:.1f}°", prefix, skeleton.joints[static_cast<std::size_t>(worst[m])].name,
+                                out.errors[m].max);
   };
   if (plan.overlay) {
     Panel p = base;
-    p.title = fmt::format("{} over the truth (grey){}",
-                          fmt::join(plan.methods, ", "), key);
+    p.title = fmt::format("{} over the truth (grey){}", fmt::join(plan.methods, ", "), key);
     p.ghost_legend = "truth (the source's frames)";
     std::size_t worst_method = 0;
     for (std::size_t m = 0; m < methods; ++m) {
       p.figures.push_back(Figure{std::move(poses[m]), plan.colours[m],
-                                 fmt::format("{}  joints: {}", plan.methods[m],
-                                             error_text(out.errors[m]))});
-      if (out.errors[m].max > out.errors[worst_method].max)
-        worst_method = m;
+                                 fmt::format("{}  joints: {}", plan.methods[m], error_text(out.errors[m]))});
+      if (out.errors[m].max > out.errors[worst_method].max) worst_method = m;
     }
     // The worst joint of the worst method, labelled at its pose.
     label_worst(p, worst_method, plan.methods[worst_method] + ": ");
@@ -142,15 +123,13 @@ FramePanels frame_panels(const RebuiltClip &rebuild, const PanelPlan &plan,
   }
   for (std::size_t m = 0; m < methods; ++m) {
     Panel p = base;
-    p.title = fmt::format("{}  joints: {}{}", plan.methods[m],
-                          error_text(out.errors[m]), key);
+    p.title = fmt::format("{}  joints: {}{}", plan.methods[m], error_text(out.errors[m]), key);
     p.colour = plan.colours[m];
     p.pose = std::move(poses[m]);
     if (plan.error_colours) {
       p.colour_scale_deg = plan.scale.deg;
       p.colour_scale_saturated = plan.scale.saturated;
-      for (double e : out.joint_error[m])
-        p.joint_colours.push_back(error_colour(e, plan.scale.deg));
+      for (double e : out.joint_error[m]) p.joint_colours.push_back(error_colour(e, plan.scale.deg));
       label_worst(p, m, "");
     }
     if (m < plan.strips.size()) {
@@ -163,31 +142,24 @@ FramePanels frame_panels(const RebuiltClip &rebuild, const PanelPlan &plan,
   return out;
 }
 
-Rect sheet_size(const Rect &panel, std::size_t frames, int rows) {
+Rect sheet_size(const Rect& panel, std::size_t frames, int rows) {
   const int columns = static_cast<int>(frames);
-  const double scale =
-      std::min({1.0,
-                static_cast<double>(kMaxImageSide) /
-                    (static_cast<double>(panel.width) * columns),
-                static_cast<double>(kMaxImageSide) /
-                    (static_cast<double>(panel.height) * rows)});
+  const double scale = std::min({1.0, static_cast<double>(kMaxImageSide) / (static_cast<double>(panel.width) * columns),
+                                 static_cast<double>(kMaxImageSide) / (static_cast<double>(panel.height) * rows)});
   const int cell_w = static_cast<int>(std::floor(panel.width * scale));
   const int cell_h = static_cast<int>(std::floor(panel.height * scale));
   return Rect{0, 0, cell_w * columns, cell_h * rows};
 }
 
-std::vector<Panel> sheet_cells(const PanelPlan &plan, const FramePanels &frame,
-                               std::size_t f) {
+std::vector<Panel> sheet_cells(const PanelPlan& plan, const FramePanels& frame, std::size_t f) {
   std::vector<Panel> cells = frame.panels;
   for (std::size_t i = 0; i < cells.size(); ++i) {
-    Panel &cell = cells[i];
+    Panel& cell = cells[i];
     cell.corner.clear();
-    cell.title = plan.overlay
-                     ? fmt::format("frame {}", f)
-                     : fmt::format("{} #{}  joints {}", plan.methods[i], f,
-                                   error_text(frame.errors[i]));
+    cell.title = plan.overlay ? fmt::format("frame {}", f)
+                              : fmt::format("{} #{}  joints {}", plan.methods[i], f, error_text(frame.errors[i]));
   }
   return cells;
 }
 
-} // namespace rotinterp::render
+}  // namespace rotinterp::render

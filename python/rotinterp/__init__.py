@@ -135,11 +135,13 @@ def reduce(clip, method="slerp", tolerance=None, shell_distance=None, tolerance_
 
 
 def render(input, out_dir=None, methods=None, keep_every=10, frames=None, size="960x540", trail="", trail_window=1.0,
-           sheet=False, colour="error", camera=None, focus="", strip=True, video=None, video_fps=0.0, backend=None):
+           sheet=False, view="overlay", colour=None, camera=None, focus="", strip=True, video=None, video_fps=0.0,
+           backend=None):
     """Draw comparison frames offscreen, as ``rotinterp render`` does (the same PNGs for
     the same options): the clip (a Clip or a path) rebuilt by each method from every
-    ``keep_every``-th frame, side by side. Options as the command's, in its forms:
-    ``frames`` "START:END:STEP", ``size`` "WxH", ``colour`` "error" or "method", ``camera``
+    ``keep_every``-th frame, over the truth in one panel (``view`` "overlay") or side by
+    side ("side"). Options as the command's, in its forms: ``frames`` "START:END:STEP",
+    ``size`` "WxH", ``colour`` (side only) "error" or "method", ``camera``
     "fixed" or "follow", ``backend`` "osmesa" or "egl". ``methods`` may name "source" when
     ``input`` is the path of a file with motion of its own (FBX curves, glTF samplers, BVH
     frames): a panel of the file's own motion, as
@@ -150,7 +152,7 @@ def render(input, out_dir=None, methods=None, keep_every=10, frames=None, size="
         raise RuntimeError("rotinterp was built without the renderer (ROTINTERP_BUILD_RENDER=OFF)")
     return _rotinterp.render(input if isinstance(input, Clip) else str(input),
                              None if out_dir is None else str(out_dir), None if methods is None else list(methods),
-                             keep_every, frames, size, trail, trail_window, sheet, colour, camera, focus, strip,
+                             keep_every, frames, size, trail, trail_window, sheet, view, colour, camera, focus, strip,
                              None if video is None else str(video), video_fps, backend)
 
 

@@ -104,7 +104,8 @@ def reduce(clip: Clip, method: str = "slerp", tolerance: str | Sequence[str] | N
            translation: str = "cubic", metres_per_unit: float | None = None) -> dict[str, Any]: ...
 def render(input: Path | Clip, out_dir: Path | None = None, methods: Sequence[str] | None = None, keep_every: int = 10,
            frames: str | None = None, size: str = "960x540", trail: str = "", trail_window: float = 1.0,
-           sheet: bool = False, colour: str = "error", camera: str | None = None, focus: str = "",
+           sheet: bool = False, view: str = "overlay", colour: str | None = None, camera: str | None = None,
+           focus: str = "",
            strip: bool = True, video: Path | None = None, video_fps: float = 0.0,
            backend: str | None = None) -> list[str]: ...
 def angle(a: QuatLike, b: QuatLike, scalar_first: bool = False) -> np.ndarray: ...

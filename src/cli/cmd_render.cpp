@@ -157,6 +157,8 @@ int run_render(const RenderArgs& a) {
   options.sheet = a.sheet;
   if (a.sheet && a.out_dir.empty()) return fail_usage("--sheet needs -o DIR");
   if (Status s = render::check_colouring_view(options.view, !a.colour.empty()); !s) return fail_usage(s.error());
+  if (options.view == render::View::overlay && !a.trail.empty())
+    return fail_usage("--trail draws one method's curve in each panel: use it with --view side");
   if (!a.colour.empty()) {
     auto colouring = render::parse_colouring(a.colour);
     if (!colouring) return fail_usage(colouring.error());

@@ -233,7 +233,7 @@ TEST_F(ExitCodes, RenderFailuresLeaveNoOutput) {
       {io + "--size 0x0", 2, {"--size '0x0'"}, "@/r"},
       {io + "--size big", 2, {"--size", "WxH"}, "@/r"},
       {io + "--size 9000x100", 2, {"8192"}, "@/r"},
-      {io + "--trail NoSuchJoint", 1, {"@/good.bvh: ", "NoSuchJoint"}, "@/r"},
+      {io + "--view side --trail NoSuchJoint", 1, {"@/good.bvh: ", "NoSuchJoint"}, "@/r"},
       {io + "--backend vulkan", 2, {"vulkan"}, "@/r"},
       {"render @/good.bvh -o @/afile/r -q", 1, {"rotinterp: @/afile: cannot create the output folder"}},
       {"render @/good.bvh -q", 2, {"render: give -o DIR (frame PNGs), --video FILE, or both"}},

@@ -3,7 +3,7 @@
 
 #include "views.h"
 
-#include "rotinterp/interp/method_style.h"
+#include "rotinterp/palette/method_style.h"
 #include "rotinterp/render/colour_map.h"
 
 namespace rotinterp::render {

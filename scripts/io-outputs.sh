@@ -6,9 +6,11 @@
 # reduce to json/glb/fbx, info as text, JSON and curves, eval's tables, the
 # file's own motion (-m source) and several takes (--anim all).
 # Usage: bash scripts/io-outputs.sh BUILD_DIR OUT_DIR
+# Give the two runs OUT_DIRs whose paths are equally long (/work/x-before,
+# /work/x-after2): info --summary sizes its columns to the paths it prints.
 # Nothing here varies between runs but the output paths in messages (rewritten to
 # OUT/) and the clock (rewritten to T, or removed; see the end). The FBX writer
-# embeds a fixed creation time and FileId (src/io/fbx_write.cpp), so FBX files
+# embeds a fixed creation time and FileId (src/io/fbx/fbx_write.cpp), so FBX files
 # compare as they are; assimp's Collada exporter writes the time of day.
 set -euo pipefail
 cd "$(dirname "$0")/.."

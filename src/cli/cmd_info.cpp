@@ -8,8 +8,8 @@
 #include "rotinterp/clip/frames.h"
 #include "rotinterp/clip/loop.h"
 #include "rotinterp/core/work_queue.h"
-#include "rotinterp/io/dataset.h"
-#include "rotinterp/io/folder_run.h"
+#include "rotinterp/batch/dataset.h"
+#include "rotinterp/batch/folder_run.h"
 #include "rotinterp/io/info.h"
 
 #include <CLI/CLI.hpp>

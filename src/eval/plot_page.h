@@ -1,9 +1,9 @@
 // The PLplot page every eval plot is drawn on: the white page and its colour map
-// (methods in their interp/method_style.h colours, markers and dashes), log axes,
+// (methods in their palette/method_style.h colours, markers and dashes), log axes,
 // series, legends and labels, written through an AtomicOutput.
 #pragma once
 
-#include "rotinterp/io/atomic_file.h"
+#include "rotinterp/io/files/atomic_file.h"
 
 #include <plplot/plplot.h>
 
@@ -14,7 +14,7 @@
 namespace rotinterp::plot {
 
 // Colour map 0: 0 background (white), 1 axes and text (black), 2 grid (light grey),
-// 3… the method styles (interp/method_style.h), one per slot.
+// 3… the method styles (palette/method_style.h), one per slot.
 constexpr int kText = 1, kGrid = 2, kFirstSeries = 3;
 // Angles below this (degrees) are zero to round-off: drawn as zeros on a log axis
 // (a method that reproduces a still clip gives 1e-14°, which would stretch the axis

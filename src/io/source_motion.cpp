@@ -3,8 +3,8 @@
 // BVH frames).
 #include "rotinterp/io/source_motion.h"
 
-#include "rotinterp/io/fbx_source.h"
-#include "rotinterp/io/gltf_source.h"
+#include "rotinterp/io/fbx/fbx_source.h"
+#include "rotinterp/io/gltf/gltf_source.h"
 #include "rotinterp/io/info.h"
 #include "rotinterp/track/sample.h"
 
@@ -92,12 +92,6 @@ Result<FileSource> gltf_source(const std::filesystem::path& path, ClipFileInfo&&
 
 }  // namespace
 
-bool is_source_method(const std::string& name) {
-  const std::string want = kSourceMethodName;
-  return name.size() == want.size() &&
-         std::equal(name.begin(), name.end(), want.begin(),
-                    [](char a, char b) { return std::tolower(static_cast<unsigned char>(a)) == b; });
-}
 
 std::size_t FileSource::own_joints() const { return static_cast<std::size_t>(std::count(own.begin(), own.end(), true)); }
 

@@ -1,7 +1,7 @@
 // The plots are written as real PNG files, atomically.
 #include "rotinterp/eval/plots.h"
 #include "rotinterp/interp/interpolator.h"
-#include "rotinterp/interp/method_style.h"
+#include "rotinterp/palette/method_style.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,6 @@
 // Datasets: clip discovery, shards, mirrored output paths and a folder's rate audit.
 #include "rotinterp/batch/dataset.h"
+#include "rotinterp/io/files/formats.h"
 
 #include "rotinterp/clip/bvh_layout.h"
 #include "rotinterp/clip/frames.h"
@@ -147,7 +148,7 @@ Result<std::vector<MirroredOutput>> mirror_outputs(const std::vector<std::string
     if (inside(input, out_dir)) continue;
     fs::path target = out_dir / relative_to_named(input, named);
     std::string ext = format.empty() ? target.extension().string() : "." + format;
-    if (!can_write_format(fs::path("x" + ext))) ext = ".bvh";
+    if (!can_write_format(fs::path("x" + ext))) ext = "." + std::string(formats().front().name);  // the default
     target.replace_extension(ext);
     const auto [at, fresh] = taken.emplace(target, input);
     if (!fresh)

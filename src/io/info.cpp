@@ -1,5 +1,6 @@
 // What `rotinterp info` says of a clip beside its data: a static scene's contents, a clip's oddities.
 #include "rotinterp/io/info.h"
+#include "rotinterp/io/files/formats.h"
 
 #include "rotinterp/io/record/read_parts.h"
 
@@ -39,7 +40,7 @@ bool uniform(const std::vector<double>& t) {
 
 
 Result<ClipFileInfo> inspect_clip_for_info(const std::filesystem::path& path, ReadOptions options) {
-  if (options.read_curves || extension_of(path) != "fbx") return inspect_clip(path, options);
+  if (options.read_curves || !is_format(extension_of(path), FormatId::fbx)) return inspect_clip(path, options);
   options.read_curves = true;
   Result<ClipFileInfo> with_curves = inspect_clip(path, options);
   if (with_curves || with_curves.error_kind() == ErrorKind::no_animation) return with_curves;

@@ -2,6 +2,7 @@
 // (io/source_motion.h); each format's own reader behind it (FBX curves, glTF samplers,
 // BVH frames).
 #include "rotinterp/io/source_motion.h"
+#include "rotinterp/io/files/formats.h"
 
 #include "rotinterp/io/fbx/fbx_source.h"
 #include "rotinterp/io/gltf/gltf_source.h"
@@ -106,8 +107,8 @@ Result<FileSource> read_file_source(const std::filesystem::path& path, const Rea
     if (!fbx) return fbx.failure();
     return fbx_file_source(std::make_shared<const SourceClip>(std::move(*fbx)), label);
   }
-  if (info->format == "glb" || info->format == "gltf") return gltf_source(path, std::move(*info));
-  if (info->format == "bvh") return frames_source(std::move(info->clip));
+  if (is_format(info->format, FormatId::glb) || is_format(info->format, FormatId::gltf)) return gltf_source(path, std::move(*info));
+  if (is_format(info->format, FormatId::bvh)) return frames_source(std::move(info->clip));
   return make_error(label + ": --method source replays a file's own motion (FBX curves, glTF animation samplers, BVH "
                     "frames); this is a '" + info->format + "' file (use an interpolator, e.g. clamped)");
 }

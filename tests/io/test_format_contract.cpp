@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -131,6 +132,35 @@ TEST_P(FormatContract, EveryTakeReadsBackUnderItsName) {
 
 INSTANTIATE_TEST_SUITE_P(EveryWritableFormat, FormatContract, ::testing::ValuesIn(writable_formats()),
                          [](const auto& info) { return std::string(info.param->name); });
+
+}  // namespace
+}  // namespace rotinterp
+
+namespace rotinterp {
+namespace {
+
+// docs/formats.md's first table has a row for every format of the registry, and says
+// it writes exactly those the registry writes.
+TEST(FormatRegistry, TheDocsFormatTableHasARowPerFormat) {
+  const std::string page = test::read_text(std::filesystem::path(ROTINTERP_SOURCE_DIR) / "docs" / "formats.md");
+  std::vector<std::string> rows;  // the first table's rows
+  std::size_t at = page.find("\n| format |");
+  ASSERT_NE(at, std::string::npos);
+  for (std::size_t end; (end = page.find('\n', at + 1)) != std::string::npos && page.compare(at + 1, 1, "|") == 0;
+       at = end)
+    rows.push_back(page.substr(at + 1, end - at - 1));
+  for (const FormatInfo& f : formats()) {
+    const auto row = std::find_if(rows.begin(), rows.end(), [&](const std::string& r) {
+      return r.find(std::string(f.title)) != std::string::npos && r.find("| format") != 0;
+    });
+    ASSERT_NE(row, rows.end()) << f.title << " has no row";
+    // Columns: format | reads | writes | round trip.
+    std::vector<std::string> cells;
+    for (std::size_t p = 1, q; (q = row->find(" |", p)) != std::string::npos; p = q + 2) cells.push_back(row->substr(p, q - p));
+    ASSERT_GE(cells.size(), 3u) << *row;
+    EXPECT_EQ(cells[2].find("—") == std::string::npos, f.writes) << f.title << ": " << cells[2];
+  }
+}
 
 }  // namespace
 }  // namespace rotinterp

@@ -2,6 +2,7 @@
 // and translations (BvhFile's accessors; long files on two threads).
 #include "rotinterp/io/files/huge_pages.h"
 #include "rotinterp/io/bvh/bvh.h"
+#include "rotinterp/io/files/formats.h"
 #include "rotinterp/core/work_queue.h"
 
 #include <cmath>
@@ -118,7 +119,7 @@ Clip bvh_to_clip(const BvhFile& file, const std::string& name, unsigned threads)
   clip.skeleton = bvh_skeleton(file);
   clip.frame_time = file.frame_time;
   clip.bvh_layout = std::make_shared<const BvhLayout>(bvh_layout(file));
-  clip.source_format = "bvh";
+  clip.source_format = format_info(FormatId::bvh).name;
   const std::size_t n = file.joints.size();
   const std::size_t frames = file.frames;
   std::vector<double> times(frames);

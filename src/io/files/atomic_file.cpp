@@ -1,4 +1,4 @@
-// Atomic writes: temporary file, checked writes, fsync, rename; inputs guarded from being overwritten.
+// Atomic writes: temporary file, checked writes, fsync, rename.
 #include "rotinterp/io/files/atomic_file.h"
 
 #include "rotinterp/io/files/output_dirs.h"
@@ -127,14 +127,6 @@ fs::path claim_temp_name(const fs::path& target, int& slot, int& err, Create cre
   return {};
 }
 
-// Inputs registered with protect_input: (device, inode, path as given).
-struct InputId {
-  dev_t dev;
-  ino_t ino;
-  std::string path;
-};
-std::mutex g_inputs_mutex;
-std::vector<InputId> g_inputs;
 
 }  // namespace
 
@@ -328,43 +320,7 @@ Status write_file_atomically(const fs::path& target, const std::function<Status(
   return out.commit();
 }
 
-Result<DirectoryLock> DirectoryLock::acquire(const fs::path& dir) {
-  if (Status made = create_output_directories(dir); !made) return made.failure();
-  // The directory itself is locked: no lock file is left in it.
-  const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (fd < 0) return write_error(dir.string() + ": cannot lock the output directory: " + reason(errno));
-  if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
-    const int err = errno;
-    ::close(fd);
-    if (err == EWOULDBLOCK)
-      return write_error(dir.string() + ": another rotinterp run is writing to this directory; wait for it or choose "
-                        "another output directory");
-    return write_error(dir.string() + ": cannot lock the output directory: " + reason(err));
-  }
-  return DirectoryLock(fd);
-}
 
-DirectoryLock::~DirectoryLock() {
-  if (fd_ >= 0) ::close(fd_);
-}
-
-void protect_input(const fs::path& input) {
-  struct stat st {};
-  if (::stat(input.c_str(), &st) != 0) return;
-  std::lock_guard<std::mutex> lock(g_inputs_mutex);
-  g_inputs.push_back({st.st_dev, st.st_ino, input.string()});
-}
-
-Status check_not_an_input(const fs::path& output) {
-  struct stat st {};
-  if (::stat(output.c_str(), &st) != 0) return Ok{};
-  std::lock_guard<std::mutex> lock(g_inputs_mutex);
-  for (const InputId& in : g_inputs)
-    if (in.dev == st.st_dev && in.ino == st.st_ino)
-      return write_error(output.string() + ": is the same file as the input " + in.path +
-                        "; refusing to overwrite an input (choose another output)");
-  return Ok{};
-}
 
 void install_interrupt_cleanup(const char* line) {
   g_interrupt_line = line;

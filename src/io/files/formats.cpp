@@ -12,9 +12,20 @@ const std::vector<FormatInfo>& formats() {
       {FormatId::fbx, "fbx", "FBX", true, true, true, true, true, false, false, "declared"},
       {FormatId::glb, "glb", "GLB", true, true, true, true, false, false, false, "metres"},
       {FormatId::gltf, "gltf", "glTF", true, true, true, true, false, false, false, "metres"},
-      {FormatId::dae, "dae", "Collada", true, true, false, false, false, false, false, "declared"},
+      {FormatId::dae, "dae", "Collada", true, true, false, false, false, false, false, "metres"},
   };
   return all;
+}
+
+const FormatInfo& format_info(FormatId id) {
+  for (const FormatInfo& f : formats())
+    if (f.id == id) return f;
+  return formats().front();  // unreachable: every id has its entry
+}
+
+bool is_format(std::string_view name_or_extension, FormatId id) {
+  const FormatInfo* f = format_named(name_or_extension);
+  return f && f->id == id;
 }
 
 const FormatInfo* format_named(std::string_view name) {

@@ -13,7 +13,7 @@ const std::set<std::string>& assimp_import_extensions() {
   static const std::set<std::string> known = [] {
     std::string list;  // "*.3ds;*.bvh;…"
     Assimp::Importer().GetExtensionList(list);
-    std::set<std::string> out{"bvh"};
+    std::set<std::string> out{std::string(format_info(FormatId::bvh).name)};  // our own pass
     std::stringstream items(list);
     for (std::string item; std::getline(items, item, ';');)
       if (item.size() > 2 && item.compare(0, 2, "*.") == 0) out.insert(lower(item.substr(2)));

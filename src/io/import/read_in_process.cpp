@@ -3,6 +3,7 @@
 // scene_to_clip(); BVH through our own pass, with ReadOptions::cross_check_with_assimp
 // compared with assimp's reading; FBX 6.1 (which assimp refuses) through our own
 // FBX reader (fbx_legacy.h).
+#include "rotinterp/io/files/formats.h"
 #include "rotinterp/io/files/one_line.h"
 #include "fbx_legacy.h"
 #include "rotinterp/io/import/import.h"
@@ -112,7 +113,7 @@ Status read_with_assimp(const fs::path& path, const ReadOptions& options, ClipFi
                       ErrorKind::no_animation);
   // FBX: assimp re-bases each take to its span's start (LocalStart, else its first
   // key), where its file time is out of sight (read_here adds it from our own reader).
-  const bool fbx = info.format == "fbx";
+  const bool fbx = is_format(info.format, FormatId::fbx);
   for (unsigned a = 0; a < scene->mNumAnimations; ++a) {
     const aiAnimation* an = scene->mAnimations[a];
     AnimationSummary s;
@@ -216,11 +217,12 @@ Status read_here(const fs::path& path, const ReadOptions& options, ClipFileInfo&
   if (Status s = check_file(path, label); !s) return s.failure();
   const std::string ext = extension_of(path);
   info.format = ext;
-  Status st = is_bvh(path, ext)                       ? read_bvh_checked(path, options, info, warn)
-              : ext == "fbx" && is_legacy_fbx(path) ? read_legacy_fbx(path, options, info, warn)
-                                                    : read_with_assimp(path, options, info, warn);
+  const bool fbx = is_format(ext, FormatId::fbx);
+  Status st = is_bvh(path, ext)                ? read_bvh_checked(path, options, info, warn)
+              : fbx && is_legacy_fbx(path) ? read_legacy_fbx(path, options, info, warn)
+                                             : read_with_assimp(path, options, info, warn);
   if (!st) return st;
-  if (options.read_curves && ext == "fbx" && !info.curves) {
+  if (options.read_curves && fbx && !info.curves) {
     Result<FbxAnimation> curves = read_fbx_curves_file(path, label);
     if (!curves) return curves.failure();
     info.curves = std::move(*curves);

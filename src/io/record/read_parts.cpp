@@ -1,5 +1,6 @@
 // The steps both the dispatch and the importer's in-process read run (read_parts.h).
 #include "rotinterp/io/record/read_parts.h"
+#include "rotinterp/io/files/formats.h"
 #include "rotinterp/io/files/huge_pages.h"
 
 #include <fcntl.h>
@@ -105,7 +106,7 @@ Status check_file(const fs::path& path, const std::string& label) {
 }
 
 bool is_bvh(const fs::path& path, const std::string& ext) {
-  if (ext == "bvh") return true;
+  if (is_format(ext, FormatId::bvh)) return true;
   std::ifstream f(path, std::ios::binary);
   std::string head(64, '\0');
   f.read(head.data(), 64);
@@ -121,7 +122,7 @@ Result<BvhFile> read_bvh_file(const fs::path& path, ClipFileInfo& info, const Wa
   if (Status st = text.open(path, label); !st) return make_error(st.error(), ErrorKind::unreadable);
   Result<BvhFile> bvh = parse_bvh(text.text(), label);
   if (!bvh) return make_error(bvh.error(), ErrorKind::unreadable);
-  info.format = "bvh";
+  info.format = format_info(FormatId::bvh).name;
   if (bvh->extra_rows > 0)
     warn(label + ": " + std::to_string(bvh->extra_rows) + " data row(s) after the " + std::to_string(bvh->frames) +
          " declared frames ignored");
@@ -153,7 +154,8 @@ namespace {
 // <unit> is applied by assimp, so both are in metres; any other file states none.
 void settle_unit(ClipFileInfo& info, const std::string& label, const ReadOptions& options) {
   ClipUnit& unit = info.clip.unit;
-  if (unit.origin != UnitOrigin::declared && (info.format == "gltf" || info.format == "glb" || info.format == "dae"))
+  const FormatInfo* format = format_named(info.format);
+  if (unit.origin != UnitOrigin::declared && format && format->unit == "metres")
     unit = {1.0, UnitOrigin::declared, "declared by the format: " + info.format + " is in metres"};
   if (unit.origin == UnitOrigin::declared) {
     if (options.unit)

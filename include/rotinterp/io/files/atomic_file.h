@@ -16,7 +16,7 @@
 //  4. SIGINT/SIGTERM/SIGHUP remove the named temporaries still open and the
 //     output folders the run created, if still empty (install_interrupt_cleanup()).
 //  5. An output that is the same file (device and inode: links count) as a
-//     registered input (protect_input()) is refused.
+//     registered input (protect_input(), io/files/run_guard.h) is refused.
 //
 // Test seam: with ROTINTERP_TEST_FAULT_AT=N in the environment, the Nth checked
 // operation of the process (a write, an fsync or a close, counted from 1) fails
@@ -24,6 +24,7 @@
 #pragma once
 
 #include "rotinterp/core/result.h"
+#include "rotinterp/io/files/run_guard.h"  // commit() refuses a registered input (5.)
 
 #include <cstddef>
 #include <filesystem>
@@ -77,23 +78,6 @@ class AtomicOutput {
 // meanwhile is handled afterwards). Stops at the first failure.
 Status commit_together(const std::vector<AtomicOutput*>& outputs);
 
-// An exclusive lock on an output directory, created if missing (flock on the directory itself, so no
-// lock file is left; released when this goes out of scope or the process ends,
-// even by SIGKILL), so that two runs writing the same multi-file output cannot mix
-// their files.
-class DirectoryLock {
- public:
-  // Error (one line) when another process holds the lock, or it cannot be taken.
-  static Result<DirectoryLock> acquire(const std::filesystem::path& dir);
-  DirectoryLock(DirectoryLock&& other) noexcept : fd_(other.fd_) { other.fd_ = -1; }
-  DirectoryLock& operator=(DirectoryLock&&) = delete;
-  DirectoryLock(const DirectoryLock&) = delete;
-  ~DirectoryLock();
-
- private:
-  explicit DirectoryLock(int fd) : fd_(fd) {}
-  int fd_ = -1;
-};
 
 // Writes `data` to `fd` in full, retrying short writes and EINTR. Error:
 // "<label>: cannot write: <reason>". Counts as checked operations for the seam.
@@ -108,13 +92,6 @@ Status write_file_atomically(const std::filesystem::path& target, const std::fun
 // The same, written into `out` without committing it (see commit_together).
 Status write_to(AtomicOutput& out, const std::function<Status(std::ostream&)>& write);
 
-// Registers an input file: an AtomicOutput whose target is the same file (same
-// device and inode, so hard links and symlinks count) refuses to commit.
-// A path that does not exist is ignored. Thread-safe.
-void protect_input(const std::filesystem::path& input);
-// An error ("OUT is the same file as the input IN …") when `output` is a
-// registered input; Ok otherwise (also when it does not exist yet).
-Status check_not_an_input(const std::filesystem::path& output);
 
 // Installs SIGINT/SIGTERM/SIGHUP handlers that delete live temporary files and the
 // output folders the run created that are still empty (io/output_dirs.h), write

@@ -30,7 +30,8 @@ struct FormatInfo {
   // resampled on its frame grid before it is written.
   bool frames_only = false;
   // How a read file gets its unit: "inferred" (the figure's size; --unit), "declared"
-  // (the file states it) or "metres" (the format's own).
+  // (the file states it) or "metres" (the format's own; Collada's <unit> is applied
+  // on reading).
   std::string_view unit;
 };
 
@@ -41,6 +42,9 @@ const std::vector<FormatInfo>& formats();
 // nullptr for one the registry does not know.
 const FormatInfo* format_named(std::string_view name_or_extension);
 const FormatInfo* format_of(const std::filesystem::path& path);
+const FormatInfo& format_info(FormatId id);
+// Whether a name or extension ("fbx", ".FBX", a ClipFileInfo::format) is format `id`.
+bool is_format(std::string_view name_or_extension, FormatId id);
 
 // The names of the formats `keep` accepts, for messages: "bvh, fbx, glb, gltf or dae"
 // (`last` between the last two; ", " with `last` = ", "); `dot` puts a '.' before each.

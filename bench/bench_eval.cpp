@@ -18,7 +18,7 @@
 // --metrics: that last part alone (--method: for that method only).
 #include "rotinterp/eval/batch.h"
 #include "rotinterp/eval/evaluate_clip.h"
-#include "rotinterp/io/dataset.h"
+#include "rotinterp/batch/dataset.h"
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/io/read.h"
 

@@ -8,7 +8,7 @@
 // Prints per file and in total: our time, assimp's, and their ratio (the issue's
 // budget: at most 1.5). assimp is configured as the reader configures it
 // (no skeleton meshes, pivots preserved).
-#include "rotinterp/io/fbx_curves.h"
+#include "rotinterp/io/fbx/fbx_curves.h"
 
 #include <assimp/Importer.hpp>
 #include <assimp/config.h>

@@ -1,6 +1,6 @@
 // CPU seconds of the whole process (all threads) and of its children, finished or
 // still running — the reader's assimp imports run in importer processes that
-// outlive each file (src/io/import.h): less sensitive than wall time to other work
+// outlive each file (include/rotinterp/io/process/importer.h): less sensitive than wall time to other work
 // on a shared machine, for the single-threaded ratios.
 #pragma once
 

@@ -4,7 +4,7 @@
 #include "rotinterp/clip/frames.h"
 #include "rotinterp/clip/units.h"
 #include "rotinterp/eval/evaluate_clip.h"
-#include "rotinterp/io/euler.h"
+#include "rotinterp/io/files/euler.h"
 #include "rotinterp/io/write.h"
 
 #include <cmath>

@@ -1,5 +1,6 @@
 // The commands on clips: read_clip, write_clip, resample, evaluate.
 #include "common.h"
+#include "rotinterp/io/files/formats.h"
 #include "rotinterp/clip/frames.h"
 #include "rotinterp/clip/metrics.h"
 #include "rotinterp/clip/resample.h"
@@ -8,7 +9,8 @@
 #include "rotinterp/eval/error_row.h"
 #include "rotinterp/eval/evaluate_clip.h"
 #include "rotinterp/interp/interpolator.h"
-#include "rotinterp/io/fbx_source.h"
+#include "rotinterp/io/fbx/fbx_source.h"
+#include "rotinterp/io/source_motion.h"
 #include "rotinterp/io/info.h"
 #include "rotinterp/io/read.h"
 #include "rotinterp/io/write.h"
@@ -46,7 +48,7 @@ namespace fs = std::filesystem;
 
 void write_path(const Clip& clip, const fs::path& path, const std::string& bvh_order) {
   if (!can_write_format(path))
-    value_error("output '" + path.string() + "': unknown format (use .bvh, .fbx, .glb, .gltf or .dae)");
+    value_error("output '" + path.string() + "': unknown format (use " + format_names(writable, " or ", true) + ")");
   WriteOptions o;
   o.bvh_order = bvh_order;
   Status s = Ok{};

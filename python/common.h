@@ -9,7 +9,8 @@
 #pragma once
 
 #include "rotinterp/clip/clip.h"
-#include "rotinterp/io/fbx_source.h"
+#include "rotinterp/io/fbx/fbx_source.h"
+#include "rotinterp/io/source_motion.h"
 #include "rotinterp/core/result.h"
 #include "rotinterp/core/rotation.h"
 #include "rotinterp/interp/continued.h"

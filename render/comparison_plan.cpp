@@ -9,7 +9,7 @@
 #include "rotinterp/clip/frames.h"
 #include "rotinterp/clip/rebuild.h"
 #include "rotinterp/interp/interpolator.h"
-#include "rotinterp/io/source_motion.h"
+#include "rotinterp/io/files/source_method.h"
 #include "rotinterp/render/layout.h"
 #include "rotinterp/render/video.h"
 

@@ -1,7 +1,7 @@
 // image: the RGB image and its atomic PNG write.
 #include "rotinterp/render/image.h"
 
-#include "rotinterp/io/atomic_file.h"
+#include "rotinterp/io/files/atomic_file.h"
 
 #include <zlib.h>
 

@@ -1,7 +1,7 @@
 // A comparison panel's parts from the rebuild: the method's colour and its trail.
 #include "panel_parts.h"
 
-#include "rotinterp/interp/method_style.h"
+#include "rotinterp/palette/method_style.h"
 
 namespace rotinterp::render {
 

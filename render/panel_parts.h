@@ -12,7 +12,7 @@
 
 namespace rotinterp::render {
 
-// A method's colour: its registry slot's (interp/method_style.h), as in eval's plots.
+// A method's colour: its registry slot's (palette/method_style.h), as in eval's plots.
 Colour method_colour(const std::string& method);
 
 // Method m's trail of `joint`'s bone direction over frames first…last.

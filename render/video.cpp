@@ -1,7 +1,7 @@
 // video: drawn frames piped raw to ffmpeg, the output committed atomically.
 #include "rotinterp/render/video.h"
 
-#include "rotinterp/io/atomic_file.h"
+#include "rotinterp/io/files/atomic_file.h"
 
 #include <fmt/format.h>
 

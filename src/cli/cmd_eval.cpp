@@ -3,12 +3,12 @@
 #include "common.h"
 #include "rotinterp/clip/units.h"
 #include "rotinterp/eval/batch.h"
-#include "rotinterp/io/dataset.h"
+#include "rotinterp/batch/dataset.h"
 #include "rotinterp/eval/plots.h"
 #include "rotinterp/eval/source_truth.h"
 #include "rotinterp/eval/synth_truth.h"
 #include "rotinterp/interp/interpolator.h"
-#include "rotinterp/io/atomic_file.h"
+#include "rotinterp/io/files/atomic_file.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>

@@ -8,8 +8,8 @@
 #include "rotinterp/clip/frames.h"
 #include "rotinterp/clip/loop.h"
 #include "rotinterp/core/work_queue.h"
-#include "rotinterp/io/dataset.h"
-#include "rotinterp/io/folder_run.h"
+#include "rotinterp/batch/dataset.h"
+#include "rotinterp/batch/folder_run.h"
 #include "rotinterp/io/info.h"
 
 #include <CLI/CLI.hpp>
@@ -282,7 +282,7 @@ int run_info(const InfoArgs& args) {
   fmt::print("animations:  {}\n", info->animations.size());
   for (std::size_t a = 0; a < info->animations.size(); ++a) {
     const AnimationSummary& s = info->animations[a];
-    if (info->format == "bvh")
+    if (is_format(info->format, FormatId::bvh))
       fmt::print("  {}{} '{}'  {:.6g} s  {}\n", a == info->selected ? "*" : " ", a, s.name, s.duration, bvh_take_text(clip));
     else
       fmt::print("  {}{} '{}'  {}  {}  {} keys  {} channels{}\n", a == info->selected ? "*" : " ", a, s.name,

@@ -7,7 +7,7 @@
 //                  [--manifest FILE.csv]: a whole dataset, its layout mirrored under OUTDIR.
 #include "cmd_reduce.h"
 #include "common.h"
-#include "rotinterp/io/atomic_file.h"
+#include "rotinterp/io/files/atomic_file.h"
 #include "rotinterp/io/takes.h"
 #include "rotinterp/reduce/reduce.h"
 
@@ -85,8 +85,10 @@ std::string lower_extension(const std::string& path) {
 
 std::string reduce_output_problem(const std::string& output, const std::string& method, bool loop) {
   const std::string ext = lower_extension(output);
-  const bool gltf = ext == ".glb" || ext == ".gltf", fbx = ext == ".fbx";
-  if (!gltf && !fbx && ext != ".json") return "output '" + output + "': unknown format (use .json, .glb, .gltf or .fbx)";
+  const FormatInfo* format = format_named(ext);
+  const bool fbx = format && format->id == FormatId::fbx, gltf = format && format->curves && !fbx;
+  if (!gltf && !fbx && ext != ".json")
+    return "output '" + output + "': unknown format (use .json, " + format_names(keeps_curves, " or ", true) + ")";
   if (gltf && method != "slerp" && method != "gltf-cubic")
     return "a glTF viewer replays only --method slerp (LINEAR) or gltf-cubic (CUBICSPLINE); write .json for " + method;
   if (fbx && loop) return "--loop: FBX curves have no periodic form; write .json, .glb or .gltf for a cycle";

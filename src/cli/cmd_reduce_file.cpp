@@ -3,8 +3,8 @@
 #include "common.h"
 #include "rotinterp/clip/units.h"
 #include "rotinterp/interp/interpolator.h"
-#include "rotinterp/io/atomic_file.h"
-#include "rotinterp/io/fbx_reduced.h"
+#include "rotinterp/io/files/atomic_file.h"
+#include "rotinterp/io/fbx/fbx_reduced.h"
 #include "rotinterp/io/read.h"
 #include "rotinterp/io/write.h"
 #include "rotinterp/reduce/reduce.h"
@@ -152,7 +152,8 @@ Status reduce_one_file(const std::string& input, const ReduceArgs& a, const Redu
   const std::vector<std::string> names =
       s.methods.size() > 1 || o.output.empty() ? s.methods : std::vector<std::string>{};
   const std::string ext = o.output.empty() ? "" : lower_extension(o.output);
-  const bool gltf = ext == ".glb" || ext == ".gltf", fbx = ext == ".fbx";
+  const FormatInfo* format = ext.empty() ? nullptr : format_named(ext);
+  const bool fbx = format && format->id == FormatId::fbx, gltf = format && format->curves && !fbx;
 
   ReadOptions read_options;
   read_options.animation = a.anim;

@@ -3,9 +3,9 @@
 #include "cmd_reduce.h"
 #include "common.h"
 #include "rotinterp/core/work_queue.h"
-#include "rotinterp/io/atomic_file.h"
-#include "rotinterp/io/dataset.h"
-#include "rotinterp/io/folder_run.h"
+#include "rotinterp/io/files/atomic_file.h"
+#include "rotinterp/batch/dataset.h"
+#include "rotinterp/batch/folder_run.h"
 
 #include <fmt/core.h>
 
@@ -35,7 +35,8 @@ Result<std::vector<MirroredOutput>> reduce_outputs(const std::vector<std::string
   std::map<fs::path, std::string> taken;
   for (MirroredOutput& m : *plan) {
     const std::string own = lower_extension(m.input);
-    const bool kept = own == ".fbx" || own == ".glb" || own == ".gltf";
+    const FormatInfo* own_format = format_named(own);
+    const bool kept = own_format && own_format->curves;  // a format of sparse keys keeps its own
     m.output.replace_extension(!format.empty() ? "." + format : kept ? own : ".json");
     auto [at, fresh] = taken.emplace(m.output, m.input);
     if (!fresh)
@@ -81,8 +82,9 @@ int run_reduce_folder(const ReduceArgs& a, const ReduceSetup& s) {
     return fail_usage("-m: a folder run writes one method's keys; the table of several is for one file");
   if (!a.report.empty()) return fail_usage("--report is for one file; a folder run writes --manifest FILE.csv");
   if (!a.format.empty()) {
-    if (a.format != "json" && a.format != "glb" && a.format != "gltf" && a.format != "fbx")
-      return fail_usage("--format '" + a.format + "': unknown format (use json, glb, gltf or fbx)");
+    const FormatInfo* f = format_named(a.format);
+    if (a.format != "json" && !(f && f->curves))
+      return fail_usage("--format '" + a.format + "': unknown format (use json, " + format_names(keeps_curves) + ")");
     if (std::string problem = reduce_output_problem("x." + a.format, method, s.loop.has_value()); !problem.empty())
       return fail_usage(problem);
   }

@@ -5,7 +5,7 @@
 #include "rotinterp/clip/frames.h"
 #include "rotinterp/clip/metrics.h"
 #include "rotinterp/interp/interpolator.h"
-#include "rotinterp/io/atomic_file.h"
+#include "rotinterp/io/files/atomic_file.h"
 #include "rotinterp/io/read.h"
 #include "rotinterp/io/source_motion.h"
 #include "rotinterp/render/comparison.h"
@@ -55,10 +55,10 @@ Status check_output_directory(const std::string& dir) {
   std::string ext = fs::path(dir).extension().string();
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   static const char* const kFileExtensions[] = {".png", ".jpg", ".jpeg", ".gif", ".bmp", ".tif", ".tiff", ".webp", ".mp4",
-                                                ".mov", ".mkv", ".webm", ".avi", ".bvh", ".fbx", ".glb", ".gltf", ".dae"};
+                                                ".mov", ".mkv", ".webm", ".avi"};
   if (!fs::is_directory(dir, ec))
     for (const char* e : kFileExtensions)
-      if (ext == e)
+      if (ext == e || format_named(ext))
         return make_error("-o '" + dir + "' looks like a file name (" + ext +
                           "); -o names the directory the frame PNGs go in (e.g. -o frames), --video FILE writes one "
                           "clip");

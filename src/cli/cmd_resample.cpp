@@ -11,8 +11,8 @@
 #include "rotinterp/clip/bvh_layout.h"
 #include "rotinterp/clip/resample_loop.h"
 #include "rotinterp/interp/interpolator.h"
-#include "rotinterp/io/atomic_file.h"
-#include "rotinterp/io/fbx_source.h"
+#include "rotinterp/io/files/atomic_file.h"
+#include "rotinterp/io/fbx/fbx_source.h"
 #include "rotinterp/io/read.h"
 #include "rotinterp/io/takes.h"
 #include "rotinterp/io/write.h"
@@ -157,9 +157,8 @@ Status write_resampled(FileRun& run, const ResampledFile& done, const ResampleAr
   const Clip* out = &done.clip;
   const std::vector<std::string>& keep = done.keep;
   Status written = Ok{};
-  std::string ext = run.output.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (own && own->fbx && !opt.fps && ext == ".fbx") {
+  const FormatInfo* out_format = format_of(run.output);
+  if (own && own->fbx && !opt.fps && out_format && out_format->id == FormatId::fbx) {
     // The source's own key times: its curves go back as stored (io/fbx_source.h).
     auto fbx = encode_source_fbx(*out, *own->fbx, keep, a.fbx_ascii, run.input);
     if (!fbx) return fbx.failure();
@@ -309,8 +308,9 @@ int run_resample(ResampleArgs a) {
     if (!out_unit) return fail_usage("--out-unit: " + out_unit.error());
     a.out_unit_m = *out_unit;
     const std::string out_ext = a.format.empty() ? std::filesystem::path(a.output).extension().string() : "." + a.format;
-    if (out_ext == ".glb" || out_ext == ".gltf")
-      return fail_usage("--out-unit: glTF is always in metres (its spec); --out-unit is for bvh, fbx and dae");
+    if (const FormatInfo* f = format_named(out_ext); f && f->unit == "metres")
+      return fail_usage("--out-unit: glTF is always in metres (its spec); --out-unit is for " +
+                        format_names([](const FormatInfo& g) { return g.writes && g.unit != "metres"; }, " and "));
   }
   if (a.output.empty()) return fail_usage("-o/--output: an empty path (a file such as out.bvh, or a folder such as out/)");
   std::error_code ec;
@@ -327,7 +327,7 @@ int run_resample(ResampleArgs a) {
   if (!a.shard.empty() || !a.manifest.empty() || a.skip_existing)
     return fail_usage("--shard, --manifest and --skip-existing are for folder runs (-o DIR)");
   if (!can_write_format(a.output))
-    return fail_usage("output '" + a.output + "': unknown format (use .bvh, .fbx, .glb, .gltf or .dae)");
+    return fail_usage("output '" + a.output + "': unknown format (use " + format_names(writable, " or ", true) + ")");
   if (names_several_takes(a.anim) || a.output.find(kTakePlaceholder) != std::string::npos) return run_takes(a, *opt);
   return run_single(a, *opt);
 }
@@ -342,7 +342,7 @@ void add_resample_command(CLI::App& app, int& exit_code) {
                   "(searched recursively), with -o DIR")
       ->required();
   add_output_option(*sub, a->output,
-                    "Output file; the format follows the extension: bvh, fbx, glb, gltf, dae. For several inputs or "
+                    "Output file; the format follows the extension: " + format_names(writable, ", ") + ". For several inputs or "
                     "a folder: the output directory, the inputs' layout mirrored under it")
       ->required();
   add_fps_option(*sub, a->fps,
@@ -375,7 +375,7 @@ void add_resample_command(CLI::App& app, int& exit_code) {
   add_quiet_option(*sub, a->quiet);
   add_jobs_option(*sub, a->jobs, "Folder runs: files resampled at once");
   add_folder_run_options(*sub, a->shard, a->skip_existing, a->format,
-                         "bvh, fbx, glb, gltf or dae (default: the input's own, else bvh)", a->manifest,
+                         format_names(writable) + " (default: the input's own, else " + std::string(formats().front().name) + ")", a->manifest,
                          "rate as written and as read, frames, duration, joints, output frames, method, time, status");
   sub->callback([a, &exit_code] { exit_code = run_resample(*a); });
 }

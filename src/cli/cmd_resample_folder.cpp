@@ -3,9 +3,9 @@
 #include "cmd_resample.h"
 #include "common.h"
 #include "rotinterp/core/work_queue.h"
-#include "rotinterp/io/atomic_file.h"
-#include "rotinterp/io/dataset.h"
-#include "rotinterp/io/folder_run.h"
+#include "rotinterp/io/files/atomic_file.h"
+#include "rotinterp/batch/dataset.h"
+#include "rotinterp/batch/folder_run.h"
 #include "rotinterp/io/write.h"
 
 #include <fmt/core.h>
@@ -58,7 +58,7 @@ int run_resample_folder(const ResampleArgs& a, const ResampleOptions& opt) {
   if (fs::exists(a.output, ec) ? !fs::is_directory(a.output, ec) : can_write_format(a.output))
     return fail_usage("output '" + a.output + "' is a file name; several inputs or a folder need an output directory");
   if (!a.format.empty() && !can_write_format(fs::path("x." + a.format)))
-    return fail_usage("--format '" + a.format + "': unknown format (use bvh, fbx, glb, gltf or dae)");
+    return fail_usage("--format '" + a.format + "': unknown format (use " + format_names(writable) + ")");
   int exit_code = kExitOk;
   const std::optional<FolderPlan> plan = plan_folder_run(
       a.inputs, a.shard,

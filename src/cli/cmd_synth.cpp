@@ -1,7 +1,7 @@
 // rotinterp synth OUT [--kind KIND] [--seconds S] [--fps HZ] [--seed N] [--joints N] [--quiet]
 #include "common.h"
 #include "rotinterp/clip/synth.h"
-#include "rotinterp/io/atomic_file.h"
+#include "rotinterp/io/files/atomic_file.h"
 #include "rotinterp/io/write.h"
 
 #include <CLI/CLI.hpp>

@@ -4,8 +4,8 @@
 #include "rotinterp/clip/units.h"
 #include "rotinterp/core/nearest_name.h"
 #include "rotinterp/interp/interpolator.h"
-#include "rotinterp/io/atomic_file.h"
-#include "rotinterp/io/folder_run.h"
+#include "rotinterp/io/files/atomic_file.h"
+#include "rotinterp/batch/folder_run.h"
 #include "rotinterp/io/source_motion.h"
 
 #include <CLI/CLI.hpp>

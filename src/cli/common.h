@@ -5,8 +5,9 @@
 #include "rotinterp/clip/sampling.h"
 #include "rotinterp/core/progress.h"
 #include "rotinterp/core/result.h"
-#include "rotinterp/io/dataset.h"
-#include "rotinterp/io/folder_run.h"
+#include "rotinterp/io/files/formats.h"
+#include "rotinterp/batch/dataset.h"
+#include "rotinterp/batch/folder_run.h"
 
 #include <filesystem>
 #include <functional>

@@ -3,7 +3,7 @@
 #include "info_curves.h"
 
 #include "common.h"
-#include "rotinterp/io/fbx_curve_eval.h"
+#include "rotinterp/io/fbx/fbx_curve_eval.h"
 
 #include <fmt/core.h>
 

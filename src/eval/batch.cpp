@@ -5,9 +5,9 @@
 
 #include "batch_outputs.h"
 #include "rotinterp/core/work_queue.h"
-#include "rotinterp/io/dataset.h"
-#include "rotinterp/io/folder_run.h"
-#include "rotinterp/io/atomic_file.h"
+#include "rotinterp/batch/dataset.h"
+#include "rotinterp/batch/folder_run.h"
+#include "rotinterp/io/files/atomic_file.h"
 #include "rotinterp/io/info.h"
 #include "rotinterp/io/read.h"
 #include "rotinterp/io/takes.h"

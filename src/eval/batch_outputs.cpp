@@ -4,7 +4,7 @@
 
 #include "rotinterp/eval/plots.h"
 #include "rotinterp/eval/seam.h"
-#include "rotinterp/io/csv.h"
+#include "rotinterp/io/files/csv.h"
 
 #include <fmt/format.h>
 

@@ -7,7 +7,7 @@
 #include "rotinterp/eval/error_row.h"
 #include "rotinterp/eval/evaluate_clip.h"
 #include "rotinterp/eval/summary.h"
-#include "rotinterp/io/atomic_file.h"
+#include "rotinterp/io/files/atomic_file.h"
 
 #include <filesystem>
 #include <string>

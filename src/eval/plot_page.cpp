@@ -2,7 +2,7 @@
 // stream that carries the image into its AtomicOutput.
 #include "plot_page.h"
 
-#include "rotinterp/interp/method_style.h"
+#include "rotinterp/palette/method_style.h"
 
 #include <sys/types.h>
 

@@ -1,10 +1,10 @@
 // The PLplot page every eval plot is drawn on: the white page and its colour map
-// (methods in their interp/method_style.h colours, markers and dashes), frames,
+// (methods in their palette/method_style.h colours, markers and dashes), frames,
 // series, texts and legends where eval/plot_layout.h puts them, written through an AtomicOutput.
 #pragma once
 
 #include "rotinterp/eval/plot_layout.h"
-#include "rotinterp/io/atomic_file.h"
+#include "rotinterp/io/files/atomic_file.h"
 
 #include <plplot/plplot.h>
 
@@ -15,7 +15,7 @@
 namespace rotinterp::plot {
 
 // Colour map 0: 0 background (white), 1 axes and text (black), 2 grid (light grey),
-// 3… the method styles (interp/method_style.h), one per slot.
+// 3… the method styles (palette/method_style.h), one per slot.
 constexpr int kText = 1, kGrid = 2, kFirstSeries = 3;
 // Height of a marker glyph, pixels.
 constexpr double kMarkerPx = 10;

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "rotinterp/eval/summary.h"
-#include "rotinterp/io/csv.h"
+#include "rotinterp/io/files/csv.h"
 
 #include <nlohmann/json.hpp>
 

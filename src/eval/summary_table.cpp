@@ -1,6 +1,6 @@
 // The summary as tables: the text, Markdown or LaTeX table on stdout, and clips.csv.
 #include "rotinterp/eval/summary.h"
-#include "rotinterp/io/csv.h"
+#include "rotinterp/io/files/csv.h"
 #include "seam_summary.h"
 
 #include <fmt/format.h>

@@ -1,7 +1,8 @@
 // What `rotinterp info` says of a clip beside its data: a static scene's contents, a clip's oddities.
 #include "rotinterp/io/info.h"
+#include "rotinterp/io/files/formats.h"
 
-#include "read_parts.h"
+#include "rotinterp/io/record/read_parts.h"
 
 #include <algorithm>
 #include <cmath>
@@ -37,13 +38,9 @@ bool uniform(const std::vector<double>& t) {
 
 }  // namespace
 
-std::size_t take_frames(const AnimationSummary& take) {
-  if (!(take.frame_rate_hz > 0.0) || !(take.duration >= 0.0)) return take.keys;
-  return static_cast<std::size_t>(std::llround(take.duration * take.frame_rate_hz)) + 1;
-}
 
 Result<ClipFileInfo> inspect_clip_for_info(const std::filesystem::path& path, ReadOptions options) {
-  if (options.read_curves || extension_of(path) != "fbx") return inspect_clip(path, options);
+  if (options.read_curves || !is_format(extension_of(path), FormatId::fbx)) return inspect_clip(path, options);
   options.read_curves = true;
   Result<ClipFileInfo> with_curves = inspect_clip(path, options);
   if (with_curves || with_curves.error_kind() == ErrorKind::no_animation) return with_curves;
@@ -51,7 +48,6 @@ Result<ClipFileInfo> inspect_clip_for_info(const std::filesystem::path& path, Re
   return inspect_clip(path, options);
 }
 
-const char* rate_origin_text(bool stated) { return stated ? "stated by the file" : "inferred from its key times"; }
 
 std::string static_scene_contents(const std::string& no_animation_error) {
   const std::size_t at = no_animation_error.rfind(std::string("(") + kHoldsPrefix);

@@ -1,6 +1,6 @@
 // curves_info_json: `rotinterp info --curves --json`, the FBX curves of the
 // selected take as stored, with their tangents as evaluated and optional samples.
-#include "rotinterp/io/fbx_curve_eval.h"
+#include "rotinterp/io/fbx/fbx_curve_eval.h"
 #include "rotinterp/io/info.h"
 
 #include <nlohmann/json.hpp>

@@ -2,11 +2,10 @@
 // every other format (or a BVH to cross-check) by the importer process (import.h).
 #include "rotinterp/io/read.h"
 
-#include "assimp_text.h"
-#include "import.h"
-#include "read_parts.h"
-
-#include <assimp/Importer.hpp>
+#include "rotinterp/io/files/one_line.h"
+#include "rotinterp/io/import/import.h"
+#include "rotinterp/io/process/importer.h"
+#include "rotinterp/io/record/read_parts.h"
 
 #include <new>
 #include <set>
@@ -54,38 +53,9 @@ Result<ClipFileInfo> load(const fs::path& path, const ReadOptions& options) {
   return info;
 }
 
-// assimp's extension list ("*.3ds;*.bvh;…") with bvh, asked once: only the table, no import.
-const std::set<std::string>& known_extensions() {
-  static const std::set<std::string> known = [] {
-    std::string list;
-    Assimp::Importer().GetExtensionList(list);
-    std::set<std::string> out{"bvh"};
-    std::stringstream items(list);
-    for (std::string item; std::getline(items, item, ';');)
-      if (item.size() > 2 && item.compare(0, 2, "*.") == 0) out.insert(lower(item.substr(2)));
-    return out;
-  }();
-  return known;
-}
 }  // namespace
 
-bool importable_extension(std::string extension) {
-  extension = lower(std::move(extension));
-  if (!extension.empty() && extension[0] == '.') extension.erase(0, 1);
-  if (extension.empty()) return false;
-  return known_extensions().count(extension) > 0;
-}
 
-std::string read_formats_text() {
-  // The motion formats first (the ones write_clip writes, io/write.h), then the count of the rest.
-  const std::set<std::string>& known = known_extensions();
-  std::string s;
-  std::size_t named = 0;
-  for (const char* f : {"bvh", "fbx", "glb", "gltf", "dae"})
-    if (known.count(f)) s += (named++ ? ", " : "") + std::string(f);
-  if (known.size() > named) s += " and " + std::to_string(known.size() - named) + " more formats assimp imports";
-  return s;
-}
 
 Result<ClipFileInfo> inspect_clip(const fs::path& path, const ReadOptions& options) {
   try {

@@ -2,9 +2,10 @@
 // (io/source_motion.h); each format's own reader behind it (FBX curves, glTF samplers,
 // BVH frames).
 #include "rotinterp/io/source_motion.h"
+#include "rotinterp/io/files/formats.h"
 
-#include "rotinterp/io/fbx_source.h"
-#include "rotinterp/io/gltf_source.h"
+#include "rotinterp/io/fbx/fbx_source.h"
+#include "rotinterp/io/gltf/gltf_source.h"
 #include "rotinterp/io/info.h"
 #include "rotinterp/track/sample.h"
 
@@ -92,12 +93,6 @@ Result<FileSource> gltf_source(const std::filesystem::path& path, ClipFileInfo&&
 
 }  // namespace
 
-bool is_source_method(const std::string& name) {
-  const std::string want = kSourceMethodName;
-  return name.size() == want.size() &&
-         std::equal(name.begin(), name.end(), want.begin(),
-                    [](char a, char b) { return std::tolower(static_cast<unsigned char>(a)) == b; });
-}
 
 std::size_t FileSource::own_joints() const { return static_cast<std::size_t>(std::count(own.begin(), own.end(), true)); }
 
@@ -112,8 +107,8 @@ Result<FileSource> read_file_source(const std::filesystem::path& path, const Rea
     if (!fbx) return fbx.failure();
     return fbx_file_source(std::make_shared<const SourceClip>(std::move(*fbx)), label);
   }
-  if (info->format == "glb" || info->format == "gltf") return gltf_source(path, std::move(*info));
-  if (info->format == "bvh") return frames_source(std::move(info->clip));
+  if (is_format(info->format, FormatId::glb) || is_format(info->format, FormatId::gltf)) return gltf_source(path, std::move(*info));
+  if (is_format(info->format, FormatId::bvh)) return frames_source(std::move(info->clip));
   return make_error(label + ": --method source replays a file's own motion (FBX curves, glTF animation samplers, BVH "
                     "frames); this is a '" + info->format + "' file (use an interpolator, e.g. clamped)");
 }

@@ -2,12 +2,13 @@
 // write_clips: several takes of one skeleton into one FBX or glTF/GLB.
 #include "rotinterp/io/write.h"
 
-#include "rotinterp/io/atomic_file.h"
-#include "rotinterp/io/bvh.h"
-#include "export.h"
-#include "fbx_write.h"
-#include "gltf_write.h"
-#include "key_times.h"
+#include "rotinterp/io/files/atomic_file.h"
+#include "rotinterp/io/files/formats.h"
+#include "rotinterp/io/bvh/bvh.h"
+#include "rotinterp/io/import/import.h"
+#include "rotinterp/io/fbx/fbx_write.h"
+#include "rotinterp/io/gltf/gltf_write.h"
+#include "rotinterp/io/files/key_times.h"
 
 #include <algorithm>
 #include <cctype>
@@ -79,8 +80,8 @@ std::vector<std::string> unique_take_names(const std::vector<Clip>& takes) {
 }  // namespace
 
 bool can_write_format(const std::filesystem::path& path) {
-  const std::string ext = lower_extension(path);
-  return ext == ".bvh" || ext == ".fbx" || ext == ".glb" || ext == ".gltf" || assimp_export_format(ext).has_value();
+  const FormatInfo* format = format_of(path);
+  return format && format->writes;
 }
 
 Status write_clip(const Clip& clip, const std::filesystem::path& path, const WriteOptions& options) {
@@ -89,10 +90,12 @@ Status write_clip(const Clip& clip, const std::filesystem::path& path, const Wri
   if (clip.source_meshes > 0 && options.on_warning && can_write_format(path))
     options.on_warning(label + ": the source's " + std::to_string(clip.source_meshes) +
                        " mesh(es) and their skins are not written, only the skeleton and its motion");
-  if (ext == ".bvh") {
+  const FormatInfo* known = format_of(path);
+  const FormatId id = known && known->writes ? known->id : FormatId::dae;  // dae: assimp's exporters below
+  if (id == FormatId::bvh) {
     return write_file_atomically(path, [&](std::ostream& out) { return write_bvh(clip, out, options, label); });
   }
-  if (ext == ".fbx") {
+  if (id == FormatId::fbx) {
     Result<std::string> bytes = encode_fbx(clip, options.fbx_ascii ? FbxEncoding::ascii : FbxEncoding::binary);
     if (!bytes) return bytes.failure(label + ": ");
     return write_file_atomically(path, [&](std::ostream& out) -> Status {
@@ -100,29 +103,30 @@ Status write_clip(const Clip& clip, const std::filesystem::path& path, const Wri
       return Ok{};
     });
   }
-  if (ext == ".glb" || ext == ".gltf")
-    return write_gltf(clip, path, ext == ".glb",
+  if (id == FormatId::glb || id == FormatId::gltf)
+    return write_gltf(clip, path, id == FormatId::glb,
                       GltfKeys{options.gltf_own_key_times, options.gltf_cubic_rotations, options.gltf_cubic_translations});
   const std::optional<std::string> format = assimp_export_format(ext);
   if (!format)
     return make_error(label + ": cannot write '" + (ext.empty() ? std::string("(no extension)") : ext) +
-                      "' files; use .bvh, .fbx, .gltf, .glb or .dae");
+                      "' files; use " + format_names(writable, " or ", true));
   return export_with_assimp(clip, path, *format);
 }
 
 bool can_write_takes(const std::filesystem::path& path) {
-  const std::string ext = lower_extension(path);
-  return ext == ".fbx" || ext == ".glb" || ext == ".gltf";
+  const FormatInfo* format = format_of(path);
+  return format && format->writes && format->takes;
 }
 
 Status write_clips(const std::vector<Clip>& takes, const std::filesystem::path& path, const WriteOptions& options) {
   const std::string label = path.string();
   const std::string ext = lower_extension(path);
-  const bool fbx = ext == ".fbx";
+  const FormatInfo* known = format_of(path);
+  const bool fbx = known && known->id == FormatId::fbx;
   if (!can_write_takes(path)) {
     if (!can_write_format(path))
       return make_error(label + ": cannot write '" + (ext.empty() ? std::string("(no extension)") : ext) +
-                        "' files with several takes; use .fbx, .gltf or .glb");
+                        "' files with several takes; use " + format_names(holds_takes, " or ", true));
     return make_error(label + ": a " + ext + " file holds one take; put {anim} in the output name to write one file per take");
   }
   if (takes.empty()) return make_error(label + ": no takes to write");
@@ -143,7 +147,7 @@ Status write_clips(const std::vector<Clip>& takes, const std::filesystem::path& 
   if (!fbx) {  // glTF or GLB
     std::vector<const Clip*> pointers;
     for (const Clip& c : named) pointers.push_back(&c);
-    return write_gltf(pointers, path, ext == ".glb",
+    return write_gltf(pointers, path, known->id == FormatId::glb,
                       GltfKeys{options.gltf_own_key_times, options.gltf_cubic_rotations, options.gltf_cubic_translations});
   }
   Result<std::string> bytes = encode_fbx_clips(named, options.fbx_ascii ? FbxEncoding::ascii : FbxEncoding::binary);

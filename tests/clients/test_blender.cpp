@@ -147,7 +147,7 @@ TEST_F(BlenderClient, BvhWithAnglesPast180MovesEveryJointAsInBlendersImportOfThe
 }
 
 // Blender connects a bone to a child on its +Y axis and then ignores the child's
-// location keys (src/io/fbx_rest.h): no joint with translation keys may be connected.
+// location keys (src/io/fbx/fbx_rest.h): no joint with translation keys may be connected.
 TEST_F(BlenderClient, NoJointWithTranslationKeysIsConnectedInBlender) {
   for (const Conversion& c : kConversions) {
     const std::string file = written(c, ".fbx");

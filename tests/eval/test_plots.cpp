@@ -2,7 +2,7 @@
 #include "rotinterp/eval/plot_layout.h"
 #include "rotinterp/eval/plots.h"
 #include "rotinterp/interp/interpolator.h"
-#include "rotinterp/interp/method_style.h"
+#include "rotinterp/palette/method_style.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Summary aggregates: hand-computed values over a few rows.
 #include "rotinterp/eval/summary.h"
-#include "rotinterp/io/csv.h"
+#include "rotinterp/io/files/csv.h"
 
 #include <gtest/gtest.h>
 

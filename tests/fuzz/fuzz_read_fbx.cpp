@@ -3,10 +3,10 @@
 // or 6.1 takes), each curve evaluated across its keys and beyond, and each model's
 // transform with its layers blended. It must give a document or one error line:
 // never crash, read past the buffer, hang or give a non-finite value.
-#include "rotinterp/io/fbx_curve_eval.h"
-#include "rotinterp/io/fbx_curves.h"
-#include "rotinterp/io/fbx_nodes.h"
-#include "rotinterp/io/fbx_transform.h"
+#include "rotinterp/io/fbx/fbx_curve_eval.h"
+#include "rotinterp/io/fbx/fbx_curves.h"
+#include "rotinterp/io/fbx/fbx_nodes.h"
+#include "rotinterp/io/fbx/fbx_transform.h"
 
 #include <cmath>
 #include <cstdint>

@@ -4,7 +4,7 @@
 // ways — never crash, leak or hang.
 #pragma once
 
-#include "import.h"  // src/io: the importer's in-process reading
+#include "rotinterp/io/process/importer.h"  // src/io: the importer's in-process reading
 #include "rotinterp/io/read.h"
 
 #include <unistd.h>

@@ -4,7 +4,7 @@
 #include "rotinterp/clip/resample.h"
 #include "rotinterp/clip/sampling.h"
 #include "rotinterp/core/rotation.h"
-#include "rotinterp/io/fbx_nodes.h"
+#include "rotinterp/io/fbx/fbx_nodes.h"
 #include "rotinterp/io/read.h"
 
 #include <gtest/gtest.h>

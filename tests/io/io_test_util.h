@@ -2,7 +2,7 @@
 #pragma once
 
 #include "rotinterp/clip/clip.h"
-#include "rotinterp/io/fbx_curves.h"
+#include "rotinterp/io/fbx/fbx_curves.h"
 
 #include <filesystem>
 #include <string>

@@ -3,7 +3,7 @@
 // 9-channel joint, a hinge and a two-axis joint: read exactly (checked against an
 // independent evaluation of the channels) and round-tripped through the writer.
 #include "io_test_util.h"
-#include "rotinterp/io/bvh.h"
+#include "rotinterp/io/bvh/bvh.h"
 #include "rotinterp/io/read.h"
 #include "rotinterp/io/write.h"
 

@@ -2,7 +2,7 @@
 // paths that used to crash, crawl or print megabytes. Each fails (or reads) with
 // one short line, through the library and every subcommand.
 #include "io_test_util.h"
-#include "rotinterp/io/bvh.h"
+#include "rotinterp/io/bvh/bvh.h"
 #include "rotinterp/io/read.h"
 #include "support/hostile_files.h"
 #include "support/run_cli.h"

@@ -1,7 +1,7 @@
 // parse_bvh reads every value exactly as std::from_chars does (its fast path for
 // plain decimals must give the same double, bit for bit), in every text form a
 // writer may use: fixed with 0–15 digits, negative zero, exponents, leading '+'.
-#include "rotinterp/io/bvh.h"
+#include "rotinterp/io/bvh/bvh.h"
 
 #include <gtest/gtest.h>
 

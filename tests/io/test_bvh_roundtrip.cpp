@@ -4,7 +4,7 @@
 // 1e-4 units.
 #include "io_test_util.h"
 #include "rotinterp/clip/resample.h"
-#include "rotinterp/io/bvh.h"
+#include "rotinterp/io/bvh/bvh.h"
 #include "rotinterp/io/read.h"
 #include "rotinterp/io/write.h"
 

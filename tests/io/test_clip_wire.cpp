@@ -1,4 +1,4 @@
-// The reader's private wire format (src/io/clip_wire.h), which carries a read from
+// The reader's private wire format (src/io/process/clip_wire.h), which carries a read from
 // the isolated child to the parent: every field survives bit for bit, and bytes
 // that are not one whole record are an error, never a crash or a huge allocation.
 #include "clip_wire.h"

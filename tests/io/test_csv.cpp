@@ -1,6 +1,6 @@
 // The one CSV dialect: fields read back as written whatever they hold, and rows
 // built against their table's schema.
-#include "rotinterp/io/csv.h"
+#include "rotinterp/io/files/csv.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Euler decomposition for the writer: every valid axis sequence reconstructs the
 // orientation, and the solution nearest the previous angles follows a motion
 // through ±180° and through gimbal lock without jumps.
-#include "rotinterp/io/euler.h"
+#include "rotinterp/io/files/euler.h"
 
 #include <gtest/gtest.h>
 

@@ -143,44 +143,7 @@ TEST(Fbx, FoldingKeepsMotionAssimpsPivotRemovalLoses) {
   }
 }
 
-class FbxExport : public ::testing::TestWithParam<const char*> {};
-
-// Tolerances per written format. glTF/GLB/Collada and our FBX store floats: 1e-4°
-// (FBX: Euler angles in float degrees, an angle near 360° is off by up to 2e-5°).
-struct Tolerance {
-  double degrees;
-  double of_size;
-};
-Tolerance tolerance_for(const std::string&) { return Tolerance{1e-4, 1e-5}; }
-
-// FBX → clip → <format> → clip: same joints, orientations within tolerance.
-TEST_P(FbxExport, ReimportKeepsEveryOrientation) {
-  const Tolerance tol = tolerance_for(GetParam());
-  for (const char* source : {"digitalrune_Marine_Run.fbx", "assimp_huesitos.fbx"}) {
-    Result<Clip> a = read_clip(kData / "fbx" / source);
-    ASSERT_TRUE(a) << a.error();
-    test::TempDir dir;
-    const auto out = dir / (std::string("out") + GetParam());
-    const Status s = write_clip(*a, out);
-    ASSERT_TRUE(s) << s.error();
-    Result<Clip> b = read_clip(out);
-    ASSERT_TRUE(b) << b.error();
-    const Differences d = compare(*a, *b);
-    EXPECT_EQ(d.compared_joints, a->skeleton.joints.size()) << source;
-    EXPECT_LE(d.local_angle, tol.degrees * kDeg) << source << ": " << d.local_angle / kDeg << " degrees";
-    EXPECT_LE(d.world_angle, tol.degrees * kDeg) << source << ": " << d.world_angle / kDeg << " degrees";
-    EXPECT_LE(d.world_position, tol.of_size * test::skeleton_size(*a)) << source;
-    // FBX ticks, float seconds (glTF) and Collada times come back on the source's frame grid.
-    EXPECT_NEAR(b->frame_time, a->frame_time, 1e-12) << source;
-    std::printf("[ %s -> %s ] local %.3g deg, world %.3g deg, position %.3g\n", source, GetParam(), d.local_angle / kDeg,
-                d.world_angle / kDeg, d.world_position);
-    // Only the written file (plus the .gltf buffer): no temporaries left.
-    for (const std::string& f : dir.files()) EXPECT_EQ(f.rfind("out", 0), 0u) << f;
-  }
-}
-
-INSTANTIATE_TEST_SUITE_P(Formats, FbxExport, ::testing::Values(".fbx", ".gltf", ".glb", ".dae"),
-                         [](const auto& info) { return std::string(info.param + 1); });
+// Every writable format's round trip: tests/io/test_format_contract.cpp.
 
 // FBX → BVH (rest rotations baked into the BVH rotations): world joint positions
 // unchanged within 1e-3 of the skeleton's size, for every order of --bvh-order.

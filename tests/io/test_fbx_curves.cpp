@@ -2,9 +2,9 @@
 // evaluate them: every value of dcc_reference.tsv within 1e-4 of its curve's range;
 // key attributes (interpolation, tangents, weights) as the files store them.
 #include "dcc_reference.h"
-#include "rotinterp/io/fbx_curve_eval.h"
-#include "rotinterp/io/fbx_curves.h"
-#include "rotinterp/io/fbx_nodes.h"
+#include "rotinterp/io/fbx/fbx_curve_eval.h"
+#include "rotinterp/io/fbx/fbx_curves.h"
+#include "rotinterp/io/fbx/fbx_nodes.h"
 
 #include <gtest/gtest.h>
 

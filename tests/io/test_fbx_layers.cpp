@@ -7,10 +7,10 @@
 // transform at frame 18, land on Maya's within 1e-3 cm.
 #include "io_test_util.h"
 #include "rotinterp/core/rotation.h"
-#include "rotinterp/io/fbx_curve_eval.h"
-#include "rotinterp/io/fbx_curves.h"
-#include "rotinterp/io/fbx_nodes.h"
-#include "rotinterp/io/fbx_transform.h"
+#include "rotinterp/io/fbx/fbx_curve_eval.h"
+#include "rotinterp/io/fbx/fbx_curves.h"
+#include "rotinterp/io/fbx/fbx_nodes.h"
+#include "rotinterp/io/fbx/fbx_transform.h"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 // counts, depth and truncation are refused with one line naming the file and node.
 #include "fbx_encode.h"
 #include "io_test_util.h"
-#include "rotinterp/io/fbx_nodes.h"
+#include "rotinterp/io/fbx/fbx_nodes.h"
 
 #include <gtest/gtest.h>
 

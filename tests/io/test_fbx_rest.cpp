@@ -1,4 +1,4 @@
-// The rest translations our FBX writer writes (src/io/fbx_rest.h): a joint with
+// The rest translations our FBX writer writes (src/io/fbx/fbx_rest.h): a joint with
 // translation keys lying on its parent's +Y axis — which Blender's importer would
 // connect, dropping its location keys — is moved off that axis in the rest pose
 // only; every pose at every key reads back the same.

@@ -4,8 +4,9 @@
 #include "io_test_util.h"
 #include "rotinterp/core/geodesic.h"
 #include "rotinterp/interp/interpolator.h"
-#include "rotinterp/io/fbx_curve_eval.h"
-#include "rotinterp/io/fbx_source.h"
+#include "rotinterp/io/fbx/fbx_curve_eval.h"
+#include "rotinterp/io/fbx/fbx_source.h"
+#include "rotinterp/io/source_motion.h"
 
 #include <gtest/gtest.h>
 

@@ -3,10 +3,11 @@
 // replayed from its curves, and malformed 6.1 key lists are refused in one line
 // naming the file and the node.
 #include "io_test_util.h"
-#include "rotinterp/io/fbx_curve_eval.h"
-#include "rotinterp/io/fbx_curves.h"
-#include "rotinterp/io/fbx_nodes.h"
-#include "rotinterp/io/fbx_source.h"
+#include "rotinterp/io/fbx/fbx_curve_eval.h"
+#include "rotinterp/io/fbx/fbx_curves.h"
+#include "rotinterp/io/fbx/fbx_nodes.h"
+#include "rotinterp/io/fbx/fbx_source.h"
+#include "rotinterp/io/source_motion.h"
 #include "rotinterp/io/read.h"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // Our FBX writer: exact tick times and the rate's TimeMode, the stack spanning the
 // clip, Euler curves without jumps, LimbNode skeletons, and binary and ASCII files
 // that assimp reads back with the same joints, frames, rate and poses.
-#include "fbx_write.h"
+#include "rotinterp/io/fbx/fbx_write.h"
 #include "io_test_util.h"
 #include "rotinterp/clip/bvh_layout.h"
 #include "rotinterp/clip/frames.h"

@@ -1,7 +1,7 @@
 // The BVH writer's fast 6-decimal text equals std::to_chars(fixed, 6) byte for
 // byte: on random values of every magnitude the writer meets, on exact and near
 // ties (…5 in the 7th decimal), on zero and on values its fast path hands over.
-#include "../../src/io/fixed6.h"
+#include "rotinterp/io/files/fixed6.h"
 
 #include <gtest/gtest.h>
 

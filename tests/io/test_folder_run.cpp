@@ -1,6 +1,6 @@
 // The folder-run facility (io/folder_run.h): inputs and shards, tasks in input
 // order, skip-existing, failures with their kind, the manifest.
-#include "rotinterp/io/folder_run.h"
+#include "rotinterp/batch/folder_run.h"
 
 #include <gtest/gtest.h>
 

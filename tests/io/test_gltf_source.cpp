@@ -3,7 +3,7 @@
 // formulas written out here, independently of the library, and against assimp's keys.
 #include "gltf_fixture.h"
 #include "io_test_util.h"
-#include "rotinterp/io/gltf_source.h"
+#include "rotinterp/io/gltf/gltf_source.h"
 #include "rotinterp/io/source_motion.h"
 
 #include <gtest/gtest.h>

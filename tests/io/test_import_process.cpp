@@ -1,10 +1,10 @@
-// The one import layer (src/io/import.h): every assimp import runs in the
+// The one import layer (include/rotinterp/io/process/importer.h): every assimp import runs in the
 // importer process, rotinterp-import. What the caller sees (clip, info, errors and
 // their kinds, warnings and their order) is exactly what the same read in this
 // process gives; an importer that crashes, hangs, answers too much or loses its
 // parent ends, and only the one file fails.
 #include "identical_info.h"
-#include "import.h"
+#include "rotinterp/io/process/importer.h"
 #include "importer_test_util.h"
 #include "io_test_util.h"
 #include "rotinterp/io/info.h"

@@ -1,9 +1,9 @@
-// The importer kept across files (src/io/import.h): one process per reading thread
+// The importer kept across files (include/rotinterp/io/process/importer.h): one process per reading thread
 // reads file after file, and a file that crashes it, outlasts its deadline or
 // answers too much costs that file alone — the next one on the same thread reads
 // as it would in a fresh importer. The importer ends with its thread.
 #include "identical_info.h"
-#include "import.h"
+#include "rotinterp/io/process/importer.h"
 #include "importer_test_util.h"
 #include "io_test_util.h"
 #include "rotinterp/io/read.h"

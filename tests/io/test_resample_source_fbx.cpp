@@ -3,7 +3,7 @@
 // time, value, interpolation, tangent mode, slopes and weights — for each joint, so
 // that our reader replays exactly what the DCC keyed; assimp still reads it.
 #include "io_test_util.h"
-#include "rotinterp/io/fbx_curves.h"
+#include "rotinterp/io/fbx/fbx_curves.h"
 #include "rotinterp/io/read.h"
 #include "support/run_cli.h"
 

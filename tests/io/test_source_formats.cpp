@@ -1,7 +1,7 @@
 // `source` in every format (io/source_motion.h): glTF files replay their samplers and
 // agree with assimp's keys on real skeletons, a BVH's source is its frames, and a
 // format with nothing to replay is refused in one line.
-#include "gltf_write.h"
+#include "rotinterp/io/gltf/gltf_write.h"
 #include "io_test_util.h"
 #include "rotinterp/clip/frames.h"
 #include "rotinterp/clip/resample.h"

@@ -5,7 +5,7 @@
 #include "io_test_util.h"
 #include "rotinterp/clip/frames.h"
 #include "rotinterp/clip/resample.h"
-#include "rotinterp/io/fbx_curves.h"
+#include "rotinterp/io/fbx/fbx_curves.h"
 #include "rotinterp/io/read.h"
 #include "rotinterp/io/write.h"
 

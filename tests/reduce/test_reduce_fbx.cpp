@@ -4,10 +4,10 @@
 // slerp linear keys; assimp reads the file.
 #include "support/run_cli.h"
 #include "rotinterp/clip/frames.h"
-#include "rotinterp/io/fbx_curves.h"
-#include "rotinterp/io/fbx_nodes.h"
-#include "rotinterp/io/fbx_reduced.h"
-#include "rotinterp/io/fbx_transform.h"
+#include "rotinterp/io/fbx/fbx_curves.h"
+#include "rotinterp/io/fbx/fbx_nodes.h"
+#include "rotinterp/io/fbx/fbx_reduced.h"
+#include "rotinterp/io/fbx/fbx_transform.h"
 #include "rotinterp/io/read.h"
 #include "rotinterp/reduce/reduce.h"
 

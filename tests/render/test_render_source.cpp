@@ -5,7 +5,8 @@
 #include "support/run_cli.h"
 
 #include "rotinterp/interp/interpolator.h"
-#include "rotinterp/io/fbx_source.h"
+#include "rotinterp/io/fbx/fbx_source.h"
+#include "rotinterp/io/source_motion.h"
 #include "rotinterp/render/comparison.h"
 #include "rotinterp/render/layout.h"
 

@@ -5,7 +5,7 @@
 #pragma once
 
 #include "rotinterp/core/result.h"
-#include "rotinterp/io/csv.h"
+#include "rotinterp/io/files/csv.h"
 
 #include <cstddef>
 #include <string>

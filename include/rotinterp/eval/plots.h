@@ -3,7 +3,7 @@
 
 #include "rotinterp/core/result.h"
 #include "rotinterp/eval/summary.h"
-#include "rotinterp/io/atomic_file.h"
+#include "rotinterp/io/files/atomic_file.h"
 
 #include <filesystem>
 #include <memory>

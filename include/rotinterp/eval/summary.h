@@ -6,7 +6,7 @@
 
 #include "rotinterp/core/result.h"
 #include "rotinterp/eval/error_row.h"
-#include "rotinterp/io/folder_run.h"  // FileFailure
+#include "rotinterp/batch/folder_run.h"  // FileFailure
 
 #include <cstddef>
 #include <filesystem>

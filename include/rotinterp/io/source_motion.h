@@ -16,6 +16,9 @@
 
 #include "rotinterp/clip/clip.h"
 #include "rotinterp/core/result.h"
+#include "rotinterp/io/fbx/fbx_source.h"
+#include "rotinterp/io/files/source_method.h"
+#include "rotinterp/io/record/clip_file.h"
 #include "rotinterp/io/read.h"
 
 #include <cstddef>
@@ -27,16 +30,7 @@
 
 namespace rotinterp {
 
-// What --method takes for it; not a method of the registry (interp/interpolator.h):
-// it needs the file, not a joint's keys.
-inline constexpr const char* kSourceMethodName = "source";
-// Whether `name` is kSourceMethodName, ignoring ASCII case.
-bool is_source_method(const std::string& name);
 
-// Joint j's local rotation at clip time t (seconds); j indexes the clip's joints.
-using SourceMotion = std::function<Quat(std::size_t joint, double t)>;
-
-struct SourceClip;  // io/fbx_source.h
 
 // A clip read for `source`, with its motion.
 struct FileSource {
@@ -63,5 +57,24 @@ Result<Clip> read_clip_with_source_motion(const std::filesystem::path& path, con
 // `source` replays, except those named in `keep`, to source.motion at the key's time,
 // and makes those tracks sign-continuous. Returns how many joints were replayed.
 std::size_t replay_source_rotations(Clip& clip, const FileSource& source, const std::vector<std::string>& keep);
+
+// ---- FBX: the file's curves (io/fbx/fbx_source.h replays them) ----
+
+// Reads `path` in the importer process, as read_clip() does, with its curves.
+// Errors (one line naming the file): not an FBX file, a file without an animation
+// stack, and every error read_clip() gives.
+Result<SourceClip> read_source_clip(const std::filesystem::path& path, const ReadOptions& options);
+
+// The same from a file already read with ReadOptions::read_curves (inspect_clip).
+Result<SourceClip> source_clip_of(ClipFileInfo&& info, const std::string& label);
+
+// The file's own motion (io/source_motion.h): joint j's local rotation at clip time t,
+// evaluated from its curves where it has them (FileSource::own) and sampled from
+// `source.clip`'s keys elsewhere (as eval --truth source reads it; render -m source
+// draws it). Errors as fbx_joint_curves's.
+Result<FileSource> fbx_file_source(std::shared_ptr<const SourceClip> source, const std::string& label);
+
+// Its motion alone.
+Result<SourceMotion> source_motion(std::shared_ptr<const SourceClip> source, const std::string& label);
 
 }  // namespace rotinterp

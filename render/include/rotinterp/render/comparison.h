@@ -15,7 +15,7 @@
 #include "rotinterp/clip/rebuild.h"
 #include "rotinterp/core/progress.h"
 #include "rotinterp/core/result.h"
-#include "rotinterp/io/source_motion.h"
+#include "rotinterp/io/files/source_method.h"
 #include "rotinterp/render/axes.h"
 #include "rotinterp/render/context.h"
 #include "rotinterp/render/loop_play.h"

@@ -1,0 +1,338 @@
+// Atomic writes: temporary file, checked writes, fsync, rename.
+#include "rotinterp/io/files/atomic_file.h"
+
+#include "rotinterp/io/files/output_dirs.h"
+
+#include "cleanup_list.h"
+
+#include <dirent.h>
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <ctime>
+#include <mutex>
+#include <ostream>
+#include <set>
+#include <streambuf>
+#include <string>
+#include <utility>
+
+namespace rotinterp {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Every error here is about an output (its folder, its file, its lock): a caller names
+// the output, not its input, in front of it.
+Error write_error(std::string message) { return make_error(std::move(message), ErrorKind::cannot_write); }
+
+const char* g_interrupt_line = nullptr;  // set once, before the handlers
+
+extern "C" void remove_live_and_exit(int sig) {
+  remove_live_temporaries();
+  remove_created_directories();
+  if (g_interrupt_line) (void)!::write(STDERR_FILENO, g_interrupt_line, std::strlen(g_interrupt_line));
+  _exit(128 + sig);
+}
+
+// The test seam (see the header): the Nth checked operation fails with ENOSPC.
+bool injected_fault() {
+  static const long fault_at = [] {
+    const char* v = std::getenv("ROTINTERP_TEST_FAULT_AT");
+    return v ? std::atol(v) : 0L;
+  }();
+  static std::atomic<long> count{0};
+  if (fault_at <= 0) return false;
+  if (count.fetch_add(1) + 1 != fault_at) return false;
+  errno = ENOSPC;
+  return true;
+}
+
+std::string reason(int err) { return std::strerror(err); }
+
+// Our named temporaries: ".rotinterp.PID.N.tmp" + the target's extension (the
+// exporter that opens a path, assimp's, picks the format by it). Short, so a target name of
+// 255 bytes still works, and the PID tells whose it is.
+constexpr const char* kTempPrefix = ".rotinterp.";
+constexpr std::size_t kMaxKeptExtension = 8;
+
+fs::path temp_name(const fs::path& target, unsigned n) {
+  std::string ext = target.extension().string();
+  if (ext.size() > kMaxKeptExtension) ext.clear();
+  fs::path p = target;
+  p.replace_filename(std::string(kTempPrefix) + std::to_string(::getpid()) + "." + std::to_string(n) + ".tmp" + ext);
+  return p;
+}
+
+// A leftover of a process that no longer runs here (killed with SIGKILL, or on a
+// filesystem without O_TMPFILE), untouched for 10 minutes: removed. The age keeps
+// a live writer on another machine sharing the directory safe from PID reuse.
+constexpr std::time_t kStaleSeconds = 600;
+
+void remove_stale_temporaries(const fs::path& dir) {
+  static std::mutex mutex;
+  static std::set<std::string> swept;  // once per directory and process
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    if (!swept.insert(dir.string()).second) return;
+  }
+  const std::string d = dir.empty() ? std::string(".") : dir.string();
+  DIR* h = ::opendir(d.c_str());
+  if (!h) return;
+  const std::time_t now = std::time(nullptr);
+  const std::size_t plen = std::strlen(kTempPrefix);
+  while (const dirent* e = ::readdir(h)) {
+    const char* name = e->d_name;
+    if (std::strncmp(name, kTempPrefix, plen) != 0 || !std::strstr(name, ".tmp")) continue;
+    char* end = nullptr;
+    const long pid = std::strtol(name + plen, &end, 10);
+    if (end == name + plen || *end != '.' || pid <= 0) continue;
+    if (pid == ::getpid() || ::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;
+    struct stat st {};
+    if (::fstatat(::dirfd(h), name, &st, AT_SYMLINK_NOFOLLOW) != 0 || !S_ISREG(st.st_mode)) continue;
+    if (now - st.st_mtime < kStaleSeconds) continue;
+    ::unlinkat(::dirfd(h), name, 0);
+  }
+  ::closedir(h);
+}
+
+std::atomic<unsigned> g_counter{0};
+
+// Gives a file a new temporary name next to `target`: `create(name)` makes it (a
+// new file, or a link to an unnamed one) and returns false with errno on failure;
+// a name taken already (EEXIST) is skipped. The name is registered for the
+// interrupt handler before the file exists, so a signal between the two cannot
+// leave it behind. Returns the name (with its registration in `slot`), or an empty
+// path with the reason in `err`.
+template <class Create>
+fs::path claim_temp_name(const fs::path& target, int& slot, int& err, Create create) {
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    fs::path name = temp_name(target, g_counter++);
+    slot = cleanup::add(name.string(), cleanup::Kind::file);
+    if (create(name)) return name;
+    err = errno;
+    cleanup::drop(slot);
+    slot = -1;
+    if (err != EEXIST) break;
+  }
+  return {};
+}
+
+
+}  // namespace
+
+void remove_live_temporaries() noexcept { cleanup::remove_all(cleanup::Kind::file); }
+
+Status checked_write(int fd, const void* data, std::size_t size, const std::string& label) {
+  const char* p = static_cast<const char*>(data);
+  while (size > 0) {
+    if (injected_fault()) return write_error(label + ": cannot write: " + reason(errno));
+    const ssize_t n = ::write(fd, p, size);
+    if (n < 0 && errno == EINTR) continue;
+    // 0 bytes written for a non-empty request: no progress is possible.
+    if (n <= 0) return write_error(label + ": cannot write: " + reason(n == 0 ? ENOSPC : errno));
+    p += n;
+    size -= static_cast<std::size_t>(n);
+  }
+  return Ok{};
+}
+
+Status checked_close(int fd, bool sync, const std::string& label) {
+  std::string error;
+  if (sync && (injected_fault() || ::fsync(fd) != 0)) error = label + ": cannot write (sync failed): " + reason(errno);
+  // close() reports deferred write errors (NFS); EINTR still closes on Linux.
+  const bool fault = injected_fault();
+  if ((::close(fd) != 0 && errno != EINTR) || fault)
+    if (error.empty()) error = label + ": cannot write (close failed): " + reason(fault ? ENOSPC : errno);
+  if (!error.empty()) return write_error(error);
+  return Ok{};
+}
+
+AtomicOutput::AtomicOutput(fs::path target, TempKind kind) : target_(std::move(target)) {
+  if (Status s = check_not_an_input(target_); !s) {
+    error_ = s.error();
+    return;
+  }
+  if (Status made = create_output_directories(target_.parent_path()); !made) {
+    error_ = made.error();
+    return;
+  }
+  remove_stale_temporaries(target_.parent_path());
+  const std::string dir = target_.parent_path().empty() ? std::string(".") : target_.parent_path().string();
+  int err = 0;
+  if (kind == TempKind::unnamed) {
+    fd_ = ::open(dir.c_str(), O_TMPFILE | O_RDWR | O_CLOEXEC, 0666);
+    // Filesystems without O_TMPFILE say EOPNOTSUPP (or EISDIR/EINVAL on old kernels).
+    if (fd_ < 0 && errno != EOPNOTSUPP && errno != EISDIR && errno != EINVAL) err = errno;
+  }
+  if (fd_ < 0 && err == 0) {  // new files get 0666 & ~umask, like any new file
+    temp_ = claim_temp_name(target_, slot_, err, [&](const fs::path& name) {
+      fd_ = ::open(name.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+      return fd_ >= 0;
+    });
+  }
+  if (fd_ < 0) error_ = target_.string() + ": cannot write: " + reason(err);
+}
+
+AtomicOutput::~AtomicOutput() {
+  if (fd_ >= 0) ::close(fd_);
+  if (!committed_ && !temp_.empty()) ::unlink(temp_.c_str());
+  cleanup::drop(slot_);
+}
+
+Status AtomicOutput::status() const {
+  if (!error_.empty()) return write_error(error_);
+  return Ok{};
+}
+
+Status AtomicOutput::write(const void* data, std::size_t size) {
+  if (!error_.empty()) return write_error(error_);
+  if (finished_) return write_error(target_.string() + ": written after it was finished");
+  Status s = checked_write(fd_, data, size, target_.string());
+  if (!s) error_ = s.error();
+  return s;
+}
+
+Status AtomicOutput::finish() {
+  if (!error_.empty()) return write_error(error_);
+  if (finished_) return Ok{};
+  const std::string label = target_.string();
+  auto failed = [&](const std::string& message) -> Status {
+    error_ = message;
+    return write_error(message);
+  };
+  // The replaced file's owner and mode (owner first: chown clears set-id bits).
+  struct stat old {};
+  if (::stat(target_.c_str(), &old) == 0 && S_ISREG(old.st_mode)) {
+    struct stat now {};
+    // Not root: at least the group, if we are in it; else the mode alone is kept.
+    if (::fstat(fd_, &now) == 0 && (now.st_uid != old.st_uid || now.st_gid != old.st_gid) &&
+        ::fchown(fd_, old.st_uid, old.st_gid) != 0)
+      (void)!::fchown(fd_, static_cast<uid_t>(-1), old.st_gid);
+    if (::fchmod(fd_, old.st_mode & 07777) != 0) return failed(label + ": cannot keep its permissions: " + reason(errno));
+  }
+  if (injected_fault() || ::fsync(fd_) != 0) return failed(label + ": cannot write (sync failed): " + reason(errno));
+  finished_ = true;
+  return Ok{};
+}
+
+Status AtomicOutput::commit() {
+  if (committed_) return Ok{};
+  if (Status s = finish(); !s) return s;
+  if (Status s = check_not_an_input(target_); !s) return s;
+  const std::string label = target_.string();
+  if (temp_.empty()) {
+    // Unnamed: give it a short-lived name (a plain link cannot replace a file), then
+    // rename that over the target.
+    char proc[64];
+    std::snprintf(proc, sizeof proc, "/proc/self/fd/%d", fd_);
+    int err = 0;
+    temp_ = claim_temp_name(target_, slot_, err, [&](const fs::path& name) {
+      return ::linkat(AT_FDCWD, proc, AT_FDCWD, name.c_str(), AT_SYMLINK_FOLLOW) == 0;
+    });
+    if (temp_.empty()) return write_error(label + ": cannot write: " + reason(err));
+  }
+  if (::rename(temp_.c_str(), target_.c_str()) != 0) return write_error(label + ": cannot write: " + reason(errno));
+  committed_ = true;
+  cleanup::drop(slot_);  // the name is the target's now: not for the interrupt handler to remove
+  slot_ = -1;
+  // The rename itself reaches the disk with the directory.
+  const std::string dir = target_.parent_path().empty() ? std::string(".") : target_.parent_path().string();
+  const int dfd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (dfd >= 0) {
+    ::fsync(dfd);
+    ::close(dfd);
+  }
+  return Ok{};
+}
+
+Status commit_together(const std::vector<AtomicOutput*>& outputs) {
+  for (AtomicOutput* o : outputs)
+    if (Status s = o->finish(); !s) return s;
+  sigset_t block, old;
+  sigemptyset(&block);
+  for (int sig : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&block, sig);
+  pthread_sigmask(SIG_BLOCK, &block, &old);
+  Status result = Ok{};
+  for (AtomicOutput* o : outputs)
+    if (Status s = o->commit(); !s) {
+      result = s;
+      break;
+    }
+  pthread_sigmask(SIG_SETMASK, &old, nullptr);
+  return result;
+}
+
+namespace {
+
+// A stream buffer over AtomicOutput::write; a failed write makes the stream bad.
+class AtomicStreamBuf : public std::streambuf {
+ public:
+  explicit AtomicStreamBuf(AtomicOutput& out) : out_(out), buffer_(kSize) { setp(buffer_.data(), buffer_.data() + kSize); }
+
+ protected:
+  int_type overflow(int_type ch) override {
+    if (!drain()) return traits_type::eof();
+    if (!traits_type::eq_int_type(ch, traits_type::eof())) {
+      *pptr() = traits_type::to_char_type(ch);
+      pbump(1);
+    }
+    return traits_type::not_eof(ch);
+  }
+  int sync() override { return drain() ? 0 : -1; }
+
+ private:
+  static constexpr std::size_t kSize = 1 << 16;
+  bool drain() {
+    const std::size_t n = static_cast<std::size_t>(pptr() - pbase());
+    setp(buffer_.data(), buffer_.data() + kSize);
+    return n == 0 || out_.write(buffer_.data(), n).ok();
+  }
+  AtomicOutput& out_;
+  std::vector<char> buffer_;
+};
+
+}  // namespace
+
+Status write_to(AtomicOutput& out, const std::function<Status(std::ostream&)>& write) {
+  if (Status s = out.status(); !s) return s;
+  AtomicStreamBuf buf(out);
+  std::ostream os(&buf);
+  if (Status s = write(os); !s) return s;
+  os.flush();
+  if (Status s = out.status(); !s) return s;
+  if (!os) return write_error(out.target().string() + ": cannot write");
+  return out.finish();
+}
+
+Status write_file_atomically(const fs::path& target, const std::function<Status(std::ostream&)>& write) {
+  AtomicOutput out(target, TempKind::unnamed);
+  if (Status s = write_to(out, write); !s) return s;
+  return out.commit();
+}
+
+
+
+void install_interrupt_cleanup(const char* line) {
+  g_interrupt_line = line;
+  struct sigaction sa {};
+  sa.sa_handler = remove_live_and_exit;
+  sigemptyset(&sa.sa_mask);
+  for (int sig : {SIGINT, SIGTERM, SIGHUP}) {
+    // A signal the caller ignores stays ignored (nohup, background jobs of a script).
+    struct sigaction old {};
+    if (sigaction(sig, nullptr, &old) == 0 && old.sa_handler == SIG_IGN) continue;
+    sigaction(sig, &sa, nullptr);
+  }
+}
+
+}  // namespace rotinterp

@@ -62,7 +62,7 @@ std::vector<std::string> render(const py::object& input, const std::optional<std
   if (sheet && !out_dir) value_error("sheet needs out_dir");
   o.sheet = sheet;
   o.view = checked(render::parse_view(view));
-  if (Status s = render::check_colouring_view(o.view, colour.has_value()); !s) value_error(s.error());
+  if (Status s = render::check_view_options(o.view, colour.has_value(), !trail.empty()); !s) value_error(s.error());
   if (colour) o.colouring = checked(render::parse_colouring(*colour));
   if (camera) o.camera = checked(render::parse_camera(*camera));
   o.focus_joint = focus;

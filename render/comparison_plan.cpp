@@ -11,6 +11,7 @@
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/io/files/source_method.h"
 #include "rotinterp/render/layout.h"
+#include "rotinterp/render/option_text.h"
 #include "rotinterp/render/video.h"
 
 #include <fmt/format.h>
@@ -233,8 +234,7 @@ Result<ComparisonPlan> ComparisonPlan::plan(const Clip& given, const ComparisonO
   }
   if (!(options.trail_window >= 0.0) || !std::isfinite(options.trail_window))
     return make_error("--trail-window must be a number of seconds ≥ 0");
-  if (overlay && trail_joint >= 0)
-    return make_error("--trail draws one method's curve in each panel: use it with --view side");
+  if (Status s = check_view_options(options.view, false, trail_joint >= 0); !s) return s.failure();
   int focus_joint = -1;
   if (!options.focus_joint.empty()) {
     focus_joint = clip.skeleton.find(options.focus_joint);

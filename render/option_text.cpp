@@ -72,9 +72,11 @@ Result<View> parse_view(std::string_view name) {
   return make_error("--view '" + std::string(name) + "' is not overlay or side");
 }
 
-Status check_colouring_view(View view, bool colour_given) {
+Status check_view_options(View view, bool colour_given, bool trail_given) {
   if (view == View::overlay && colour_given)
     return make_error("--colour applies to --view side: the overlay draws each method in its own colour");
+  if (view == View::overlay && trail_given)
+    return make_error("--trail draws one method's curve in each panel: use it with --view side");
   return Ok{};
 }
 

@@ -156,9 +156,8 @@ int run_render(const RenderArgs& a) {
   options.trail_window = a.trail_window;
   options.sheet = a.sheet;
   if (a.sheet && a.out_dir.empty()) return fail_usage("--sheet needs -o DIR");
-  if (Status s = render::check_colouring_view(options.view, !a.colour.empty()); !s) return fail_usage(s.error());
-  if (options.view == render::View::overlay && !a.trail.empty())
-    return fail_usage("--trail draws one method's curve in each panel: use it with --view side");
+  if (Status s = render::check_view_options(options.view, !a.colour.empty(), !a.trail.empty()); !s)
+    return fail_usage(s.error());
   if (!a.colour.empty()) {
     auto colouring = render::parse_colouring(a.colour);
     if (!colouring) return fail_usage(colouring.error());

@@ -83,7 +83,6 @@ std::vector<Eigen::Vector2d> projected_body(const ComparisonPlan& plan, const Pa
   const PanelCamera pc = panel_camera(plan.scene(), panel, width, height);
   if (viewport) *viewport = pc.viewport;
   const Eigen::Matrix4d m = pc.camera.projection() * pc.camera.view();
-  const Skeleton& skeleton = plan.scene().skeleton;
   std::vector<Eigen::Vector2d> out;
   auto add = [&](const Vec3& p) {
     const Eigen::Vector4d c = m * p.homogeneous();
@@ -94,7 +93,6 @@ std::vector<Eigen::Vector2d> projected_body(const ComparisonPlan& plan, const Pa
   for (std::size_t j = 0; j < pose.position.size(); ++j)
     if (thin.size() != pose.position.size() || !thin[j]) add(pose.position[j]);
   for (std::size_t e = 0; e < pose.end_site_position.size(); ++e) add(pose.end_site_position[e]);
-  (void)skeleton;
   return out;
 }
 

@@ -17,7 +17,8 @@ Result<std::pair<int, int>> parse_size(std::string_view text);
 Result<Colouring> parse_colouring(std::string_view name);  // "error" or "method"
 Result<CameraMode> parse_camera(std::string_view name);    // "fixed" or "follow"
 Result<View> parse_view(std::string_view name);            // "overlay" or "side"
-// A colouring asked for with the overlay, which colours by method: an error.
-Status check_colouring_view(View view, bool colour_given);
+// Options the overlay cannot honour: a colouring (it colours by method) or a trail
+// (one method's curve per panel).
+Status check_view_options(View view, bool colour_given, bool trail_given);
 
 }  // namespace rotinterp::render

@@ -1,6 +1,9 @@
 // rotinterp eval PATH... | eval --merge DIR... -o DIR: batch angular-error evaluation.
 #include "allocator.h"
 #include "common.h"
+#include "folder_plan.h"
+#include "options.h"
+#include "progress_line.h"
 #include "rotinterp/clip/units.h"
 #include "rotinterp/eval/batch.h"
 #include "rotinterp/batch/dataset.h"

@@ -3,6 +3,9 @@
 // rotinterp info PATH... --summary [--json] [-j N]: a dataset's files, its rate
 // histogram and what looks wrong (rate labels, uneven keys, empty clips, copies).
 #include "common.h"
+#include "folder_plan.h"
+#include "options.h"
+#include "progress_line.h"
 #include "info_curves.h"
 #include "rotinterp/clip/bvh_layout.h"
 #include "rotinterp/clip/frames.h"
@@ -10,6 +13,7 @@
 #include "rotinterp/core/work_queue.h"
 #include "rotinterp/batch/dataset.h"
 #include "rotinterp/batch/folder_run.h"
+#include "rotinterp/io/files/formats.h"
 #include "rotinterp/io/info.h"
 
 #include <CLI/CLI.hpp>

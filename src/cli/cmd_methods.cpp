@@ -1,5 +1,6 @@
 // rotinterp methods [--json]: the registered interpolators, and `source`, the file's own curves.
 #include "common.h"
+#include "options.h"
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/io/source_motion.h"
 

@@ -7,7 +7,9 @@
 //                  [--manifest FILE.csv]: a whole dataset, its layout mirrored under OUTDIR.
 #include "cmd_reduce.h"
 #include "common.h"
+#include "options.h"
 #include "rotinterp/io/files/atomic_file.h"
+#include "rotinterp/io/files/formats.h"
 #include "rotinterp/io/takes.h"
 #include "rotinterp/reduce/reduce.h"
 

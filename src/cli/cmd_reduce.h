@@ -3,7 +3,7 @@
 // options parsed once for every file, and the step that reduces and writes one file.
 #pragma once
 
-#include "common.h"  // LoopRequest
+#include "options.h"  // LoopRequest
 #include "rotinterp/core/result.h"
 #include "rotinterp/reduce/reduce.h"
 
@@ -54,7 +54,7 @@ std::string lower_extension(const std::string& path);
 std::string reduce_output_problem(const std::string& output, const std::string& method, bool loop);
 
 // What one file's run found and reduced with the first method: a manifest row after
-// its first columns (io/folder_run.h FileOutcome).
+// its first columns (batch/folder_run.h FileOutcome).
 struct ReduceFileRun {
   std::size_t frames = 0, joints = 0, source_keys = 0, kept_keys = 0;
   double max_rotation_deg = 0.0, max_shell_mm = 0.0, seconds = 0.0;

@@ -1,10 +1,12 @@
 // One file's reduce: read, reduce with each method, write the keys (JSON, glTF or FBX) and the report.
 #include "cmd_reduce.h"
 #include "common.h"
+#include "progress_line.h"
 #include "rotinterp/clip/units.h"
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/io/files/atomic_file.h"
 #include "rotinterp/io/fbx/fbx_reduced.h"
+#include "rotinterp/io/files/formats.h"
 #include "rotinterp/io/read.h"
 #include "rotinterp/io/write.h"
 #include "rotinterp/reduce/reduce.h"
@@ -114,7 +116,7 @@ std::string cycle_text(const ReduceResult& r) {
   return s;
 }
 
-// The kept keys as FBX curves replaying the method (io/fbx_reduced.h), refused
+// The kept keys as FBX curves replaying the method (io/fbx/fbx_reduced.h), refused
 // unless our reader's replay of the file is within the budget at every frame.
 Status write_reduced_fbx(const std::string& path, const Clip& source, const MethodRun& run, const ReduceOptions& opt,
                          bool quiet) {

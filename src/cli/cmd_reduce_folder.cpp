@@ -1,11 +1,14 @@
 // rotinterp reduce PATH... -o OUTDIR: a whole dataset reduced file by file on a folder
-// run (io/folder_run.h), its layout mirrored under OUTDIR, a progress line and the manifest.
+// run (batch/folder_run.h), its layout mirrored under OUTDIR, a progress line and the manifest.
 #include "cmd_reduce.h"
 #include "common.h"
+#include "folder_plan.h"
+#include "progress_line.h"
 #include "rotinterp/core/work_queue.h"
 #include "rotinterp/io/files/atomic_file.h"
 #include "rotinterp/batch/dataset.h"
 #include "rotinterp/batch/folder_run.h"
+#include "rotinterp/io/files/formats.h"
 
 #include <fmt/core.h>
 
@@ -24,7 +27,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The output of each input: resample's mirrored path (io/dataset.h mirror_outputs),
+// The output of each input: resample's mirrored path (batch/dataset.h mirror_outputs),
 // with the extension of `format`, or else the input's own where reduce writes it
 // (fbx, glb, gltf), else json. Error when two inputs would share an output.
 Result<std::vector<MirroredOutput>> reduce_outputs(const std::vector<std::string>& files,

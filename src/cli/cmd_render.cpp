@@ -2,10 +2,13 @@
 // offscreen (render/comparison.h does the work). Built only with the renderer.
 #if ROTINTERP_HAVE_RENDER
 #include "common.h"
+#include "options.h"
+#include "progress_line.h"
 #include "rotinterp/clip/frames.h"
 #include "rotinterp/clip/metrics.h"
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/io/files/atomic_file.h"
+#include "rotinterp/io/files/formats.h"
 #include "rotinterp/io/read.h"
 #include "rotinterp/io/source_motion.h"
 #include "rotinterp/render/comparison.h"

@@ -1,13 +1,14 @@
-// What resample's one-file run (cmd_resample.cpp) and folder run
-// (cmd_resample_folder.cpp) share: the command's arguments, a file's run, and the
-// step that reads, resamples and writes one file.
+// What resample's one-file run (cmd_resample.cpp), one file's work
+// (cmd_resample_file.cpp) and its folder run (cmd_resample_folder.cpp) share: the
+// command's arguments, a file's run, and the step that reads, resamples and writes one file.
 #pragma once
 
-#include "common.h"  // LoopRequest
+#include "options.h"  // LoopRequest
 #include "rotinterp/clip/resample.h"
 #include "rotinterp/clip/sampling.h"
 #include "rotinterp/clip/units.h"
 #include "rotinterp/core/result.h"
+#include "rotinterp/io/files/write_options.h"
 #include "rotinterp/io/source_motion.h"
 
 #include <chrono>
@@ -38,7 +39,7 @@ struct ResampleArgs {
 };
 
 // What one file's run found and wrote: a row of the manifest after its first columns
-// (io/folder_run.h FileOutcome: input, output, status, message).
+// (batch/folder_run.h FileOutcome: input, output, status, message).
 struct FileRun {
   std::string input;
   std::filesystem::path output;
@@ -66,6 +67,8 @@ struct ResampledFile {
 // Reads and resamples one file (its take a.anim), filling `run`; `stage` names each step.
 Result<ResampledFile> resample_input(FileRun& run, const ResampleArgs& a, const ResampleOptions& opt,
                                      const std::function<void(const std::string&)>& stage);
+// How resampled clips are written: --bvh-order, --fbx-ascii, warnings, threads.
+WriteOptions resample_write_options(const ResampleArgs& a, const ResampleOptions& opt);
 // Writes it to run.output (the source's own FBX curves where they go back as stored).
 Status write_resampled(FileRun& run, const ResampledFile& done, const ResampleArgs& a, const ResampleOptions& opt,
                        const std::function<void(const std::string&)>& stage);

@@ -1,11 +1,14 @@
 // rotinterp resample PATH... -o OUTDIR: a whole dataset resampled file by file on a
-// folder run (io/folder_run.h), its layout mirrored under OUTDIR, a progress line and the manifest.
+// folder run (batch/folder_run.h), its layout mirrored under OUTDIR, a progress line and the manifest.
 #include "cmd_resample.h"
 #include "common.h"
+#include "folder_plan.h"
+#include "progress_line.h"
 #include "rotinterp/core/work_queue.h"
 #include "rotinterp/io/files/atomic_file.h"
 #include "rotinterp/batch/dataset.h"
 #include "rotinterp/batch/folder_run.h"
+#include "rotinterp/io/files/formats.h"
 #include "rotinterp/io/write.h"
 
 #include <fmt/core.h>

@@ -1,6 +1,8 @@
 // rotinterp synth OUT [--kind KIND] [--seconds S] [--fps HZ] [--seed N] [--joints N] [--quiet]
 #include "common.h"
+#include "options.h"
 #include "rotinterp/clip/synth.h"
+#include "rotinterp/clip/synth_spec.h"
 #include "rotinterp/io/files/atomic_file.h"
 #include "rotinterp/io/write.h"
 

@@ -1,7 +1,7 @@
 // rotinterp command line: a thin layer over the library. Each subcommand lives in
 // its own cmd_*.cpp; this file only wires them and maps errors to exit codes.
 #include "common.h"
-#include "rotinterp/io/files/atomic_file.h"
+#include "rotinterp/io/files/interrupt_cleanup.h"
 #include "rotinterp/io/files/output_dirs.h"
 
 #include <CLI/CLI.hpp>

@@ -1,13 +1,10 @@
-// Synthetic motions known in closed form (random and walk), their spec strings and sampled clips.
+// Synthetic motions known in closed form: the random kinds and the walking figure, and their clips.
 #include "rotinterp/clip/synth.h"
 
 #include "rotinterp/clip/bvh_layout.h"
 
-#include <charconv>
-#include <fstream>
 #include <cmath>
 #include <random>
-#include <sstream>
 
 namespace rotinterp {
 
@@ -224,12 +221,6 @@ SynthMotion walk_motion(Random& rng) {
   return SynthMotion(std::move(s), std::move(m), std::move(layout));
 }
 
-std::string number_text(double x) {
-  char buf[64];
-  const auto r = std::to_chars(buf, buf + sizeof buf, x);
-  return std::string(buf, r.ptr);
-}
-
 }  // namespace
 
 const char* synth_kind_name(SynthKind k) {
@@ -250,105 +241,6 @@ Result<SynthKind> parse_synth_kind(std::string_view name) {
   return make_error("unknown synth kind '" + std::string(name) + "' (valid: " + synth_kind_names() + ")");
 }
 
-std::string synth_spec(const SynthOptions& o) {
-  return std::string("kind=") + synth_kind_name(o.kind) + " seconds=" + number_text(o.seconds) +
-         " fps=" + o.fps.to_string() + " seed=" + std::to_string(o.seed) +
-         " joints=" + std::to_string(o.kind == SynthKind::walk ? 31 : o.joints);
-}
-
-Result<SynthOptions> parse_synth_spec(std::string_view spec) {
-  SynthOptions o;
-  std::istringstream in{std::string(spec)};
-  std::string item;
-  while (in >> item) {
-    const std::size_t eq = item.find('=');
-    if (eq == std::string::npos) return make_error("synth spec item '" + item + "' is not key=value");
-    const std::string key = item.substr(0, eq), value = item.substr(eq + 1);
-    const char* first = value.data();
-    const char* last = value.data() + value.size();
-    if (key == "kind") {
-      auto k = parse_synth_kind(value);
-      if (!k) return k.failure();
-      o.kind = *k;
-    } else if (key == "fps") {
-      auto r = parse_rate(value);
-      if (!r) return r.failure();
-      o.fps = *r;
-    } else if (key == "seconds") {
-      if (std::from_chars(first, last, o.seconds).ptr != last) return make_error("synth spec: bad seconds '" + value + "'");
-    } else if (key == "seed") {
-      if (std::from_chars(first, last, o.seed).ptr != last) return make_error("synth spec: bad seed '" + value + "'");
-    } else if (key == "joints") {
-      if (std::from_chars(first, last, o.joints).ptr != last) return make_error("synth spec: bad joints '" + value + "'");
-    } else {
-      return make_error("synth spec: unknown key '" + key + "'");
-    }
-  }
-  return o;
-}
-
-Vec3 VectorCurve::at(double t) const {
-  Vec3 v = c0 + t * (c1 + t * c2);
-  for (const Wave& w : waves) v += w.amp * std::sin(w.omega * t + w.phase);
-  return v;
-}
-
-SynthMotion::SynthMotion(Skeleton skeleton, std::vector<JointMotion> motion, std::shared_ptr<const BvhLayout> layout)
-    : skeleton_(std::move(skeleton)), motion_(std::move(motion)), layout_(std::move(layout)) {
-  ROTINTERP_ASSERT(motion_.size() == skeleton_.joints.size());
-}
-
-Quat SynthMotion::rotation(std::size_t j, double t) const {
-  const JointMotion& m = motion_[j];
-  Quat q = Quat::Identity();
-  for (const VectorCurve& f : m.factors) q = q * rotinterp::exp(RotVec(f.at(t)));
-  return normalized_or_identity(q * m.base);
-}
-
-Vec3 SynthMotion::translation(std::size_t j, double t) const {
-  const JointMotion& m = motion_[j];
-  return m.translation ? m.translation->at(t) : skeleton_.joints[j].offset;
-}
-
-void SynthMotion::truth(double t, std::vector<Quat>& rotation, std::vector<Vec3>& translation) const {
-  const std::size_t n = motion_.size();
-  rotation.resize(n);
-  translation.resize(n);
-  for (std::size_t j = 0; j < n; ++j) {
-    rotation[j] = this->rotation(j, t);
-    translation[j] = this->translation(j, t);
-  }
-}
-
-Clip SynthMotion::sample(double seconds, const Rate& rate, std::string name) const {
-  const std::size_t frames = sample_count(seconds, rate);
-  std::vector<double> times(frames);
-  for (std::size_t k = 0; k < frames; ++k) times[k] = rate.time_of(static_cast<std::int64_t>(k));
-  Clip clip;
-  clip.name = std::move(name);
-  clip.skeleton = skeleton_;
-  clip.bvh_layout = layout_;
-  clip.frame_time = rate.period();
-  clip.source_format = "synth";
-  const std::size_t n = motion_.size();
-  clip.rotations.resize(n);
-  clip.translations.resize(n);
-  for (std::size_t j = 0; j < n; ++j) {
-    RotationTrack& r = clip.rotations[j];
-    r.times = times;
-    r.keys.resize(frames);
-    for (std::size_t k = 0; k < frames; ++k) r.keys[k] = rotation(j, times[k]);
-    r.make_sign_continuous();
-    if (motion_[j].translation) {
-      TranslationTrack& tr = clip.translations[j].emplace();
-      tr.times = times;
-      tr.keys.resize(frames);
-      for (std::size_t k = 0; k < frames; ++k) tr.keys[k] = motion_[j].translation->at(times[k]);
-    }
-  }
-  return clip;
-}
-
 Result<SynthMotion> make_synth_motion(const SynthOptions& o) {
   if (!std::isfinite(o.seconds) || o.seconds <= 0.0) return make_error("synth: seconds must be greater than 0");
   if (o.fps.num <= 0 || o.fps.den <= 0) return make_error("synth: frame rate must be greater than 0");
@@ -361,24 +253,6 @@ Result<SynthMotion> make_synth_motion(const SynthOptions& o) {
                       " joints is too large (at most " + std::to_string(kMaxSamples) + " keys)");
   Random rng(o.seed);
   return o.kind == SynthKind::walk ? walk_motion(rng) : random_motion(o, rng);
-}
-
-std::filesystem::path synth_spec_path(const std::filesystem::path& clip_file) {
-  std::filesystem::path p = clip_file;
-  p += ".synth";
-  return p;
-}
-
-Result<SynthMotion> read_synth_spec(const std::filesystem::path& clip_file) {
-  const std::filesystem::path p = synth_spec_path(clip_file);
-  std::ifstream in(p);
-  std::string line;
-  if (!in || !std::getline(in, line)) return make_error(p.string() + ": no synth spec (not made by rotinterp synth?)");
-  auto o = parse_synth_spec(line);
-  if (!o) return o.failure(p.string() + ": ");
-  auto m = make_synth_motion(*o);
-  if (!m) return m.failure(p.string() + ": ");
-  return m;
 }
 
 Result<Clip> make_synth_clip(const SynthOptions& o) {

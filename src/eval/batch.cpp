@@ -1,5 +1,5 @@
 // eval's run: the clip files of this shard evaluated method by method on the folder
-// run's queue (io/folder_run.h), a bounded number of clips in flight, their rows
+// run's queue (batch/folder_run.h), a bounded number of clips in flight, their rows
 // handed on in input order.
 #include "rotinterp/eval/batch.h"
 
@@ -173,7 +173,7 @@ Outcome clip_outcome(ClipSlot& slot, std::vector<MethodOutcome> methods) {
   return o;
 }
 
-// Evaluates every file × method on the folder run's queue (io/folder_run.h) —
+// Evaluates every file × method on the folder run's queue (batch/folder_run.h) —
 // (clip, method) tasks in input order, so a long clip is shared by the workers too —
 // with at most `window` clips in flight, and hands each clip's outcome to `take` in
 // input order. Stops early when `take` returns false.

@@ -1,7 +1,7 @@
 // synth_truth: eval's analytic reference for clips written by `rotinterp synth`.
 #include "rotinterp/eval/synth_truth.h"
 
-#include "rotinterp/clip/synth.h"
+#include "rotinterp/clip/synth_spec.h"
 
 #include <memory>
 

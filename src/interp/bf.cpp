@@ -1,6 +1,7 @@
 // bf: the Buss–Fillmore spherical cubic B-spline through the keys.
 #include "rotinterp/interp/bf.h"
 
+#include "bf_knots.h"
 #include "detail.h"
 #include "rotinterp/core/so3_jacobian.h"
 #include "rotinterp/interp/c2.h"
@@ -249,87 +250,6 @@ class BfInterpolator final : public detail::SegmentInterpolator<BfInterpolator> 
   std::vector<Quat> c_;       // c₋₁ … cₙ₊₁ at [j + 1], sign-continuous
 };
 
-// In-between knots: wherever neighbours are more than max_step apart, and
-// wherever an interval is more than 1.5·kGrading times a neighbouring one (a piece
-// kGrading times the short neighbour is split off next to it, repeatedly). Every
-// in-between knot lies on `along`, the c2 curve through the original keys: a C²
-// curve accurate to h⁴, so the spline keeps its accuracy on wide steps (on the
-// geodesic, wide segments were no better than slerp); c2 is bi-invariant and
-// exact on constant angular velocity, so the spline stays so too.
-constexpr double kGrading = 2.0;
-
-// The knot that grades interval i of `t` (a piece kGrading times the short
-// neighbour split off next to it), or NaN when the interval is no more than
-// 1.5·kGrading times either neighbour. Split only beyond 1.5·kGrading so the pieces
-// (kGrading·short and a rest ≥ 0.5·kGrading·short) are not split again by
-// round-off. The new knot's time is measured from the end next to the short
-// neighbour: as a fraction of the interval it would round to that end once
-// interval/short passes 2⁵³ (keys at −1, −1e-20 and 0: the fuzzer's crash-860848d6).
-double grading_knot(const std::vector<double>& t, std::size_t i) {
-  const double len = t[i + 1] - t[i];
-  const double left = i > 0 ? t[i] - t[i - 1] : len;
-  const double right = i + 2 < t.size() ? t[i + 2] - t[i + 1] : len;
-  double t_new = NAN;
-  if (len > 1.5 * kGrading * left) {
-    t_new = t[i] + kGrading * left;
-  } else if (len > 1.5 * kGrading * right) {
-    t_new = t[i + 1] - kGrading * right;
-  }
-  return t_new > t[i] && t_new < t[i + 1] ? t_new : NAN;
-}
-
-detail::Keys refine(const detail::Keys& k, double max_step, const Interpolator& along) {
-  if (k.size() < 2) return k;
-  detail::Keys out;
-  for (std::size_t i = 0; i + 1 < k.size(); ++i) {
-    out.t.push_back(k.t[i]);
-    out.q.push_back(k.q[i]);
-    const double angle = angular_distance(k.q[i], k.q[i + 1]);
-    const int parts = static_cast<int>(std::ceil(angle / max_step));
-    for (int p = 1; p < parts; ++p) {
-      const double u = static_cast<double>(p) / parts;
-      out.t.push_back(k.t[i] + u * (k.t[i + 1] - k.t[i]));
-      out.q.push_back(detail::align_pair(out.q.back(), along.evaluate(out.t.back())));
-    }
-  }
-  out.t.push_back(k.t.back());
-  out.q.push_back(detail::align_pair(out.q.back(), k.q.back()));
-  // Grading. Each pass splits every too-long interval once; the number of passes
-  // grows with log(largest ratio)/log(kGrading) (≈ 17 for 1e-6 s next to 1e4 s).
-  for (bool changed = true; changed;) {
-    changed = false;
-    detail::Keys g;
-    for (std::size_t i = 0; i + 1 < out.size(); ++i) {
-      g.t.push_back(out.t[i]);
-      g.q.push_back(out.q[i]);
-      const double t_new = grading_knot(out.t, i);
-      if (!std::isnan(t_new)) {
-        g.t.push_back(t_new);
-        g.q.push_back(detail::align_pair(out.q[i], along.evaluate(t_new)));
-        changed = true;
-      }
-    }
-    g.t.push_back(out.t.back());
-    g.q.push_back(out.q.back());
-    out = std::move(g);
-  }
-  return out;
-}
-
-// Whether some interval is graded (grading_knot).
-bool needs_grading(const detail::Keys& k) {
-  for (std::size_t i = 0; i + 1 < k.size(); ++i)
-    if (!std::isnan(grading_knot(k.t, i))) return true;
-  return false;
-}
-
-// Whether refine() would insert any knot.
-bool needs_refinement(const detail::Keys& k, double max_step) {
-  for (std::size_t i = 0; i + 1 < k.size(); ++i)
-    if (angular_distance(k.q[i], k.q[i + 1]) > max_step) return true;
-  return needs_grading(k);
-}
-
 }  // namespace
 
 Result<std::unique_ptr<Interpolator>> make_bf(RotationTrack track, const BfSplineOptions& options) {
@@ -340,7 +260,7 @@ Result<std::unique_ptr<Interpolator>> make_bf(RotationTrack track, const BfSplin
   original.keys = keys->q;
   double miss = 0.0;
   auto attempt = [&](const Interpolator* along, double max_step) {
-    auto p = std::make_unique<BfInterpolator>(along ? refine(*keys, max_step, *along) : *keys, options);
+    auto p = std::make_unique<BfInterpolator>(along ? detail::refine_bf_knots(*keys, max_step, *along) : *keys, options);
     miss = p->solve(options);
     // 1e-9 rad: the promise every interpolator makes about passing through the keys.
     return miss <= 1e-9 ? std::move(p) : nullptr;
@@ -349,9 +269,9 @@ Result<std::unique_ptr<Interpolator>> make_bf(RotationTrack track, const BfSplin
   // intervals also need grading (c2 loops on an interval 1e10 times its neighbour),
   // or the c2 points do not let the control points converge, on the geodesics (as
   // slerp), halving the step up to 3 times.
-  if (!needs_refinement(*keys, options.max_key_step)) {
+  if (!detail::bf_knots_need_refinement(*keys, options.max_key_step)) {
     if (auto p = attempt(nullptr, 0.0)) return std::unique_ptr<Interpolator>(std::move(p));
-  } else if (!needs_grading(*keys)) {
+  } else if (!detail::bf_knots_need_grading(*keys)) {
     auto c2 = make_c2(original);
     if (!c2) return c2.failure();
     if (auto p = attempt(c2->get(), options.max_key_step)) return std::unique_ptr<Interpolator>(std::move(p));

@@ -81,7 +81,7 @@ Result<FileSource> gltf_source(const std::filesystem::path& path, ClipFileInfo&&
   if (out.own_joints() == 0)
     return make_error(label + ": --method source: no joint has a rotation channel in animation '" + animation->name + "'");
   auto tracks = std::make_shared<const std::vector<RotationTrack>>(out.clip.rotations);
-  // Clip time is glTF time (assimp keeps glTF's clock, io/gltf_source.h), up to the float
+  // Clip time is glTF time (assimp keeps glTF's clock, io/gltf/gltf_source.h), up to the float
   // rounding of assimp's key times.
   out.motion = [animation, sampler, tracks](std::size_t j, double t) {
     if (sampler[j] < 0) return sample_rotation((*tracks)[j], t);

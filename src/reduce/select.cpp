@@ -1,5 +1,5 @@
 // Key selection on one track: insert the worst frames, remove the keys not needed, verify.
-#include "reducer.h"
+#include "select.h"
 
 #include <algorithm>
 #include <iterator>
@@ -11,7 +11,7 @@ namespace rotinterp::detail {
 // are measured again (the curve rebuilt from the keys around them, as in step 2), or
 // every frame when those spans cover most of them; "none over budget" is always
 // confirmed over every frame with the whole track. A new key takes its start value
-// (rotations: the source smoothed by kStartSmoothing); a key frame over budget (a
+// (rotations: the source smoothed by kStartSmoothing, reducer.h); a key frame over budget (a
 // fitted value that its ancestors' later keys moved away from) gets the source's
 // value back. With `known`, `e` holds every frame's error already.
 Status insert_worst(std::vector<std::size_t>& keys, std::size_t frames, const ErrorFn& err, const KeyValues* values,

@@ -1,5 +1,5 @@
 // Key selection on a cycle's track: the steps of select.cpp on the periodic curve, checked round the seam.
-#include "reducer.h"
+#include "select.h"
 
 #include <algorithm>
 #include <cstddef>

@@ -1,5 +1,5 @@
 // Key insertion for a method of bounded support: only the frames a new key moves are measured again.
-#include "reducer.h"
+#include "select.h"
 
 #include <algorithm>
 #include <iterator>

@@ -1,5 +1,5 @@
 // What the fault tests share (test_faults.cpp, test_faults_runs.cpp): snapshots of
-// an output directory, the fault seam of io/atomic_file.h, and the Faults fixture
+// an output directory, the fault seam of io/files/atomic_file.h, and the Faults fixture
 // with its synth walk and per-test output directory.
 #pragma once
 
@@ -57,7 +57,7 @@ inline bool render_built() { return run_cli("render --help").exit_code == 0; }
 
 inline int lines(const std::string& text) { return static_cast<int>(std::count(text.begin(), text.end(), '\n')); }
 
-// Runs the CLI with the checked-operation fault seam of io/atomic_file.h set.
+// Runs the CLI with the checked-operation fault seam of io/files/atomic_file.h set.
 inline CliResult run_with_fault(const std::string& args, long at) {
   ::setenv("ROTINTERP_TEST_FAULT_AT", std::to_string(at).c_str(), 1);
   auto r = run_cli(args);

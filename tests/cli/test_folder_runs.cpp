@@ -1,5 +1,5 @@
 // Every command that runs over a folder runs on the one folder-run facility
-// (io/folder_run.h): a bad file among good ones is said by the same line and ends
+// (batch/folder_run.h): a bad file among good ones is said by the same line and ends
 // with the same exit code in resample, eval and info --summary, and the good files
 // are still done.
 #include "support/run_cli.h"

@@ -41,7 +41,7 @@ bool wait_until(pid_t child, const std::function<bool()>& done, double seconds) 
   return ok;
 }
 
-// A named temporary output of io/atomic_file.h: ".rotinterp.PID.N.tmp.EXT" (or a
+// A named temporary output of io/files/atomic_file.h: ".rotinterp.PID.N.tmp.EXT" (or a
 // side file assimp made from it).
 bool is_temp_name(const std::string& name) { return name.size() > 1 && name[0] == '.' && name.find(".tmp") != std::string::npos; }
 

@@ -1,6 +1,6 @@
 // Every long job's progress line: one format (done/total, rate, ETA) on a terminal,
 // nothing with --quiet or when stderr is not a terminal.
-#include "common.h"
+#include "progress_line.h"
 #include "support/run_cli.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Layer blending and the full node transform (io/fbx_transform.h) against Maya:
+// Layer blending and the full node transform (io/fbx/fbx_transform.h) against Maya:
 // ../shared/data/curves/ufbx_maya_anim_layers_over_acc_orders_18.obj is Maya's
 // world-space mesh at frame 18 of fbx/ufbx_maya_anim_layers_over_acc_orders_7500_ascii.fbx
 // (six cubes, one per rotation order, each animated in an additive layer that

@@ -1,4 +1,4 @@
-// The `source` rotations (io/fbx_source.h): joints evaluated from the FBX file's
+// The `source` rotations (io/fbx/fbx_source.h): joints evaluated from the FBX file's
 // stored curves equal assimp's baked keys where assimp sampled those curves, and
 // between keys follow the curves' tangents, which no interpolator of the keys does.
 #include "io_test_util.h"

@@ -1,4 +1,4 @@
-// The folder-run facility (io/folder_run.h): inputs and shards, tasks in input
+// The folder-run facility (batch/folder_run.h): inputs and shards, tasks in input
 // order, skip-existing, failures with their kind, the manifest.
 #include "rotinterp/batch/folder_run.h"
 

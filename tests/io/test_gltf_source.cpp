@@ -1,4 +1,4 @@
-// `source` for glTF (io/gltf_source.h): the file's samplers, read by our own reader and
+// `source` for glTF (io/gltf/gltf_source.h): the file's samplers, read by our own reader and
 // evaluated as the glTF 2.0 spec's Appendix C defines them, checked against the spec's
 // formulas written out here, independently of the library, and against assimp's keys.
 #include "gltf_fixture.h"

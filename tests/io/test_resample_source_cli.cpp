@@ -22,7 +22,7 @@ TEST(ResampleSourceCli, AKeyedFbxIsWrittenWithItsJointsFromTheCurves) {
   EXPECT_TRUE(std::filesystem::is_regular_file(out));
 }
 
-// Layers blended (io/fbx_transform.h): a joint animated in several layers replays.
+// Layers blended (io/fbx/fbx_transform.h): a joint animated in several layers replays.
 TEST(ResampleSourceCli, ALayeredFbxIsWrittenWithItsLayersBlended) {
   test::TempDir dir;
   const auto out = dir / "cubes.bvh";

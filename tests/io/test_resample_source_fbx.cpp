@@ -1,4 +1,4 @@
-// resample --method source -o OUT.fbx without --fps (io/fbx_source.h
+// resample --method source -o OUT.fbx without --fps (io/fbx/fbx_source.h
 // encode_source_fbx): the written file holds the source's own curves — every key's
 // time, value, interpolation, tangent mode, slopes and weights — for each joint, so
 // that our reader replays exactly what the DCC keyed; assimp still reads it.

@@ -1,4 +1,4 @@
-// reduce -o OUT.fbx (io/fbx_reduced.h): the written Euler curves, read back and
+// reduce -o OUT.fbx (io/fbx/fbx_reduced.h): the written Euler curves, read back and
 // replayed by our own FBX reader, stay within reduce's budget at every source frame
 // with far fewer keys than frames; cubic methods write cubic keys with tangents,
 // slerp linear keys; assimp reads the file.

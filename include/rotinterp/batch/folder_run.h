@@ -1,7 +1,7 @@
 // Running a job over many files: the one facility behind every folder run
 // (resample, eval, info --summary).
 //
-//  * find_run_inputs: the clip files named or found in folders (io/dataset.h
+//  * find_run_inputs: the clip files named or found in folders (batch/dataset.h
 //    discover_inputs), this shard's part of them;
 //  * run_in_order: tasks on one work queue (core/work_queue.h) of the caller's
 //    thread count, a bounded number in flight, results handed back in input order;

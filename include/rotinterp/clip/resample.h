@@ -12,15 +12,14 @@
 
 #include "rotinterp/clip/clip.h"
 #include "rotinterp/clip/sampling.h"
+#include "rotinterp/clip/time_range.h"
 #include "rotinterp/clip/translation_curve.h"
 #include "rotinterp/core/progress.h"
 #include "rotinterp/core/result.h"
 
 #include <cstddef>
-#include <limits>
 #include <optional>
 #include <string>
-#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -29,22 +28,6 @@ namespace rotinterp {
 // The default rotation method of `rotinterp resample`, chosen by measurement on
 // real clips (README "rotinterp resample").
 inline constexpr const char* kDefaultResampleMethod = "clamped";
-
-// A time range measured from the clip's first frame (0 = first frame), each bound
-// in seconds or, when its *_in_frames is set, in source frames (whole numbers,
-// turned into seconds with the clip's exact rate). end = +∞ means "to the clip's end".
-struct TimeRange {
-  double start = 0.0;
-  double end = std::numeric_limits<double>::infinity();
-  bool start_in_frames = false;
-  bool end_in_frames = false;
-};
-
-// "START:END" (the --range text): each side empty, seconds ("1.5", "1.5s") or frames
-// ("120f"); mixed forms are allowed ("2:480f"). Errors (one line, naming the text):
-// no colon, a side that is neither, a negative bound, a fractional frame, END not after
-// START when both are in one unit.
-Result<TimeRange> parse_time_range(std::string_view text);
 
 struct ResampleOptions {
   // Output rate. Unset and keep_every unset: the source's own rate (a round trip

@@ -1,7 +1,7 @@
 // The batch behind `rotinterp eval`: many clips, in parallel, into DIR/errors.csv,
 // DIR/summary.json and PNG plots; and the merge of shard outputs.
 //
-// `jobs` worker threads of the folder run (io/folder_run.h run_in_order) take
+// `jobs` worker threads of the folder run (batch/folder_run.h run_in_order) take
 // (clip, method) pairs in input order — a clip is read
 // and its reference prepared once, by the first of its pairs — so a long clip is
 // shared by the workers too. Results are written in input order as they complete,
@@ -34,7 +34,7 @@ struct PerFrameRequest {
 };
 
 struct EvalOptions {
-  std::vector<std::filesystem::path> inputs;  // files and directories (see io/dataset.h)
+  std::vector<std::filesystem::path> inputs;  // files and directories (see batch/dataset.h)
   std::filesystem::path output_dir;           // created if missing
   ClipEvalOptions clip;                       // methods, keep_every, subframe, shell distance
   int jobs = 0;                               // worker threads; 0 = all cores

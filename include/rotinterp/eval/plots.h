@@ -23,7 +23,7 @@ std::vector<std::string> plot_file_names();
 // over all samples, the median over clips of the clip RMS, and the max.
 // worst_clip_joints: RMS angle per joint of the worst clip at its largest keep_every.
 // clip_errors: each clip's RMS angle at the largest keep_every it was evaluated at.
-// Every method has its own colour, marker and dash pattern (interp/method_style.h),
+// Every method has its own colour, marker and dash pattern (palette/method_style.h),
 // and its points are offset slightly sideways so that methods with equal values stay
 // visible. Axes, texts and legends go where eval/plot_layout.h puts them.
 

@@ -137,7 +137,7 @@ std::string format_summary_table(const Summary& summary, TableFormat format = Ta
 // clips.csv: its header and one line per ClipResult (numbers as in errors.csv).
 std::string clips_csv(const Summary& summary);
 
-// A file that failed to load or evaluate (io/folder_run.h: the kind kept).
+// A file that failed to load or evaluate (batch/folder_run.h: the kind kept).
 using EvalFailure = FileFailure;
 
 // A clip evaluated at fewer spacings than asked, or at none: too few frames

@@ -10,7 +10,7 @@
 namespace rotinterp {
 
 // `rotinterp synth OUT` writes the spec of the motion to OUT.synth. This rebuilds
-// that motion (clip/synth.h, read_synth_spec) and returns its exact local
+// that motion (clip/synth_spec.h, read_synth_spec) and returns its exact local
 // rotations and translations at any time. Errors (one line, naming the file): no
 // spec next to the clip, an unreadable spec, or a motion whose joints (count,
 // names, order) differ from the clip's.

@@ -3,7 +3,7 @@
 // the file's header, validation assimp does not do).
 //
 // What the reader does (README "Formats" has the user's view):
-//  * BVH: our own pass (io/bvh.h) validates the whole file first (before assimp
+//  * BVH: our own pass (io/bvh/bvh.h) validates the whole file first (before assimp
 //    sees it: NaN/inf values, Frame Time ≤ 0 and short data fail fast) and gives the
 //    layout, End Sites, exact Frame Time and every channel value in double precision,
 //    including the position channels assimp drops (any layout but exactly 6
@@ -41,7 +41,7 @@ namespace rotinterp {
 // Reads one animation of `path` into a validated Clip (tracks sign-continuous).
 // Errors are one line and name the file; their kind (core/result.h) says whether
 // the file was unreadable, held no animation, or made the importer crash, run too
-// long or answer too much. Skeletons nested deeper than kMaxJointDepth (io/bvh.h)
+// long or answer too much. Skeletons nested deeper than kMaxJointDepth (io/bvh/bvh.h)
 // are refused in every format.
 Result<Clip> read_clip(const std::filesystem::path& path, const ReadOptions& options = {});
 

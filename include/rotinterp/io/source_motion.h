@@ -2,9 +2,9 @@
 // --truth source and render's source panel, which ask no more than this header gives.
 //
 // What each format replays (joint j's local rotation at clip time t):
-//  * FBX: the Lcl Rotation curves as the file stores them (io/fbx_source.h);
+//  * FBX: the Lcl Rotation curves as the file stores them (io/fbx/fbx_source.h);
 //  * glTF/GLB: the selected animation's rotation samplers as the glTF spec evaluates
-//    them: STEP, LINEAR (shortest-path slerp), CUBICSPLINE (io/gltf_source.h);
+//    them: STEP, LINEAR (shortest-path slerp), CUBICSPLINE (io/gltf/gltf_source.h);
 //  * BVH: its frames, which are the clip's keys (every frame a key): between frames,
 //    the shortest-arc slerp of the two neighbouring frames (track/sample.h), since a
 //    BVH stores nothing between them.

@@ -1,6 +1,6 @@
 // Writing clips: BVH, FBX and glTF/GLB by writers of our own, Collada through
 // assimp's exporter; several takes into one FBX or glTF/GLB (write_clips). The format follows the extension of the path. Every write is
-// atomic (see io/atomic_file.h).
+// atomic (see io/files/atomic_file.h).
 #pragma once
 
 #include "rotinterp/clip/clip.h"
@@ -17,7 +17,7 @@ namespace rotinterp {
 
 // Writes `clip` to `path`; the format follows the extension (bvh, fbx, glb, gltf,
 // dae). The clip must be sampled on a uniform grid of frame_time for BVH output.
-// Atomic (io/atomic_file.h), missing folders created; an error about the output has
+// Atomic (io/files/atomic_file.h), missing folders created; an error about the output has
 // ErrorKind::cannot_write and names the file or folder.
 Status write_clip(const Clip& clip, const std::filesystem::path& path, const WriteOptions& options = {});
 

@@ -1,5 +1,5 @@
 // parse_fbx_binary: binary FBX 6.1–7.7 node records into an FbxDocument, every
-// offset and count checked before it is used (io/fbx_nodes.h states the rules).
+// offset and count checked before it is used (io/fbx/fbx_nodes.h states the rules).
 #include "rotinterp/io/fbx/fbx_nodes.h"
 
 #include <zlib.h>

@@ -1,5 +1,5 @@
 // An FBX file's motion as our reader replays it, measured against the source at
-// every frame (private to src/io; io/fbx_reduced.h uses it to check what it writes).
+// every frame (private to src/io; io/fbx/fbx_reduced.h uses it to check what it writes).
 #pragma once
 
 #include "rotinterp/clip/frames.h"
@@ -21,7 +21,7 @@ struct FbxReplayErrors {
   std::vector<std::vector<double>> translation;   // local translation (0 for joints without a track)
 };
 
-// `bytes` parsed, read (io/fbx_curves.h) and evaluated (io/fbx_transform.h) in its
+// `bytes` parsed, read (io/fbx/fbx_curves.h) and evaluated (io/fbx/fbx_transform.h) in its
 // first take at `frame_ticks` (one per source frame), each joint's node found by
 // name, against `source` (whose skeleton is `skeleton`). Shell errors only for
 // joints whose budget has one. Errors: the file does not parse, has no take, or

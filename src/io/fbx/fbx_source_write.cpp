@@ -12,7 +12,7 @@ namespace rotinterp {
 namespace {
 
 // Packed weights are 16-bit decimal fixed point (0.4 digits); velocities in
-// hundredths (as io/fbx_curves.cpp reads them).
+// hundredths (as io/fbx/fbx_curves.cpp reads them).
 constexpr double kWeightScale = 10000.0, kVelocityScale = 100.0;
 
 float bits_as_float(std::uint32_t u) {

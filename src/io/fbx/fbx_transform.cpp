@@ -1,5 +1,5 @@
 // FBX node transforms from a take: layers blended per Lcl property, then the full
-// local transform in FBX's order (io/fbx_transform.h).
+// local transform in FBX's order (io/fbx/fbx_transform.h).
 #include "rotinterp/io/fbx/fbx_transform.h"
 
 #include "rotinterp/io/files/euler.h"
@@ -21,7 +21,7 @@ constexpr int kLayerRotationOrder = 0;
 constexpr double kFullWeight = 0.99999;
 
 // FBX RotationOrder (0 XYZ, 1 XZY, 2 YZX, 3 YXZ, 4 ZXY, 5 ZYX: innermost axis
-// first) as io/euler.h's outermost-first axes.
+// first) as io/files/euler.h's outermost-first axes.
 EulerAxes fbx_order_axes(int order) {
   static const char* names[] = {"XYZ", "XZY", "YZX", "YXZ", "ZXY", "ZYX"};
   const char* name = names[order >= 0 && order < 6 ? order : 0];

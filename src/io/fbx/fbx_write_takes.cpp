@@ -8,7 +8,7 @@ namespace rotinterp {
 
 namespace {
 
-// FbxAnimCurve key layout version and per-key attributes (io/fbx_curves.cpp reads
+// FbxAnimCurve key layout version and per-key attributes (io/fbx/fbx_curves.cpp reads
 // them): linear interpolation (0x4) with the SDK's default tangent bits; cubic (0x8)
 // with user tangents (0x400), broken (0x800) where the left and right slopes differ.
 // The tangent weights are the default 1/3, packed as two 16-bit 3333s into one

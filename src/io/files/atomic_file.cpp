@@ -1,13 +1,11 @@
 // Atomic writes: temporary file, checked writes, fsync, rename.
 #include "rotinterp/io/files/atomic_file.h"
 
+#include "cleanup_list.h"
+#include "temp_names.h"
 #include "rotinterp/io/files/output_dirs.h"
 
-#include "cleanup_list.h"
-
-#include <dirent.h>
 #include <fcntl.h>
-#include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -17,10 +15,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <ctime>
-#include <mutex>
 #include <ostream>
-#include <set>
 #include <streambuf>
 #include <string>
 #include <utility>
@@ -34,15 +29,6 @@ namespace fs = std::filesystem;
 // Every error here is about an output (its folder, its file, its lock): a caller names
 // the output, not its input, in front of it.
 Error write_error(std::string message) { return make_error(std::move(message), ErrorKind::cannot_write); }
-
-const char* g_interrupt_line = nullptr;  // set once, before the handlers
-
-extern "C" void remove_live_and_exit(int sig) {
-  remove_live_temporaries();
-  remove_created_directories();
-  if (g_interrupt_line) (void)!::write(STDERR_FILENO, g_interrupt_line, std::strlen(g_interrupt_line));
-  _exit(128 + sig);
-}
 
 // The test seam (see the header): the Nth checked operation fails with ENOSPC.
 bool injected_fault() {
@@ -59,78 +45,7 @@ bool injected_fault() {
 
 std::string reason(int err) { return std::strerror(err); }
 
-// Our named temporaries: ".rotinterp.PID.N.tmp" + the target's extension (the
-// exporter that opens a path, assimp's, picks the format by it). Short, so a target name of
-// 255 bytes still works, and the PID tells whose it is.
-constexpr const char* kTempPrefix = ".rotinterp.";
-constexpr std::size_t kMaxKeptExtension = 8;
-
-fs::path temp_name(const fs::path& target, unsigned n) {
-  std::string ext = target.extension().string();
-  if (ext.size() > kMaxKeptExtension) ext.clear();
-  fs::path p = target;
-  p.replace_filename(std::string(kTempPrefix) + std::to_string(::getpid()) + "." + std::to_string(n) + ".tmp" + ext);
-  return p;
-}
-
-// A leftover of a process that no longer runs here (killed with SIGKILL, or on a
-// filesystem without O_TMPFILE), untouched for 10 minutes: removed. The age keeps
-// a live writer on another machine sharing the directory safe from PID reuse.
-constexpr std::time_t kStaleSeconds = 600;
-
-void remove_stale_temporaries(const fs::path& dir) {
-  static std::mutex mutex;
-  static std::set<std::string> swept;  // once per directory and process
-  {
-    std::lock_guard<std::mutex> lock(mutex);
-    if (!swept.insert(dir.string()).second) return;
-  }
-  const std::string d = dir.empty() ? std::string(".") : dir.string();
-  DIR* h = ::opendir(d.c_str());
-  if (!h) return;
-  const std::time_t now = std::time(nullptr);
-  const std::size_t plen = std::strlen(kTempPrefix);
-  while (const dirent* e = ::readdir(h)) {
-    const char* name = e->d_name;
-    if (std::strncmp(name, kTempPrefix, plen) != 0 || !std::strstr(name, ".tmp")) continue;
-    char* end = nullptr;
-    const long pid = std::strtol(name + plen, &end, 10);
-    if (end == name + plen || *end != '.' || pid <= 0) continue;
-    if (pid == ::getpid() || ::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;
-    struct stat st {};
-    if (::fstatat(::dirfd(h), name, &st, AT_SYMLINK_NOFOLLOW) != 0 || !S_ISREG(st.st_mode)) continue;
-    if (now - st.st_mtime < kStaleSeconds) continue;
-    ::unlinkat(::dirfd(h), name, 0);
-  }
-  ::closedir(h);
-}
-
-std::atomic<unsigned> g_counter{0};
-
-// Gives a file a new temporary name next to `target`: `create(name)` makes it (a
-// new file, or a link to an unnamed one) and returns false with errno on failure;
-// a name taken already (EEXIST) is skipped. The name is registered for the
-// interrupt handler before the file exists, so a signal between the two cannot
-// leave it behind. Returns the name (with its registration in `slot`), or an empty
-// path with the reason in `err`.
-template <class Create>
-fs::path claim_temp_name(const fs::path& target, int& slot, int& err, Create create) {
-  for (int attempt = 0; attempt < 100; ++attempt) {
-    fs::path name = temp_name(target, g_counter++);
-    slot = cleanup::add(name.string(), cleanup::Kind::file);
-    if (create(name)) return name;
-    err = errno;
-    cleanup::drop(slot);
-    slot = -1;
-    if (err != EEXIST) break;
-  }
-  return {};
-}
-
-
 }  // namespace
-
-void remove_live_temporaries() noexcept { cleanup::remove_all(cleanup::Kind::file); }
 
 Status checked_write(int fd, const void* data, std::size_t size, const std::string& label) {
   const char* p = static_cast<const char*>(data);
@@ -318,21 +233,6 @@ Status write_file_atomically(const fs::path& target, const std::function<Status(
   AtomicOutput out(target, TempKind::unnamed);
   if (Status s = write_to(out, write); !s) return s;
   return out.commit();
-}
-
-
-
-void install_interrupt_cleanup(const char* line) {
-  g_interrupt_line = line;
-  struct sigaction sa {};
-  sa.sa_handler = remove_live_and_exit;
-  sigemptyset(&sa.sa_mask);
-  for (int sig : {SIGINT, SIGTERM, SIGHUP}) {
-    // A signal the caller ignores stays ignored (nohup, background jobs of a script).
-    struct sigaction old {};
-    if (sigaction(sig, nullptr, &old) == 0 && old.sa_handler == SIG_IGN) continue;
-    sigaction(sig, &sa, nullptr);
-  }
 }
 
 }  // namespace rotinterp

@@ -1,5 +1,5 @@
 // The one list of what an interrupted or failed run takes back: live temporary files
-// (io/atomic_file.h) and the output folders the run created (io/output_dirs.h). The
+// (io/files/atomic_file.h) and the output folders the run created (io/files/output_dirs.h). The
 // paths are kept as fixed C strings, so a signal handler can remove them without
 // allocating.
 #pragma once

@@ -1,5 +1,5 @@
 // glTF animation samplers evaluated as the glTF 2.0 spec's Appendix C defines them
-// (io/gltf_source.h has the formulas).
+// (io/gltf/gltf_source.h has the formulas).
 #include "rotinterp/core/geodesic.h"
 #include "rotinterp/io/gltf/gltf_source.h"
 

@@ -126,7 +126,7 @@ void get(Reader& r, Clip& clip) {
   clip.file_rate_hz = r.f64();
 }
 
-// The FBX curves as read (io/fbx_curves.h): takes, layers, curves, keys, models.
+// The FBX curves as read (io/fbx/fbx_curves.h): takes, layers, curves, keys, models.
 constexpr std::size_t kKey = 8 + 8 + 1 + 1 + 8 + 2 * kDouble + 2 + 2 * kDouble + 2 + 2 * kDouble + 3 * kDouble;
 constexpr std::size_t kFbxVec3 = 3 * kDouble;
 

@@ -1,5 +1,5 @@
 // FBX curves evaluated as the DCC (Maya, MotionBuilder, the FBX SDK) does, from
-// the stored keys (io/fbx_curves.h):
+// the stored keys (io/fbx/fbx_curves.h):
 //  * constant keys hold their value (constant-next: the next key's);
 //  * linear keys interpolate linearly;
 //  * cubic keys are a Bezier segment whose inner control points lie at the

@@ -3,8 +3,8 @@
 //
 // FBX stores each joint's rotation as three Euler curves (degrees, in the joint's
 // rotation order), not as the quaternion curve a method builds, so the file is
-// written, read back through our own reader (io/fbx_curves.h) and evaluated as the
-// DCC does (io/fbx_curve_eval.h, fbx_transform.h) at every source frame, and keys
+// written, read back through our own reader (io/fbx/fbx_curves.h) and evaluated as the
+// DCC does (io/fbx/fbx_curve_eval.h, fbx_transform.h) at every source frame, and keys
 // are added until that replay stays within the budget reduce applied:
 //  * keys: each kept key of the reduced clip, its Euler angles the method's curve
 //    there, unwrapped frame by frame along the curve (euler_nearest: no 360° jumps,

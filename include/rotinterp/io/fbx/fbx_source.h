@@ -1,9 +1,9 @@
 // The `source` rotations of an FBX clip: each joint's local rotation evaluated
-// from the curves the file stores (io/fbx_curves.h, fbx_curve_eval.h) instead of
+// from the curves the file stores (io/fbx/fbx_curves.h, fbx_curve_eval.h) instead of
 // interpolated between the keys assimp baked from them.
 //
 // A joint's local rotation is PreRotation · R(Lcl Rotation) · PostRotation⁻¹
-// (io/fbx_transform.h), Lcl Rotation blended over the take's layers, as assimp
+// (io/fbx/fbx_transform.h), Lcl Rotation blended over the take's layers, as assimp
 // composes the same node (so a replayed key equals the baked one where assimp
 // sampled the curves of a one-layer take). RotationActive is not consulted
 // (assimp does not either).

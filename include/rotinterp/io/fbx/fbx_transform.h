@@ -1,5 +1,5 @@
 // An FBX node's transform as Maya and MotionBuilder evaluate it from a take: each
-// Lcl property's layers blended (io/fbx_curves.h FbxLayer), then the full local
+// Lcl property's layers blended (io/fbx/fbx_curves.h FbxLayer), then the full local
 // transform in FBX's order
 //   T · Roff · Rp · Rpre · R · Rpost⁻¹ · Rp⁻¹ · Soff · Sp · S · Sp⁻¹
 // where R is the Euler rotation in the node's RotationOrder (FBX names the axes in

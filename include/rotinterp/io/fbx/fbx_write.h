@@ -15,7 +15,7 @@
 //    track) with one AnimationCurve per axis: by default a key at every key time of the
 //    clip (the union over all joints), linear (fbx_frame_curves); or the curves given
 //    (encode_fbx_curves: sparse keys, linear or cubic with user tangents, as
-//    rotinterp reduce writes them: io/fbx_reduced.h); Euler angles in degrees in the
+//    rotinterp reduce writes them: io/fbx/fbx_reduced.h); Euler angles in degrees in the
 //    joint's BVH rotation order (FBX XYZ for joints without one), each the solution
 //    nearest the previous key (euler_nearest), so curves never jump by 360°; key
 //    times in FBX ticks (46 186 158 000 per second), rounded exactly from the
@@ -42,7 +42,7 @@ enum class FbxEncoding { binary, ascii };
 // One key of a written curve (fbx_write_curves.cpp builds them, fbx_write.cpp
 // writes them): linear, or cubic with user slopes in value per second — its own
 // right slope and the next key's left slope, as KeyAttrDataFloat holds them
-// (io/fbx_curves.h FbxKey). Left and right slopes that differ make a broken key.
+// (io/fbx/fbx_curves.h FbxKey). Left and right slopes that differ make a broken key.
 // A key copied from a read file instead keeps its KeyAttrFlags and
 // KeyAttrDataFloat as they were (stored_flags non-zero).
 struct FbxOutKey {

@@ -14,7 +14,7 @@
 //     A named temporary whose process is gone and that is 10 minutes old is removed
 //     by the next run that writes into that directory.
 //  4. SIGINT/SIGTERM/SIGHUP remove the named temporaries still open and the
-//     output folders the run created, if still empty (install_interrupt_cleanup()).
+//     output folders the run created, if still empty (io/files/interrupt_cleanup.h).
 //  5. An output that is the same file (device and inode: links count) as a
 //     registered input (protect_input(), io/files/run_guard.h) is refused.
 //
@@ -42,7 +42,7 @@ enum class TempKind {
 
 // A temporary sibling of `target` (same directory, so rename is atomic) that is
 // deleted unless commit() succeeds. The target's missing folders are created first
-// (io/output_dirs.h: a failed run takes them back), so every writer makes them.
+// (io/files/output_dirs.h: a failed run takes them back), so every writer makes them.
 class AtomicOutput {
  public:
   explicit AtomicOutput(std::filesystem::path target, TempKind kind = TempKind::named);
@@ -78,7 +78,6 @@ class AtomicOutput {
 // meanwhile is handled afterwards). Stops at the first failure.
 Status commit_together(const std::vector<AtomicOutput*>& outputs);
 
-
 // Writes `data` to `fd` in full, retrying short writes and EINTR. Error:
 // "<label>: cannot write: <reason>". Counts as checked operations for the seam.
 Status checked_write(int fd, const void* data, std::size_t size, const std::string& label);
@@ -91,16 +90,5 @@ Status checked_close(int fd, bool sync, const std::string& label);
 Status write_file_atomically(const std::filesystem::path& target, const std::function<Status(std::ostream&)>& write);
 // The same, written into `out` without committing it (see commit_together).
 Status write_to(AtomicOutput& out, const std::function<Status(std::ostream&)>& write);
-
-
-// Installs SIGINT/SIGTERM/SIGHUP handlers that delete live temporary files and the
-// output folders the run created that are still empty (io/output_dirs.h), write
-// `line` (when given, a static string: "rotinterp: interrupted\n") on stderr, then
-// exit with 128 + signal. A signal ignored at the time of the call (nohup) stays
-// ignored. Call once from main().
-void install_interrupt_cleanup(const char* line = nullptr);
-// Deletes the live named temporary files now (async-signal-safe): for a handler
-// that ends the process another way (an uncaught out-of-memory).
-void remove_live_temporaries() noexcept;
 
 }  // namespace rotinterp

@@ -16,7 +16,7 @@ Status create_output_directories(const std::filesystem::path& dir);
 
 // Removes the folders create_output_directories() made that are empty now, newest
 // first (rmdir only: a folder holding a file stays). Async-signal-safe: the
-// interrupt handler (io/atomic_file.h install_interrupt_cleanup) calls it, and the
+// interrupt handler (io/files/atomic_file.h install_interrupt_cleanup) calls it, and the
 // CLI after a failed run.
 void remove_created_directories() noexcept;
 

@@ -44,7 +44,7 @@ struct ClipFileInfo {
   std::vector<std::string> warnings;  // as also passed to ReadOptions::on_warning
   std::size_t folded_helpers = 0;     // `$AssimpFbx$` helper nodes folded into bones
   // FBX with ReadOptions::read_curves: the curves as the file stores them, read by
-  // our own FBX reader (io/fbx_curves.h); empty otherwise.
+  // our own FBX reader (io/fbx/fbx_curves.h); empty otherwise.
   std::optional<FbxAnimation> curves;
 };
 

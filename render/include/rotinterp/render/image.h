@@ -23,7 +23,7 @@ struct Image {
   }
 };
 
-// Writes `image` as a PNG (stb_image_write), atomically (io/atomic_file.h): a
+// Writes `image` as a PNG (stb_image_write), atomically (io/files/atomic_file.h): a
 // reader never sees a partial file. The same image always gives the same bytes.
 Status write_png(const Image& image, const std::filesystem::path& path);
 

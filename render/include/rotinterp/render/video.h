@@ -7,7 +7,7 @@
 //    frame, then paletteuse with Sierra-2-4A dithering), looping; ffmpeg keeps
 //    the frames in memory until the palette is made.
 //
-// Atomic like every output (io/atomic_file.h): ffmpeg writes a named temporary
+// Atomic like every output (io/files/atomic_file.h): ffmpeg writes a named temporary
 // next to the target, renamed onto it by finish() once ffmpeg has exited
 // cleanly. On any failure — ffmpeg missing or failing, a write refused — the
 // target keeps its previous content and the temporary is removed.

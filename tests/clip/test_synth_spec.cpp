@@ -2,19 +2,29 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
 using namespace rotinterp;
 
-TEST(SynthSpec, RoundTripsTheOptionsAndRejectsUnknownKeysAndKinds) {
+namespace {
+
+SynthOptions options(SynthKind kind, std::uint64_t seed, double seconds, Rate fps, int joints) {
   SynthOptions o;
-  o.kind = SynthKind::spin;
-  o.seed = 12345;
-  o.seconds = 2.5;
-  o.fps = Rate{30000, 1001};
-  o.joints = 7;
+  o.kind = kind;
+  o.seed = seed;
+  o.seconds = seconds;
+  o.fps = fps;
+  o.joints = joints;
+  return o;
+}
+
+}  // namespace
+
+TEST(SynthSpec, RoundTripsTheOptionsAndRejectsUnknownKeysAndKinds) {
+  const SynthOptions o = options(SynthKind::spin, 12345, 2.5, Rate{30000, 1001}, 7);
   const std::string spec = synth_spec(o);
   EXPECT_EQ(spec, "kind=spin seconds=2.5 fps=30000/1001 seed=12345 joints=7");
   auto back = parse_synth_spec(spec);
@@ -30,12 +40,7 @@ TEST(SynthSpec, RoundTripsTheOptionsAndRejectsUnknownKeysAndKinds) {
 
 TEST(SynthSpec, AFileNextToAClipRebuildsItsMotion) {
   const std::filesystem::path clip = std::filesystem::temp_directory_path() / "rotinterp_synth_spec_test.bvh";
-  SynthOptions o;
-  o.kind = SynthKind::smooth;
-  o.seed = 31;
-  o.seconds = 1.5;
-  o.fps = Rate{24, 1};
-  o.joints = 5;
+  const SynthOptions o = options(SynthKind::smooth, 31, 1.5, Rate{24, 1}, 5);
   {
     std::ofstream(synth_spec_path(clip)) << synth_spec(o) << "\n";
   }

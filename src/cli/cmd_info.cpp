@@ -4,7 +4,7 @@
 // histogram and what looks wrong (rate labels, uneven keys, empty clips, copies).
 #include "common.h"
 #include "info_curves.h"
-#include "rotinterp/clip/bvh_layout.h"
+#include "rotinterp/io/files/file_record.h"
 #include "rotinterp/clip/frames.h"
 #include "rotinterp/clip/loop.h"
 #include "rotinterp/core/work_queue.h"
@@ -297,7 +297,7 @@ int run_info(const InfoArgs& args) {
                rate_origin_text(info->animations.at(info->selected).rate_stated));
   else
     fmt::print("frame rate:  none (keys not on a uniform grid){}\n",
-               clip.file_rate_hz > 0 ? fmt::format("; the file's own: {:.9g} Hz (resample's default)", clip.file_rate_hz) : "");
+               stated_rate_hz(clip.source_record) > 0 ? fmt::format("; the file's own: {:.9g} Hz (resample's default)", stated_rate_hz(clip.source_record)) : "");
   fmt::print("duration:    {:.6g} s (keys from {:.6g} s to {:.6g} s)\n", duration, clip.start_time(), clip.end_time());
   fmt::print("unit:        {}\n", describe_unit(clip.unit));
   fmt::print("size:        {:.3g} m (the first pose's largest side)\n", size_m);

@@ -8,7 +8,7 @@
 #include "cmd_resample.h"
 #include "common.h"
 #include "rotinterp/clip/frames.h"
-#include "rotinterp/clip/bvh_layout.h"
+#include "rotinterp/io/files/file_record.h"
 #include "rotinterp/clip/resample_loop.h"
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/io/files/atomic_file.h"

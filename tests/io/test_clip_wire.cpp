@@ -40,11 +40,14 @@ ClipFileInfo every_field_set() {
   c.translations = {TranslationTrack{{0.0, 0.5}, {Vec3(1, 2, 3), Vec3(4, 5, 6)}}, std::nullopt,
                     TranslationTrack{{0.25}, {Vec3(-0.0, 0.0, 1e-320)}}};
   c.frame_time = 1.0 / 120.0;
-  c.bvh_layout = std::make_shared<const BvhLayout>(BvhLayout{
-      {{Channel::Xposition, Channel::Yposition, Channel::Zposition, Channel::Zrotation, Channel::Xrotation, Channel::Yrotation},
-       {},
-       {Channel::Yrotation}},
-      ".0083333", nullptr, 0});
+  set_bvh_layout(c, BvhLayout{{{Channel::Xposition, Channel::Yposition, Channel::Zposition, Channel::Zrotation,
+                                 Channel::Xrotation, Channel::Yrotation},
+                                {},
+                                {Channel::Yrotation}},
+                               ".0083333",
+                               nullptr,
+                               0});
+  set_file_rate_hz(c, 23.976);
   c.unit = {0.01, UnitOrigin::declared, "declared by the file: FBX UnitScaleFactor 1"};
   c.source_format = "bvh";
   return info;

@@ -19,8 +19,9 @@
 //  * walk     — a 31-joint walking figure (CMU naming: Hips, LeftUpLeg, …, RThumb)
 //               with a 1 Hz gait: hip/knee/ankle flexion, arm swing, pelvis
 //               rotation and bob, walking along +Z at ~1.2 units·100/s.
-// Every joint gets a random BVH rotation order (Clip::bvh_layout, seeded); roots have
-// Xposition Yposition Zposition first. The same options always give the same clip.
+// Every joint gets a random Euler rotation order (SynthMotion::rotation_orders,
+// seeded), which `rotinterp synth` writes as its BVH channels, roots' positions
+// first (io/files/file_record.h). The same options always give the same clip.
 // Keep the per-frame rotation below π: spin at fps < 8 Hz aliases.
 #pragma once
 
@@ -28,6 +29,7 @@
 #include "rotinterp/clip/sampling.h"
 #include "rotinterp/core/result.h"
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -79,11 +81,14 @@ struct JointMotion {
 
 class SynthMotion {
  public:
-  // `layout`: the BVH layout sampled clips carry (may be null).
-  SynthMotion(Skeleton skeleton, std::vector<JointMotion> motion, std::shared_ptr<const BvhLayout> layout = nullptr);
+  // Per joint, the axes (0 x, 1 y, 2 z; the first outermost) of the Euler angles its
+  // rotation is keyed in: what a writer of angles keeps. Empty for none.
+  using RotationOrders = std::vector<std::array<int, 3>>;
+  SynthMotion(Skeleton skeleton, std::vector<JointMotion> motion, RotationOrders rotation_orders = {});
 
   const Skeleton& skeleton() const { return skeleton_; }
   const std::vector<JointMotion>& motion() const { return motion_; }
+  const RotationOrders& rotation_orders() const { return rotation_orders_; }
 
   // Exact local rotation / translation of joint j at time t (seconds). The
   // translation of a joint without position channels is its rest offset.
@@ -99,7 +104,7 @@ class SynthMotion {
  private:
   Skeleton skeleton_;
   std::vector<JointMotion> motion_;
-  std::shared_ptr<const BvhLayout> layout_;
+  RotationOrders rotation_orders_;
 };
 
 // The spec file `rotinterp synth` writes next to a clip: "<clip_file>.synth".

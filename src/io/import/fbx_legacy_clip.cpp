@@ -2,6 +2,7 @@
 // Models, keys from the take's curves evaluated at its frames.
 #include "fbx_legacy.h"
 
+#include "rotinterp/io/files/file_record.h"
 #include "rotinterp/io/files/key_times.h"
 
 #include "rotinterp/io/fbx/fbx_nodes.h"
@@ -293,7 +294,7 @@ Status read_legacy_fbx(const fs::path& path, const ReadOptions& options, ClipFil
     if (scaled) warn(label + ": joint '" + clip.skeleton.joints[j].name + "' is scaled; the scale is ignored");
   }
   if (rate > 0.0)
-    clip.frame_time = 1.0 / rate, clip.file_rate_hz = rate;
+    clip.frame_time = 1.0 / rate, set_file_rate_hz(clip, rate);
   else
     clip.frame_time = uniform_frame_time(*times);  // as the assimp path infers it
   clip.source_meshes = meshes;

@@ -3,7 +3,7 @@
 #include "clip_wire.h"
 #include "wire_bytes.h"
 
-#include "rotinterp/clip/bvh_layout.h"
+#include "rotinterp/io/files/file_record.h"
 
 #include <cmath>
 #include <cstdint>
@@ -70,7 +70,7 @@ void put(Writer& w, const Clip& clip) {
   w.str(clip.unit.reason);
   w.str(clip.source_format);
   w.u64(clip.source_meshes);
-  w.f64(clip.file_rate_hz);
+  w.f64(stated_rate_hz(clip.source_record));
 }
 
 void get(Reader& r, Clip& clip) {
@@ -115,7 +115,6 @@ void get(Reader& r, Clip& clip) {
   }
   clip.frame_time = r.f64();
   layout.frame_time_text = r.str();
-  if (has_layout || !layout.frame_time_text.empty()) clip.bvh_layout = std::make_shared<const BvhLayout>(std::move(layout));
   clip.unit.metres_per_unit = r.f64();
   const std::uint8_t origin = r.u8();
   if (origin > static_cast<std::uint8_t>(UnitOrigin::assumed)) r.fail();
@@ -123,7 +122,10 @@ void get(Reader& r, Clip& clip) {
   clip.unit.reason = r.str();
   clip.source_format = r.str();
   clip.source_meshes = r.size();
-  clip.file_rate_hz = r.f64();
+  auto record = std::make_shared<FileRecord>();
+  record->rate_hz = r.f64();
+  if (has_layout || !layout.frame_time_text.empty()) record->bvh_layout = std::move(layout);
+  if (record->rate_hz != 0.0 || record->bvh_layout) clip.source_record = std::move(record);
 }
 
 // The FBX curves as read (io/fbx_curves.h): takes, layers, curves, keys, models.

@@ -197,11 +197,10 @@ int run_summary(const InfoArgs& args) {
 }
 
 // A file without animation (a static mesh) is still described: what it holds, exit 0.
-int describe_static(const std::string& path, const std::string& error, bool json) {
+int describe_static(const std::string& path, const std::string& holds, bool json) {
   std::string format = std::filesystem::path(path).extension().string();
   if (!format.empty()) format.erase(0, 1);
   for (char& c : format) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  const std::string holds = static_scene_contents(error);
   if (json) {
     const nlohmann::json out = {{"file", path},           {"format", format},
                                 {"animations", nlohmann::json::array()}, {"holds", holds},
@@ -257,8 +256,9 @@ int run_info(const InfoArgs& args) {
   if (args.sample_hz > 0.0 && !args.curves) return fail_usage("--sample needs --curves");
   const std::string& path = args.paths.front();
   options.read_curves = args.curves;
-  Result<ClipFileInfo> info = inspect_clip_for_info(path, options);
-  if (!info && info.error_kind() == ErrorKind::no_animation) return describe_static(path, info.error(), args.json);
+  ReadOutcome read = inspect_clip_for_info(path, options);
+  if (read.error && read.kind == ErrorKind::no_animation) return describe_static(path, read.info.holds, args.json);
+  Result<ClipFileInfo> info = reading_or_failure(std::move(read));
   if (!info) return fail(info.error());
   if (args.curves) return print_info_curves(path, *info, args.sample_hz, args.json);
   const Clip& clip = info->clip;

@@ -94,6 +94,7 @@ inline void expect_identical(const ClipFileInfo& a, const ClipFileInfo& b, const
   expect_identical(a.clip, b.clip, where);
   EXPECT_EQ(a.warnings, b.warnings);
   EXPECT_EQ(a.folded_helpers, b.folded_helpers);
+  EXPECT_EQ(a.holds, b.holds);
 }
 
 }  // namespace rotinterp::test

@@ -25,6 +25,7 @@ ClipFileInfo every_field_set() {
   info.selected = 2;
   info.warnings = {"a.fbx: joint 'x' has animated scale; ignored", "", "\xE6\xAD\xA9\xE3\x81\x8F"};
   info.folded_helpers = 5;
+  info.holds = "1 mesh, 2 nodes: RootNode, W\xC3\xBCrfel";
   Clip& c = info.clip;
   c.name = "Gehen \xC3\xBC";
   c.skeleton.joints = {
@@ -54,10 +55,10 @@ ClipFileInfo every_field_set() {
 }
 
 TEST(ClipWire, EveryFieldSurvivesTheRoundTripBitForBit) {
-  wire::ReadOutcome out;
+  ReadOutcome out;
   out.info = every_field_set();
   const std::string bytes = wire::encode(out);
-  Result<wire::ReadOutcome> back = wire::decode(bytes);
+  Result<ReadOutcome> back = wire::decode(bytes);
   ASSERT_TRUE(back) << back.error();
   EXPECT_FALSE(back->error);
   expect_identical(back->info, out.info, "round trip");
@@ -65,17 +66,17 @@ TEST(ClipWire, EveryFieldSurvivesTheRoundTripBitForBit) {
 }
 
 TEST(ClipWire, AnErrorTravelsWithTheWarningsBeforeIt) {
-  wire::ReadOutcome out;
+  ReadOutcome out;
   out.error = "x.fbx: the animation moves no node of the scene";
   out.kind = ErrorKind::no_animation;
   out.info.warnings = {"x.fbx: animation 'A' gives 0 ticks per second; assuming 25"};
-  Result<wire::ReadOutcome> back = wire::decode(wire::encode(out));
+  Result<ReadOutcome> back = wire::decode(wire::encode(out));
   ASSERT_TRUE(back) << back.error();
   ASSERT_TRUE(back->error);
   EXPECT_EQ(*back->error, *out.error);
   EXPECT_EQ(back->kind, ErrorKind::no_animation);
   expect_identical(back->info, out.info, "error");
-  wire::ReadOutcome empty_message;
+  ReadOutcome empty_message;
   empty_message.error = "";
   back = wire::decode(wire::encode(empty_message));
   ASSERT_TRUE(back) << back.error();
@@ -83,7 +84,7 @@ TEST(ClipWire, AnErrorTravelsWithTheWarningsBeforeIt) {
 }
 
 TEST(ClipWire, EveryTruncationIsRejected) {
-  wire::ReadOutcome out;
+  ReadOutcome out;
   out.info = every_field_set();
   const std::string bytes = wire::encode(out);
   for (std::size_t n = 0; n < bytes.size(); ++n)
@@ -92,7 +93,7 @@ TEST(ClipWire, EveryTruncationIsRejected) {
 }
 
 TEST(ClipWire, CorruptedCountsAndValuesNeitherCrashNorAllocateWhatTheyClaim) {
-  wire::ReadOutcome out;
+  ReadOutcome out;
   out.info = every_field_set();
   const std::string bytes = wire::encode(out);
   // Every 8-byte window overwritten with a huge number: where it lands on a count
@@ -113,7 +114,7 @@ TEST(ClipWire, CorruptedCountsAndValuesNeitherCrashNorAllocateWhatTheyClaim) {
   std::string bad_flag = bytes;
   bad_flag[std::string_view("rotinterp-clip-wire-2").size()] = 2;  // has-error: neither 0 nor 1
   EXPECT_FALSE(wire::decode(bad_flag));
-  wire::ReadOutcome failed;
+  ReadOutcome failed;
   failed.error = "x";
   std::string bad_kind = wire::encode(failed);
   bad_kind[std::string_view("rotinterp-clip-wire-2").size() + 1 + 8 + 1] = 100;  // after the flag and the message

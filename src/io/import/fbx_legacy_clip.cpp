@@ -214,10 +214,11 @@ Status read_legacy_fbx(const fs::path& path, const ReadOptions& options, ClipFil
   for (const FbxModel& m : anim->models) meshes += m.type == "Mesh";
   bool any_curve = false;
   for (const FbxTake& t : anim->takes) any_curve = any_curve || !t.curves.empty();
-  if (!any_curve)
-    return make_error(label + ": the file has no animation (" + kHoldsPrefix + std::to_string(meshes) +
-                          (meshes == 1 ? " mesh, " : " meshes, ") + std::to_string(anim->models.size()) + " models)",
-                      ErrorKind::no_animation);
+  if (!any_curve) {
+    info.holds = std::to_string(meshes) + (meshes == 1 ? " mesh, " : " meshes, ") +
+                 std::to_string(anim->models.size()) + " models";
+    return make_error(label + ": the file has no animation (it holds " + info.holds + ")", ErrorKind::no_animation);
+  }
   for (const FbxTake& t : anim->takes) {
     AnimationSummary s;
     s.name = t.name;

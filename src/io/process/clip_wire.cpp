@@ -15,7 +15,7 @@ namespace rotinterp::wire {
 namespace {
 
 // Also the format's version: bytes from another build fail here, not in a field.
-constexpr std::string_view kMagic = "rotinterp-clip-wire-5";
+constexpr std::string_view kMagic = "rotinterp-clip-wire-6";
 
 // Smallest encoded sizes, for Reader::count.
 constexpr std::size_t kCount = 8, kDouble = 8, kVec3 = 3 * kDouble, kQuat = 4 * kDouble;
@@ -309,6 +309,7 @@ std::string encode(const ReadOutcome& outcome) {
   w.u64(info.folded_helpers);
   w.u8(info.curves.has_value());
   if (info.curves) put(w, *info.curves);
+  w.str(info.holds);
   return w.take();
 }
 
@@ -342,6 +343,7 @@ Result<ReadOutcome> decode(std::string_view bytes) {
   for (std::string& s : info.warnings) s = r.str();
   info.folded_helpers = r.size();
   if (r.flag()) get(r, info.curves.emplace());
+  info.holds = r.str();
   if (r.failed()) return make_error("clip record cut short or garbled");
   if (!r.at_end()) return make_error("clip record followed by stray bytes");
   return out;

@@ -1,6 +1,6 @@
 // rotinterp.Clip: a clip read from a file or built from arrays, and its data as arrays.
 #include "common.h"
-#include "rotinterp/clip/bvh_layout.h"
+#include "rotinterp/io/files/file_record.h"
 #include "rotinterp/clip/frames.h"
 #include "rotinterp/clip/units.h"
 #include "rotinterp/eval/evaluate_clip.h"

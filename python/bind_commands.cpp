@@ -228,7 +228,7 @@ py::object info(const std::string& path, const py::object& anim, const py::objec
   Result<ClipFileInfo> r = make_error("");
   {
     py::gil_scoped_release release;
-    r = inspect_clip_for_info(path, o);
+    r = reading_or_failure(inspect_clip_for_info(path, o));
     if (r) text = clip_info_json(path, *r);
   }
   if (!r) raise_read_error(r.failure(), path);

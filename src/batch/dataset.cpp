@@ -2,7 +2,7 @@
 #include "rotinterp/batch/dataset.h"
 #include "rotinterp/io/files/formats.h"
 
-#include "rotinterp/clip/bvh_layout.h"
+#include "rotinterp/io/files/file_record.h"
 #include "rotinterp/clip/frames.h"
 #include "rotinterp/io/read.h"
 #include "rotinterp/io/write.h"

@@ -7,7 +7,7 @@
 #include "options.h"
 #include "progress_line.h"
 #include "info_curves.h"
-#include "rotinterp/clip/bvh_layout.h"
+#include "rotinterp/io/files/file_record.h"
 #include "rotinterp/clip/frames.h"
 #include "rotinterp/clip/loop.h"
 #include "rotinterp/core/work_queue.h"
@@ -201,11 +201,10 @@ int run_summary(const InfoArgs& args) {
 }
 
 // A file without animation (a static mesh) is still described: what it holds, exit 0.
-int describe_static(const std::string& path, const std::string& error, bool json) {
+int describe_static(const std::string& path, const std::string& holds, bool json) {
   std::string format = std::filesystem::path(path).extension().string();
   if (!format.empty()) format.erase(0, 1);
   for (char& c : format) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  const std::string holds = static_scene_contents(error);
   if (json) {
     const nlohmann::json out = {{"file", path},           {"format", format},
                                 {"animations", nlohmann::json::array()}, {"holds", holds},
@@ -261,8 +260,9 @@ int run_info(const InfoArgs& args) {
   if (args.sample_hz > 0.0 && !args.curves) return fail_usage("--sample needs --curves");
   const std::string& path = args.paths.front();
   options.read_curves = args.curves;
-  Result<ClipFileInfo> info = inspect_clip_for_info(path, options);
-  if (!info && info.error_kind() == ErrorKind::no_animation) return describe_static(path, info.error(), args.json);
+  ReadOutcome read = inspect_clip_for_info(path, options);
+  if (read.error && read.kind == ErrorKind::no_animation) return describe_static(path, read.info.holds, args.json);
+  Result<ClipFileInfo> info = reading_or_failure(std::move(read));
   if (!info) return fail(info.error());
   if (args.curves) return print_info_curves(path, *info, args.sample_hz, args.json);
   const Clip& clip = info->clip;
@@ -301,7 +301,7 @@ int run_info(const InfoArgs& args) {
                rate_origin_text(info->animations.at(info->selected).rate_stated));
   else
     fmt::print("frame rate:  none (keys not on a uniform grid){}\n",
-               clip.file_rate_hz > 0 ? fmt::format("; the file's own: {:.9g} Hz (resample's default)", clip.file_rate_hz) : "");
+               stated_rate_hz(clip.source_record) > 0 ? fmt::format("; the file's own: {:.9g} Hz (resample's default)", stated_rate_hz(clip.source_record)) : "");
   fmt::print("duration:    {:.6g} s (keys from {:.6g} s to {:.6g} s)\n", duration, clip.start_time(), clip.end_time());
   fmt::print("unit:        {}\n", describe_unit(clip.unit));
   fmt::print("size:        {:.3g} m (the first pose's largest side)\n", size_m);

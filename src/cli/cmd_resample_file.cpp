@@ -1,7 +1,7 @@
 // One file's resample: read (one take), resample, write; the source's own FBX curves written back where they can be.
 #include "cmd_resample.h"
 #include "common.h"
-#include "rotinterp/clip/bvh_layout.h"
+#include "rotinterp/io/files/file_record.h"
 #include "rotinterp/clip/frames.h"
 #include "rotinterp/clip/resample_loop.h"
 #include "rotinterp/io/files/atomic_file.h"

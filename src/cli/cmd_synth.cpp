@@ -4,6 +4,7 @@
 #include "rotinterp/clip/synth.h"
 #include "rotinterp/clip/synth_spec.h"
 #include "rotinterp/io/files/atomic_file.h"
+#include "rotinterp/io/files/file_record.h"
 #include "rotinterp/io/write.h"
 
 #include <CLI/CLI.hpp>
@@ -61,7 +62,7 @@ int run_synth(const SynthArgs& a) {
   }
   if (!can_write_format(a.output))
     return fail_usage("output '" + a.output + "': unknown format (use .bvh, .fbx, .glb, .gltf or .dae)");
-  auto clip = make_synth_clip(o);
+  auto clip = make_synth_file_clip(o);
   if (!clip) return fail_usage(clip.error());
   // The spec next to the clip, so the analytic truth can be rebuilt (eval --truth).
   // It is written (not committed) first, so that once the clip is committed only a

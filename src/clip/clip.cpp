@@ -42,7 +42,7 @@ Clip Clip::without_tracks() const {
   c.unit = unit;
   c.source_format = source_format;
   c.source_meshes = source_meshes;
-  c.file_rate_hz = file_rate_hz;
+  c.source_record = rebuilt(source_record);
   return c;
 }
 

@@ -98,8 +98,8 @@ Result<LoopCheck> check_loop(const Clip& clip, std::optional<LoopForm> form, con
   // The frame rate: the keys' grid, else the file's own (sparse keys, FBX).
   const FrameGrid grid = frame_grid(clip);
   std::optional<Rate> rate = grid.rate;
-  if (!rate && clip.file_rate_hz > 0.0)
-    if (const Result<Rate> r = rate_from_frame_time(1.0 / clip.file_rate_hz)) rate = r.value();
+  if (const double stated = stated_rate_hz(clip.source_record); !rate && stated > 0.0)
+    if (const Result<Rate> r = rate_from_frame_time(1.0 / stated)) rate = r.value();
   if (!rate) return make_error("the clip has no frame rate, so it cannot be checked as a cycle");
   const double frame = rate->period();
   const auto frames = static_cast<std::size_t>(std::llround((clip.end_time() - clip.start_time()) / frame)) + 1;

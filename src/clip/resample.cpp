@@ -1,7 +1,6 @@
 // resample_clip: every joint rebuilt by its method on the new grid, translations by their curve.
 #include "rotinterp/clip/resample.h"
 
-#include "rotinterp/clip/bvh_layout.h"
 #include "rotinterp/clip/frames.h"
 #include "rotinterp/core/work_queue.h"
 #include "rotinterp/interp/interpolator.h"
@@ -172,8 +171,8 @@ Result<Clip> resample(const Clip& in, Clip* consumable, const ResampleOptions& o
     duration = grid->exact_time(grid->size() - 1) - start;
   }
   // Keys on no grid: the file's own frame rate (FBX GlobalSettings) is the default.
-  if (!opt.fps && !grid && !opt.keep_every && in.file_rate_hz > 0.0) {
-    if (const Result<Rate> file_rate = rate_from_frame_time(1.0 / in.file_rate_hz)) opt.fps = file_rate.value();
+  if (const double stated = stated_rate_hz(in.source_record); !opt.fps && !grid && !opt.keep_every && stated > 0.0) {
+    if (const Result<Rate> file_rate = rate_from_frame_time(1.0 / stated)) opt.fps = file_rate.value();
   }
   if (!opt.fps && !grid)
     return make_error(opt.keep_every ? "the clip has no frame rate, so it has no frames to keep (give --fps instead)"
@@ -194,7 +193,7 @@ Result<Clip> resample(const Clip& in, Clip* consumable, const ResampleOptions& o
   };
   Plan plan;
   Clip out = in.without_tracks();
-  out.bvh_layout = in.bvh_layout;
+  out.source_record = in.source_record;
   if (opt.keep_every) {
     const Rate& r = *grid->rate;
     const double fa = a * static_cast<double>(r.num) / static_cast<double>(r.den);
@@ -226,16 +225,16 @@ Result<Clip> resample(const Clip& in, Clip* consumable, const ResampleOptions& o
       o.end = start + (b - a);
       plan.out_times = o.times();
       out.frame_time = rate.period();
-      out.bvh_layout = without_frame_time_text(in.bvh_layout);  // its Frame Time no longer holds
+      out.source_record = retimed(in.source_record);  // the file's frame time no longer holds
     } else {
       for (std::size_t k = 0; k < g.count; ++k) plan.out_times.push_back(label(*grid, k));
       out.frame_time = in.frame_time;
     }
   }
-  // A cut starts at the clip's start: the BVH writer finds the source's frames that far on.
+  // A cut starts at the clip's start: the writers find the source's frames that far on.
   if (!plan.eval_times.empty() && in.frame_time > 0.0)
-    out.bvh_layout = with_source_first_frame(
-        out.bvh_layout, static_cast<std::size_t>(std::max(0.0, std::round((plan.eval_times.front() - start) / in.frame_time))));
+    out.source_record = cut(out.source_record,
+                            static_cast<std::size_t>(std::max(0.0, std::round((plan.eval_times.front() - start) / in.frame_time))));
 
   out.rotations.resize(n);
   out.translations.resize(n);

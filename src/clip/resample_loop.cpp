@@ -1,7 +1,6 @@
 // resample --loop: every joint rebuilt on its periodic curve, one period out, closing as the input does.
 #include "rotinterp/clip/resample_loop.h"
 
-#include "rotinterp/clip/bvh_layout.h"
 #include "rotinterp/clip/frames.h"
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/interp/periodic.h"
@@ -104,7 +103,7 @@ Result<CycleResample> resample_cycle(const Clip& in, const ResampleOptions& opti
     }
     for (std::size_t i = 0; i < check.period_frames; i += *options.keep_every) key_times.push_back(grid.exact_time(i));
     out.frame_time = in.frame_time;
-    out.bvh_layout = in.bvh_layout;
+    out.source_record = in.source_record;
   } else {
     const Result<Rate> own = rate_from_frame_time(source_frame);  // the source's rate: a round trip
     if (!options.fps && !own) return own.failure();
@@ -119,7 +118,7 @@ Result<CycleResample> resample_cycle(const Clip& in, const ResampleOptions& opti
     }
     if (result.stretch == 0.0) eval_times = out_times;  // k/R exactly, as resample samples
     out.frame_time = rate.period();
-    out.bvh_layout = without_frame_time_text(in.bvh_layout);
+    out.source_record = retimed(in.source_record);
   }
 
   std::vector<bool> loops(n, true);

@@ -1,8 +1,8 @@
 // Synthetic motions known in closed form: the random kinds and the walking figure, and their clips.
 #include "rotinterp/clip/synth.h"
 
-#include "rotinterp/clip/bvh_layout.h"
 
+#include <array>
 #include <cmath>
 #include <random>
 
@@ -37,20 +37,12 @@ class Random {
   std::mt19937_64 gen_;
 };
 
-const Channel kRotationOrders[6][3] = {
-    {Channel::Xrotation, Channel::Yrotation, Channel::Zrotation}, {Channel::Xrotation, Channel::Zrotation, Channel::Yrotation},
-    {Channel::Yrotation, Channel::Xrotation, Channel::Zrotation}, {Channel::Yrotation, Channel::Zrotation, Channel::Xrotation},
-    {Channel::Zrotation, Channel::Xrotation, Channel::Yrotation}, {Channel::Zrotation, Channel::Yrotation, Channel::Xrotation}};
+const std::array<int, 3> kRotationOrders[6] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
 
-std::shared_ptr<const BvhLayout> random_layout(const Skeleton& s, Random& rng) {
-  auto layout = std::make_shared<BvhLayout>();
-  for (const Joint& j : s.joints) {
-    std::vector<Channel>& channels = layout->channels.emplace_back();
-    if (j.parent < 0) channels = {Channel::Xposition, Channel::Yposition, Channel::Zposition};
-    const auto& order = kRotationOrders[rng.below(6)];
-    channels.insert(channels.end(), order, order + 3);
-  }
-  return layout;
+SynthMotion::RotationOrders random_orders(const Skeleton& s, Random& rng) {
+  SynthMotion::RotationOrders orders;
+  for (std::size_t j = 0; j < s.joints.size(); ++j) orders.push_back(kRotationOrders[rng.below(6)]);
+  return orders;
 }
 
 VectorCurve axis_wave(const Vec3& axis, double bias, double amp, double omega, double phase) {
@@ -91,7 +83,7 @@ Skeleton tree_skeleton(int count, Random& rng) {
 
 SynthMotion random_motion(const SynthOptions& o, Random& rng) {
   Skeleton s = tree_skeleton(o.joints, rng);
-  std::shared_ptr<const BvhLayout> layout = random_layout(s, rng);
+  SynthMotion::RotationOrders orders = random_orders(s, rng);
   std::vector<JointMotion> m(s.joints.size());
   for (std::size_t j = 0; j < m.size(); ++j) {
     JointMotion& jm = m[j];
@@ -131,7 +123,7 @@ SynthMotion random_motion(const SynthOptions& o, Random& rng) {
     root.c1 = Vec3(std::cos(heading), 0.0, std::sin(heading)) * rng.uniform(50.0, 150.0);  // straight line
   }
   m[0].translation = root;
-  return SynthMotion(std::move(s), std::move(m), std::move(layout));
+  return SynthMotion(std::move(s), std::move(m), std::move(orders));
 }
 
 // The walking figure: CMU's 31 joint names, a 1 Hz gait.
@@ -165,7 +157,7 @@ SynthMotion walk_motion(Random& rng) {
                  {16, {0, 10, 0}, "EndSite_Head"},        {22, {3, 0, 0}, "EndSite_LeftHandIndex1"},
                  {23, {2, 0, 2}, "EndSite_LThumb"},       {29, {-3, 0, 0}, "EndSite_RightHandIndex1"},
                  {30, {-2, 0, 2}, "EndSite_RThumb"}};
-  std::shared_ptr<const BvhLayout> layout = random_layout(s, rng);
+  SynthMotion::RotationOrders orders = random_orders(s, rng);
 
   const double f = rng.uniform(0.9, 1.1);  // gait frequency, Hz
   const double w = kTwoPi * f;
@@ -218,7 +210,7 @@ SynthMotion walk_motion(Random& rng) {
     add(b + 5, Z, -s_ * 0.3, 0.05, w, ph + kPi / 2);             // index
     add(b + 6, Y, s_ * 0.3, 0.05, w, ph);                        // thumb
   }
-  return SynthMotion(std::move(s), std::move(m), std::move(layout));
+  return SynthMotion(std::move(s), std::move(m), std::move(orders));
 }
 
 }  // namespace

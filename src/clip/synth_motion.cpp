@@ -16,8 +16,8 @@ Vec3 VectorCurve::at(double t) const {
   return v;
 }
 
-SynthMotion::SynthMotion(Skeleton skeleton, std::vector<JointMotion> motion, std::shared_ptr<const BvhLayout> layout)
-    : skeleton_(std::move(skeleton)), motion_(std::move(motion)), layout_(std::move(layout)) {
+SynthMotion::SynthMotion(Skeleton skeleton, std::vector<JointMotion> motion, RotationOrders rotation_orders)
+    : skeleton_(std::move(skeleton)), motion_(std::move(motion)), rotation_orders_(std::move(rotation_orders)) {
   ROTINTERP_ASSERT(motion_.size() == skeleton_.joints.size());
 }
 
@@ -50,7 +50,6 @@ Clip SynthMotion::sample(double seconds, const Rate& rate, std::string name) con
   Clip clip;
   clip.name = std::move(name);
   clip.skeleton = skeleton_;
-  clip.bvh_layout = layout_;
   clip.frame_time = rate.period();
   clip.source_format = "synth";
   const std::size_t n = motion_.size();

@@ -1,4 +1,4 @@
-// What `rotinterp info` says of a clip beside its data: a static scene's contents, a clip's oddities.
+// What `rotinterp info` reads of a file, and says of a clip beside its data: its oddities.
 #include "rotinterp/io/info.h"
 #include "rotinterp/io/files/formats.h"
 
@@ -39,21 +39,13 @@ bool uniform(const std::vector<double>& t) {
 }  // namespace
 
 
-Result<ClipFileInfo> inspect_clip_for_info(const std::filesystem::path& path, ReadOptions options) {
-  if (options.read_curves || !is_format(extension_of(path), FormatId::fbx)) return inspect_clip(path, options);
+ReadOutcome inspect_clip_for_info(const std::filesystem::path& path, ReadOptions options) {
+  if (options.read_curves || !is_format(extension_of(path), FormatId::fbx)) return inspect_clip_outcome(path, options);
   options.read_curves = true;
-  Result<ClipFileInfo> with_curves = inspect_clip(path, options);
-  if (with_curves || with_curves.error_kind() == ErrorKind::no_animation) return with_curves;
+  ReadOutcome with_curves = inspect_clip_outcome(path, options);
+  if (!with_curves.error || with_curves.kind == ErrorKind::no_animation) return with_curves;
   options.read_curves = false;
-  return inspect_clip(path, options);
-}
-
-
-std::string static_scene_contents(const std::string& no_animation_error) {
-  const std::size_t at = no_animation_error.rfind(std::string("(") + kHoldsPrefix);
-  if (at == std::string::npos || no_animation_error.back() != ')') return "";
-  const std::size_t from = at + 1 + std::string(kHoldsPrefix).size();
-  return no_animation_error.substr(from, no_animation_error.size() - 1 - from);
+  return inspect_clip_outcome(path, options);
 }
 
 std::vector<std::string> clip_oddities(const Clip& clip) {

@@ -1,6 +1,6 @@
 // clip_info_json: `rotinterp info --json` for one file, shared by the CLI and the
 // Python module (rotinterp.info), so that both give the same document.
-#include "rotinterp/clip/bvh_layout.h"
+#include "rotinterp/io/files/file_record.h"
 #include "rotinterp/clip/frames.h"
 #include "rotinterp/clip/loop.h"
 #include "rotinterp/clip/units.h"
@@ -54,7 +54,7 @@ std::string clip_info_json(const std::string& path, const ClipFileInfo& info) {
   out["frame_time_s"] = clip.frame_time;
   out["frame_rate_hz"] = rate ? rate->hz() : 0.0;
   out["frame_rate"] = rate ? nlohmann::json(rate->to_string()) : nlohmann::json(nullptr);
-  out["file_frame_rate_hz"] = clip.file_rate_hz > 0 ? nlohmann::json(clip.file_rate_hz) : nlohmann::json(nullptr);
+  out["file_frame_rate_hz"] = stated_rate_hz(clip.source_record) > 0 ? nlohmann::json(stated_rate_hz(clip.source_record)) : nlohmann::json(nullptr);
   out["start_s"] = clip.start_time();
   out["end_s"] = clip.end_time();
   out["duration_s"] = duration;

@@ -27,44 +27,55 @@ Status read_bvh(const fs::path& path, const ReadOptions& options, ClipFileInfo& 
   return check_clip(info, path.string(), options);
 }
 
-// The importer's reading, its warnings passed to on_warning once it is done, in order.
-Result<ClipFileInfo> read_imported(const fs::path& path, const ReadOptions& options) {
-  Result<wire::ReadOutcome> got = detail::read_in_importer(path, options);
-  if (!got) return got.failure();
-  for (const std::string& w : got->info.warnings)
-    if (options.on_warning) options.on_warning(w);
-  if (got->error) return make_error(*got->error, got->kind);
-  return std::move(got->info);
+// The outcome of a reading that failed with `error` before any reader ran.
+ReadOutcome failed(const Error& error) {
+  ReadOutcome out;
+  out.error = error.message;
+  out.kind = error.kind;
+  return out;
 }
 
-Result<ClipFileInfo> load(const fs::path& path, const ReadOptions& options) {
-  if (Status s = check_file(path, path.string()); !s) return s.failure();
+// The importer's reading, its warnings passed to on_warning once it is done, in order.
+ReadOutcome read_imported(const fs::path& path, const ReadOptions& options) {
+  Result<ReadOutcome> got = detail::read_in_importer(path, options);
+  if (!got) return failed(got.failure());
+  for (const std::string& w : got->info.warnings)
+    if (options.on_warning) options.on_warning(w);
+  return std::move(*got);
+}
+
+ReadOutcome load(const fs::path& path, const ReadOptions& options) {
+  if (Status s = check_file(path, path.string()); !s) return failed(s.failure());
   const std::string ext = extension_of(path);
   const bool bvh = is_bvh(path, ext);
   // A file of a format no reader knows (a .py, a .txt) is not handed to assimp, whose
   // tokenizers would name their own confusion instead.
   if (!bvh && !ext.empty() && !importable_extension(ext))
-    return make_error(path.string() + ": not a motion file (formats read: " + read_formats_text() + ")",
-                      ErrorKind::unreadable);
+    return failed(make_error(path.string() + ": not a motion file (formats read: " + read_formats_text() + ")",
+                             ErrorKind::unreadable));
   if (!bvh || options.cross_check_with_assimp) return read_imported(path, options);
-  ClipFileInfo info;
-  info.format = ext;
-  if (Status st = read_bvh(path, options, info); !st) return st.failure();
-  return info;
+  ReadOutcome out;
+  out.info.format = ext;
+  if (Status st = read_bvh(path, options, out.info); !st) return failed(st.failure());
+  return out;
 }
 
 }  // namespace
 
 
 
-Result<ClipFileInfo> inspect_clip(const fs::path& path, const ReadOptions& options) {
+ReadOutcome inspect_clip_outcome(const fs::path& path, const ReadOptions& options) {
   try {
     return load(path, options);
   } catch (const std::bad_alloc&) {
-    return make_error(path.string() + ": out of memory while reading", ErrorKind::out_of_memory);
+    return failed(make_error(path.string() + ": out of memory while reading", ErrorKind::out_of_memory));
   } catch (const std::exception& e) {
-    return make_error(path.string() + ": " + one_line(e.what()));
+    return failed(make_error(path.string() + ": " + one_line(e.what())));
   }
+}
+
+Result<ClipFileInfo> inspect_clip(const fs::path& path, const ReadOptions& options) {
+  return reading_or_failure(inspect_clip_outcome(path, options));
 }
 
 Result<Clip> read_clip(const fs::path& path, const ReadOptions& options) {

@@ -1,7 +1,7 @@
 // True size: every command reads a clip's unit the same way (declared, given or
 // inferred), says which, writes files at their true size, and gives the same results
 // for the same motion in centimetres and in metres.
-#include "rotinterp/clip/bvh_layout.h"
+#include "rotinterp/io/files/file_record.h"
 #include "rotinterp/clip/units.h"
 #include "rotinterp/io/read.h"
 #include "support/run_cli.h"

@@ -1,6 +1,6 @@
 // resample_clip on the real clips of ../shared/data and through files (read_clip /
 // write_clip), plus the measurement behind the default method.
-#include "rotinterp/clip/bvh_layout.h"
+#include "rotinterp/io/files/file_record.h"
 #include "rotinterp/clip/metrics.h"
 #include "rotinterp/clip/frames.h"
 #include "rotinterp/clip/resample.h"
@@ -182,7 +182,7 @@ TEST(ResampleRealClips, SynthBvhWithRandomOrdersReadsBackAsItsAnalyticTruth) {
     o.fps = Rate{30, 1};
     o.seed = 11;
     const SynthMotion truth = make_synth_motion(o).value();
-    const Clip clip = make_synth_clip(o).value();
+    const Clip clip = make_synth_file_clip(o).value();
     const fs::path file = temp_file(std::string(synth_kind_name(kind)) + ".bvh");
     ASSERT_TRUE(write_clip(clip, file).ok());
     auto back = read_clip(file);
@@ -334,7 +334,7 @@ TEST(ResampleRealClips, ConstantAngularVelocityBvhWithRandomOrdersResampledTo50H
   o.joints = 15;
   const SynthMotion truth = make_synth_motion(o).value();
   const fs::path in_file = temp_file("cav30.bvh"), out_file = temp_file("cav50.bvh");
-  ASSERT_TRUE(write_clip(make_synth_clip(o).value(), in_file).ok());
+  ASSERT_TRUE(write_clip(make_synth_file_clip(o).value(), in_file).ok());
   auto in = read_clip(in_file);
   ASSERT_TRUE(in.ok()) << in.error();
   std::set<std::vector<Channel>> orders;

@@ -1,6 +1,6 @@
 #include "rotinterp/clip/synth.h"
 
-#include "rotinterp/clip/bvh_layout.h"
+#include "rotinterp/io/files/file_record.h"
 
 #include <gtest/gtest.h>
 
@@ -79,8 +79,8 @@ TEST(Synth, SpinsTurnPastTwoPiAndStayBelowPiPerFrame) {
 }
 
 TEST(Synth, EveryJointGetsASeededRandomBvhRotationOrder) {
-  auto a = make_synth_clip(options(SynthKind::walk, 1)), b = make_synth_clip(options(SynthKind::walk, 1)),
-       c = make_synth_clip(options(SynthKind::walk, 2));
+  auto a = make_synth_file_clip(options(SynthKind::walk, 1)), b = make_synth_file_clip(options(SynthKind::walk, 1)),
+       c = make_synth_file_clip(options(SynthKind::walk, 2));
   ASSERT_TRUE(a.ok() && b.ok() && c.ok());
   std::set<std::vector<Channel>> orders;
   bool differs = false;

@@ -27,7 +27,7 @@ inline void read_bytes_as(const std::uint8_t* data, std::size_t size, const char
   // Unless assimp crashed there, read it again in this process, so that our own
   // clip building runs under the sanitizers too; both readings must agree.
   if (clip.ok() || clip.error_kind() != rotinterp::ErrorKind::crashed) {
-    const rotinterp::wire::ReadOutcome again = rotinterp::detail::read_in_this_process(path, {});
+    const rotinterp::ReadOutcome again = rotinterp::detail::read_in_this_process(path, {});
     if (again.error.has_value() == clip.ok()) __builtin_trap();
     if (again.error && (*again.error != clip.error() || again.kind != clip.error_kind())) __builtin_trap();
     if (!again.error && (again.info.clip.rotations.size() != clip->rotations.size() || !again.info.clip.validate().ok()))

@@ -2,7 +2,7 @@
 // and -0.0 differ, and a NaN equals only the same NaN).
 #pragma once
 
-#include "rotinterp/clip/bvh_layout.h"
+#include "rotinterp/io/files/file_record.h"
 #include "rotinterp/io/info.h"
 
 #include <gtest/gtest.h>
@@ -67,7 +67,8 @@ inline void expect_identical(const Clip& a, const Clip& b, const std::string& wh
     for (std::size_t k = 0; k < x.keys.size(); ++k) EXPECT_TRUE(same(x.keys[k], y.keys[k])) << "key " << k;
   }
   EXPECT_TRUE(same_bits(a.frame_time, b.frame_time)) << a.frame_time << " vs " << b.frame_time;
-  EXPECT_EQ(a.bvh_layout == nullptr, b.bvh_layout == nullptr);
+  EXPECT_EQ(bvh_layout(a) == nullptr, bvh_layout(b) == nullptr);
+  EXPECT_TRUE(same_bits(stated_rate_hz(a.source_record), stated_rate_hz(b.source_record)));
   EXPECT_EQ(frame_time_text(a), frame_time_text(b));
   EXPECT_TRUE(same_bits(a.unit.metres_per_unit, b.unit.metres_per_unit))
       << a.unit.metres_per_unit << " vs " << b.unit.metres_per_unit;
@@ -93,6 +94,7 @@ inline void expect_identical(const ClipFileInfo& a, const ClipFileInfo& b, const
   expect_identical(a.clip, b.clip, where);
   EXPECT_EQ(a.warnings, b.warnings);
   EXPECT_EQ(a.folded_helpers, b.folded_helpers);
+  EXPECT_EQ(a.holds, b.holds);
 }
 
 }  // namespace rotinterp::test

@@ -1,6 +1,6 @@
 #include "io_test_util.h"
 
-#include "rotinterp/clip/bvh_layout.h"
+#include "rotinterp/io/files/file_record.h"
 #include "rotinterp/clip/resample.h"
 #include "rotinterp/clip/sampling.h"
 #include "rotinterp/core/rotation.h"
@@ -110,7 +110,7 @@ double angle_degrees(const Quat& a, const Quat& b) { return angular_distance(a, 
 Clip resample_uniform(const Clip& clip, double frame_time) {
   Clip out = clip;
   out.frame_time = frame_time;
-  out.bvh_layout = without_frame_time_text(clip.bvh_layout);
+  out.source_record = retimed(clip.source_record);
   const double start = clip.start_time();
   const std::size_t frames = static_cast<std::size_t>(std::floor((clip.end_time() - start) / frame_time + 1e-9)) + 1;
   for (std::size_t j = 0; j < clip.skeleton.joints.size(); ++j) {

@@ -198,7 +198,7 @@ TEST(GeneratedBvh, BvhOrderOptionChoosesTheChannelsOfJointsWithoutLayout) {
   test::write_text(dir / "g.bvh", g.text);
   Result<Clip> a = read_clip(dir / "g.bvh");
   ASSERT_TRUE(a) << a.error();
-  a->bvh_layout.reset();  // as from FBX
+  set_bvh_layout(*a, std::nullopt);  // as from FBX
   for (const char* order : {"XYZ", "XZY", "YXZ", "YZX", "ZXY", "ZYX"}) {
     WriteOptions w;
     w.bvh_order = order;

@@ -161,9 +161,9 @@ TEST_P(RealBvh, TheFilesOwnRotationsAreWrittenWithItsOwnNumbers) {
 TEST_P(RealBvh, WrittenEulerCurvesHaveNoWrapsOrFlips) {
   Result<Clip> a = read_clip(kData / "bvh" / GetParam());
   ASSERT_TRUE(a) << a.error();
-  auto computed = std::make_shared<BvhLayout>(*a->bvh_layout);
-  computed->source_angles = nullptr;
-  a->bvh_layout = computed;
+  BvhLayout computed = *bvh_layout(*a);
+  computed.source_angles = nullptr;
+  set_bvh_layout(*a, computed);
   std::ostringstream text;
   ASSERT_TRUE(write_bvh(*a, text, WriteOptions{}, "mem.bvh"));
   Result<BvhFile> f = parse_bvh(text.str(), "mem.bvh");

@@ -25,6 +25,7 @@ ClipFileInfo every_field_set() {
   info.selected = 2;
   info.warnings = {"a.fbx: joint 'x' has animated scale; ignored", "", "\xE6\xAD\xA9\xE3\x81\x8F"};
   info.folded_helpers = 5;
+  info.holds = "1 mesh, 2 nodes: RootNode, W\xC3\xBCrfel";
   Clip& c = info.clip;
   c.name = "Gehen \xC3\xBC";
   c.skeleton.joints = {
@@ -40,21 +41,24 @@ ClipFileInfo every_field_set() {
   c.translations = {TranslationTrack{{0.0, 0.5}, {Vec3(1, 2, 3), Vec3(4, 5, 6)}}, std::nullopt,
                     TranslationTrack{{0.25}, {Vec3(-0.0, 0.0, 1e-320)}}};
   c.frame_time = 1.0 / 120.0;
-  c.bvh_layout = std::make_shared<const BvhLayout>(BvhLayout{
-      {{Channel::Xposition, Channel::Yposition, Channel::Zposition, Channel::Zrotation, Channel::Xrotation, Channel::Yrotation},
-       {},
-       {Channel::Yrotation}},
-      ".0083333", nullptr, 0});
+  set_bvh_layout(c, BvhLayout{{{Channel::Xposition, Channel::Yposition, Channel::Zposition, Channel::Zrotation,
+                                 Channel::Xrotation, Channel::Yrotation},
+                                {},
+                                {Channel::Yrotation}},
+                               ".0083333",
+                               nullptr,
+                               0});
+  set_file_rate_hz(c, 23.976);
   c.unit = {0.01, UnitOrigin::declared, "declared by the file: FBX UnitScaleFactor 1"};
   c.source_format = "bvh";
   return info;
 }
 
 TEST(ClipWire, EveryFieldSurvivesTheRoundTripBitForBit) {
-  wire::ReadOutcome out;
+  ReadOutcome out;
   out.info = every_field_set();
   const std::string bytes = wire::encode(out);
-  Result<wire::ReadOutcome> back = wire::decode(bytes);
+  Result<ReadOutcome> back = wire::decode(bytes);
   ASSERT_TRUE(back) << back.error();
   EXPECT_FALSE(back->error);
   expect_identical(back->info, out.info, "round trip");
@@ -62,17 +66,17 @@ TEST(ClipWire, EveryFieldSurvivesTheRoundTripBitForBit) {
 }
 
 TEST(ClipWire, AnErrorTravelsWithTheWarningsBeforeIt) {
-  wire::ReadOutcome out;
+  ReadOutcome out;
   out.error = "x.fbx: the animation moves no node of the scene";
   out.kind = ErrorKind::no_animation;
   out.info.warnings = {"x.fbx: animation 'A' gives 0 ticks per second; assuming 25"};
-  Result<wire::ReadOutcome> back = wire::decode(wire::encode(out));
+  Result<ReadOutcome> back = wire::decode(wire::encode(out));
   ASSERT_TRUE(back) << back.error();
   ASSERT_TRUE(back->error);
   EXPECT_EQ(*back->error, *out.error);
   EXPECT_EQ(back->kind, ErrorKind::no_animation);
   expect_identical(back->info, out.info, "error");
-  wire::ReadOutcome empty_message;
+  ReadOutcome empty_message;
   empty_message.error = "";
   back = wire::decode(wire::encode(empty_message));
   ASSERT_TRUE(back) << back.error();
@@ -80,7 +84,7 @@ TEST(ClipWire, AnErrorTravelsWithTheWarningsBeforeIt) {
 }
 
 TEST(ClipWire, EveryTruncationIsRejected) {
-  wire::ReadOutcome out;
+  ReadOutcome out;
   out.info = every_field_set();
   const std::string bytes = wire::encode(out);
   for (std::size_t n = 0; n < bytes.size(); ++n)
@@ -89,7 +93,7 @@ TEST(ClipWire, EveryTruncationIsRejected) {
 }
 
 TEST(ClipWire, CorruptedCountsAndValuesNeitherCrashNorAllocateWhatTheyClaim) {
-  wire::ReadOutcome out;
+  ReadOutcome out;
   out.info = every_field_set();
   const std::string bytes = wire::encode(out);
   // Every 8-byte window overwritten with a huge number: where it lands on a count
@@ -110,7 +114,7 @@ TEST(ClipWire, CorruptedCountsAndValuesNeitherCrashNorAllocateWhatTheyClaim) {
   std::string bad_flag = bytes;
   bad_flag[std::string_view("rotinterp-clip-wire-2").size()] = 2;  // has-error: neither 0 nor 1
   EXPECT_FALSE(wire::decode(bad_flag));
-  wire::ReadOutcome failed;
+  ReadOutcome failed;
   failed.error = "x";
   std::string bad_kind = wire::encode(failed);
   bad_kind[std::string_view("rotinterp-clip-wire-2").size() + 1 + 8 + 1] = 100;  // after the flag and the message

@@ -3,7 +3,7 @@
 // that assimp reads back with the same joints, frames, rate and poses.
 #include "rotinterp/io/fbx/fbx_write.h"
 #include "io_test_util.h"
-#include "rotinterp/clip/bvh_layout.h"
+#include "rotinterp/io/files/file_record.h"
 #include "rotinterp/clip/frames.h"
 #include "rotinterp/clip/resample.h"
 #include "rotinterp/io/read.h"

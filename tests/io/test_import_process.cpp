@@ -52,7 +52,7 @@ bool expect_same_reading(const std::filesystem::path& path, const ReadOptions& o
   const std::string where = path.filename().string() + (options.animation.empty() ? "" : " --anim " + options.animation);
   SCOPED_TRACE(where);
   const Reading a = read_through_importer(path, options);
-  const wire::ReadOutcome b = detail::read_in_this_process(path, options);
+  const ReadOutcome b = detail::read_in_this_process(path, options);
   EXPECT_EQ(a.warnings, b.info.warnings);
   EXPECT_EQ(a.info.ok(), !b.error);
   if (a.info && !b.error) {

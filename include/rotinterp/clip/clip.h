@@ -2,20 +2,20 @@
 // format in it; readers fill it, interpolators and metrics consume it.
 //
 // A joint's local transform at time t is  T(translation(t)) · R(rotation(t)),
-// where rotation(t) is the joint's FULL local rotation in its parent's frame (for
-// FBX this already contains pre-/post-rotations and the rest orientation; for BVH
-// it is the product of the rotation channels). translation(t) is the joint's
+// where rotation(t) is the joint's FULL local rotation in its parent's frame (what
+// a file splits into pre-/post-rotations, a rest orientation or Euler channels, the
+// reader has already multiplied together). translation(t) is the joint's
 // translation track where it has one, else its rest offset.
 #pragma once
 
 #include "rotinterp/core/result.h"
 #include "rotinterp/core/rotation.h"
+#include "rotinterp/clip/source_record.h"
 #include "rotinterp/clip/units.h"
 #include "rotinterp/track/track.h"
 
 #include <cstddef>
 #include <cstdint>
-#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -23,16 +23,14 @@
 
 namespace rotinterp {
 
-struct BvhLayout;  // clip/bvh_layout.h
-
 struct Joint {
   std::string name;
   int parent = -1;                       // index into Skeleton::joints, −1 for a root
   Vec3 offset = Vec3::Zero();            // rest translation in the parent's frame
-  Quat rest_rotation = Quat::Identity(); // rest local rotation (identity for BVH)
+  Quat rest_rotation = Quat::Identity(); // rest local rotation (identity where the file has none)
 };
 
-// A BVH "End Site": a leaf point with an offset from its joint and no channels.
+// An End Site: a leaf point with an offset from its joint and no channels.
 struct EndSite {
   int parent = -1;  // joint index
   Vec3 offset = Vec3::Zero();
@@ -41,7 +39,7 @@ struct EndSite {
 
 // Invariants (checked by validate()):
 //  1. at least one joint; names non-empty and unique;
-//  2. parent < own index (parents come first; depth-first order for BVH);
+//  2. parent < own index (parents come first; readers keep a file's depth-first order);
 //  3. offsets finite, rest rotations finite unit quaternions;
 //  4. End Site parents are valid joint indices.
 struct Skeleton {
@@ -60,23 +58,20 @@ struct Clip {
   std::vector<RotationTrack> rotations;
   // One entry per joint; empty where the joint has no translation keys.
   std::vector<std::optional<TranslationTrack>> translations;
-  double frame_time = 0.0;    // seconds per frame of the source (BVH Frame Time), 0 if none
+  double frame_time = 0.0;    // seconds per frame of the source (as the file states it), 0 if none
   ClipUnit unit;              // metres per clip unit and where that came from (clip/units.h)
-  std::string source_format;  // "bvh", "fbx", … (informational)
+  std::string source_format;  // the source's format by its registry name (informational)
   std::size_t source_meshes = 0;  // meshes (with their skins) in the source: no writer keeps them
-  // The file's own frame rate where it states one apart from its keys (FBX
-  // GlobalSettings TimeMode / CustomFrameRate), Hz; 0 if none. resample's default
-  // output rate when the keys lie on no grid (frame_time 0).
-  double file_rate_hz = 0.0;
-  // The layout of a BVH source (clip/bvh_layout.h), kept for the writers; null for
-  // other sources. Shared between copies and never changed: replace it instead.
-  std::shared_ptr<const BvhLayout> bvh_layout;
+  // What the reader kept of its file for that format's writers, and the frame rate
+  // the file states apart from its keys (clip/source_record.h); null if nothing.
+  SourceRecordPtr source_record;
 
   // Invariants: skeleton valid; one rotation and one translation entry per joint;
   // every track valid.
   // The clip's description without its tracks (name, skeleton, unit, source format,
-  // meshes, file rate): what a rebuilt clip starts from. Its frame time and BVH
-  // layout are the caller's to set, as they hold only at the source's rate.
+  // meshes, the record's rebuilt() part): what a rebuilt clip starts from. Its frame
+  // time and the rest of its record are the caller's to set, as they hold only at
+  // the source's frames.
   Clip without_tracks() const;
   Status validate() const;
   // Earliest and latest key time over all tracks.

@@ -56,7 +56,7 @@ struct ResampleOptions {
 // every joint has one rotation key per output frame, every joint with a
 // translation track one translation key per frame, sign-continuous quaternions;
 // frame_time = 1/HZ for --fps, else the source's frame time, else (keys on no grid)
-// the file's own rate (Clip::file_rate_hz, FBX) as if given as fps. Errors: both fps and
+// the rate the file states (stated_rate_hz, clip/source_record.h) as if given as fps. Errors: both fps and
 // keep_every given, keep_every < 1, no source frame rate where one is needed,
 // unknown method (listing the valid names) or joint, a range that starts before the
 // clip, runs past its end (the message gives the end in seconds and frames) or is empty,

@@ -16,8 +16,9 @@
 //  * walk     — a 31-joint walking figure (CMU naming: Hips, LeftUpLeg, …, RThumb)
 //               with a 1 Hz gait: hip/knee/ankle flexion, arm swing, pelvis
 //               rotation and bob, walking along +Z at ~1.2 units·100/s.
-// Every joint gets a random BVH rotation order (Clip::bvh_layout, seeded); roots have
-// Xposition Yposition Zposition first. The same options always give the same clip.
+// Every joint gets a random Euler rotation order (SynthMotion::rotation_orders,
+// seeded), which `rotinterp synth` writes as its BVH channels, roots' positions
+// first (io/files/file_record.h). The same options always give the same clip.
 // Keep the per-frame rotation below π: spin at fps < 8 Hz aliases.
 #pragma once
 

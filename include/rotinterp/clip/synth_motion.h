@@ -11,6 +11,7 @@
 #include "rotinterp/clip/clip.h"
 #include "rotinterp/clip/sampling.h"
 
+#include <array>
 #include <cstddef>
 #include <memory>
 #include <optional>
@@ -41,11 +42,14 @@ struct JointMotion {
 
 class SynthMotion {
  public:
-  // `layout`: the BVH layout sampled clips carry (may be null).
-  SynthMotion(Skeleton skeleton, std::vector<JointMotion> motion, std::shared_ptr<const BvhLayout> layout = nullptr);
+  // Per joint, the axes (0 x, 1 y, 2 z; the first outermost) of the Euler angles its
+  // rotation is keyed in: what a writer of angles keeps. Empty for none.
+  using RotationOrders = std::vector<std::array<int, 3>>;
+  SynthMotion(Skeleton skeleton, std::vector<JointMotion> motion, RotationOrders rotation_orders = {});
 
   const Skeleton& skeleton() const { return skeleton_; }
   const std::vector<JointMotion>& motion() const { return motion_; }
+  const RotationOrders& rotation_orders() const { return rotation_orders_; }
 
   // Exact local rotation / translation of joint j at time t (seconds). The
   // translation of a joint without position channels is its rest offset.
@@ -61,7 +65,7 @@ class SynthMotion {
  private:
   Skeleton skeleton_;
   std::vector<JointMotion> motion_;
-  std::shared_ptr<const BvhLayout> layout_;
+  RotationOrders rotation_orders_;
 };
 
 }  // namespace rotinterp

@@ -16,16 +16,15 @@
 
 namespace rotinterp {
 
-
-// What such an error says the file holds ("1 mesh, 2 nodes: RootNode, Cube"), or "".
-std::string static_scene_contents(const std::string& no_animation_error);
-
 // Reads `path` like read_clip() and also reports what the file holds.
 Result<ClipFileInfo> inspect_clip(const std::filesystem::path& path, const ReadOptions& options = {});
-// inspect_clip() as `info` reads: an FBX with its own curves too (ReadOptions::
+// The same, whole: a failed reading still gives what it found before it (its
+// warnings; what a file without animation holds, info.holds).
+ReadOutcome inspect_clip_outcome(const std::filesystem::path& path, const ReadOptions& options = {});
+// inspect_clip_outcome() as `info` reads: an FBX with its own curves too (ReadOptions::
 // read_curves), so that its takes show in file time (assimp re-bases them); where our
 // reader of the curves fails and they were not asked for, without them.
-Result<ClipFileInfo> inspect_clip_for_info(const std::filesystem::path& path, ReadOptions options);
+ReadOutcome inspect_clip_for_info(const std::filesystem::path& path, ReadOptions options);
 
 // Things about a valid clip a user may want to know, one line each: non-uniform
 // key spacing, joints without keys, tracks with differing key counts or spans,

@@ -118,7 +118,7 @@ Clip bvh_to_clip(const BvhFile& file, const std::string& name, unsigned threads)
   clip.name = name;
   clip.skeleton = bvh_skeleton(file);
   clip.frame_time = file.frame_time;
-  clip.bvh_layout = std::make_shared<const BvhLayout>(bvh_layout(file));
+  set_bvh_layout(clip, bvh_layout(file));
   clip.source_format = format_info(FormatId::bvh).name;
   const std::size_t n = file.joints.size();
   const std::size_t frames = file.frames;

@@ -99,7 +99,8 @@ RotationPlan plan_rotation(const std::vector<Channel>& channels) {
 // can give them back: its layout is the file's, with three rotation channels that
 // make a triple; null otherwise.
 const std::vector<double>* source_degrees(const Clip& clip, std::size_t j, const RotationPlan& p) {
-  const BvhSourceAngles* angles = clip.bvh_layout ? clip.bvh_layout->source_angles.get() : nullptr;
+  const BvhLayout* layout = bvh_layout(clip);
+  const BvhSourceAngles* angles = layout ? layout->source_angles.get() : nullptr;
   if (!angles || j >= angles->degrees.size() || p.columns.size() != 3 || p.triple[0] < 0) return nullptr;
   if (bvh_channels(clip, j).empty() || angles->degrees[j].size() != 3 * angles->frames) return nullptr;
   return &angles->degrees[j];
@@ -111,9 +112,10 @@ const std::vector<double>* source_degrees(const Clip& clip, std::size_t j, const
 // frame of 120 Hz at 30 Hz). Only a match: joint_values checks the rotation.
 std::vector<std::ptrdiff_t> source_frames(const Clip& clip, std::size_t frames) {
   std::vector<std::ptrdiff_t> out(frames, -1);
-  const BvhSourceAngles* angles = clip.bvh_layout ? clip.bvh_layout->source_angles.get() : nullptr;
+  const BvhLayout* layout = bvh_layout(clip);
+  const BvhSourceAngles* angles = layout ? layout->source_angles.get() : nullptr;
   if (!angles || !(angles->frame_time > 0.0)) return out;
-  const std::size_t first = clip.bvh_layout->source_first_frame;
+  const std::size_t first = layout->source_first_frame;
   for (std::size_t f = 0; f < frames; ++f) {
     const double t = static_cast<double>(f) * clip.frame_time;
     const double at = clip.frame_time == angles->frame_time ? static_cast<double>(f) : std::round(t / angles->frame_time);

@@ -2,6 +2,7 @@
 #include "rotinterp/io/fbx/fbx_write.h"
 
 #include "rotinterp/io/fbx/fbx_bvh_layout.h"
+#include "rotinterp/io/files/file_record.h"
 #include "fbx_write_takes.h"
 #include "fbx_rest.h"
 #include "rotinterp/clip/frames.h"

@@ -2,7 +2,7 @@
 #include "rotinterp/io/fbx/fbx_write.h"
 
 #include "rotinterp/io/files/key_times.h"
-#include "rotinterp/clip/bvh_layout.h"
+#include "rotinterp/io/files/file_record.h"
 #include "rotinterp/clip/frames.h"
 #include "rotinterp/track/sample.h"
 

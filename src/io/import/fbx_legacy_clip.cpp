@@ -2,6 +2,7 @@
 // Models, keys from the take's curves evaluated at its frames.
 #include "fbx_legacy.h"
 
+#include "rotinterp/io/files/file_record.h"
 #include "rotinterp/io/files/key_times.h"
 
 #include "rotinterp/io/fbx/fbx_nodes.h"
@@ -213,10 +214,11 @@ Status read_legacy_fbx(const fs::path& path, const ReadOptions& options, ClipFil
   for (const FbxModel& m : anim->models) meshes += m.type == "Mesh";
   bool any_curve = false;
   for (const FbxTake& t : anim->takes) any_curve = any_curve || !t.curves.empty();
-  if (!any_curve)
-    return make_error(label + ": the file has no animation (" + kHoldsPrefix + std::to_string(meshes) +
-                          (meshes == 1 ? " mesh, " : " meshes, ") + std::to_string(anim->models.size()) + " models)",
-                      ErrorKind::no_animation);
+  if (!any_curve) {
+    info.holds = std::to_string(meshes) + (meshes == 1 ? " mesh, " : " meshes, ") +
+                 std::to_string(anim->models.size()) + " models";
+    return make_error(label + ": the file has no animation (it holds " + info.holds + ")", ErrorKind::no_animation);
+  }
   for (const FbxTake& t : anim->takes) {
     AnimationSummary s;
     s.name = t.name;
@@ -293,7 +295,7 @@ Status read_legacy_fbx(const fs::path& path, const ReadOptions& options, ClipFil
     if (scaled) warn(label + ": joint '" + clip.skeleton.joints[j].name + "' is scaled; the scale is ignored");
   }
   if (rate > 0.0)
-    clip.frame_time = 1.0 / rate, clip.file_rate_hz = rate;
+    clip.frame_time = 1.0 / rate, set_file_rate_hz(clip, rate);
   else
     clip.frame_time = uniform_frame_time(*times);  // as the assimp path infers it
   clip.source_meshes = meshes;

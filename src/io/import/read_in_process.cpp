@@ -108,9 +108,10 @@ Status read_with_assimp(const fs::path& path, const ReadOptions& options, ClipFi
       return make_error(label + ": not a motion file (formats read: " + read_formats_text() + ")", ErrorKind::unreadable);
     return make_error(label + ": cannot read: " + assimp_error, ErrorKind::unreadable);
   }
-  if (scene->mNumAnimations == 0)
-    return make_error(label + ": the file has no animation (" + kHoldsPrefix + scene_contents(scene) + ")",
-                      ErrorKind::no_animation);
+  if (scene->mNumAnimations == 0) {
+    info.holds = scene_contents(scene);
+    return make_error(label + ": the file has no animation (it holds " + info.holds + ")", ErrorKind::no_animation);
+  }
   // FBX: assimp re-bases each take to its span's start (LocalStart, else its first
   // key), where its file time is out of sight (read_here adds it from our own reader).
   const bool fbx = is_format(info.format, FormatId::fbx);
@@ -235,8 +236,8 @@ Status read_here(const fs::path& path, const ReadOptions& options, ClipFileInfo&
 
 namespace detail {
 
-wire::ReadOutcome read_in_this_process(const fs::path& path, const ReadOptions& options) {
-  wire::ReadOutcome out;
+ReadOutcome read_in_this_process(const fs::path& path, const ReadOptions& options) {
+  ReadOutcome out;
   const Warnings keep{nullptr, &out.info.warnings};
   try {
     if (Status st = read_here(path, options, out.info, keep); !st) {
@@ -250,9 +251,10 @@ wire::ReadOutcome read_in_this_process(const fs::path& path, const ReadOptions& 
     out.error = path.string() + ": " + one_line(e.what());
   }
   if (out.error) {
-    ClipFileInfo warnings_only;
-    warnings_only.warnings = std::move(out.info.warnings);
-    out.info = std::move(warnings_only);
+    ClipFileInfo found_before;  // what a failed reading still tells
+    found_before.warnings = std::move(out.info.warnings);
+    found_before.holds = std::move(out.info.holds);
+    out.info = std::move(found_before);
   }
   return out;
 }

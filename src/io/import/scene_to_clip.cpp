@@ -4,6 +4,7 @@
 #include "scene_to_clip.h"
 
 #include "rotinterp/io/fbx/fbx_bvh_layout.h"
+#include "rotinterp/io/files/file_record.h"
 #include "mesh_end_sites.h"
 #include "scene_parts.h"
 
@@ -102,7 +103,7 @@ std::string short_number(double v) {
 // unit).
 void add_scene_facts(const aiScene* scene, const aiAnimation* anim, double tps, Clip& clip) {
   clip.source_meshes = scene->mNumMeshes;
-  if (scene_states_rate(scene) && anim->mTicksPerSecond > 0.0) clip.file_rate_hz = tps;
+  if (scene_states_rate(scene) && anim->mTicksPerSecond > 0.0) set_file_rate_hz(clip, tps);
   if (scene->mMetaData) {
     double f = 0.0;
     float ff = 0.0f;
@@ -113,26 +114,26 @@ void add_scene_facts(const aiScene* scene, const aiAnimation* anim, double tps, 
 }
 
 // The BVH channel layout our FBX writer kept in its Models' user properties
-// (fbx_bvh_layout.h), as assimp hands it on in node metadata; null where no joint has
+// (fbx_bvh_layout.h), as assimp hands it on in node metadata; none where no joint has
 // one, or where a joint's channels could not write its tracks (a translation track
 // without position channels): a layout is taken whole or not at all.
-std::shared_ptr<const BvhLayout> kept_bvh_layout(const std::vector<NodeRec>& recs, const Selection& sel,
-                                                 const Clip& clip) {
-  auto layout = std::make_shared<BvhLayout>();
+std::optional<BvhLayout> kept_bvh_layout(const std::vector<NodeRec>& recs, const Selection& sel, const Clip& clip) {
+  BvhLayout layout;
   bool any = false;
   for (std::size_t j = 0; j < sel.selected.size(); ++j) {
-    std::vector<Channel>& channels = layout->channels.emplace_back();
+    std::vector<Channel>& channels = layout.channels.emplace_back();
     aiString text;
     const aiMetadata* meta = recs[sel.selected[j]].node->mMetaData;
     if (!meta || !meta->Get(kBvhChannelsProperty, text)) continue;
     const auto parsed = parse_bvh_channels_text(text.C_Str());
-    if (!parsed) return nullptr;
+    if (!parsed) return std::nullopt;
     channels = *parsed;
     const bool positions = !std::all_of(channels.begin(), channels.end(), is_rotation);
-    if (clip.translations[j] && !positions) return nullptr;
+    if (clip.translations[j] && !positions) return std::nullopt;
     any = true;
   }
-  return any ? layout : nullptr;
+  if (!any) return std::nullopt;
+  return layout;
 }
 
 }  // namespace
@@ -180,10 +181,12 @@ Status scene_to_clip(const aiScene* scene, const aiAnimation* anim, double tps, 
   for (std::size_t j = 0; j < n; ++j)
     if (sel->animated[sel->selected[j]])
       add_mesh_end_sites(scene, recs[sel->selected[j]].node, static_cast<int>(j), cum_scale[j], is_joint, clip.skeleton);
-  clip.bvh_layout = kept_bvh_layout(recs, *sel, clip);
+  set_bvh_layout(clip, kept_bvh_layout(recs, *sel, clip));
   add_scene_facts(scene, anim, tps, clip);
   // The file's own rate is the frames' rate, even where keys lie off its grid.
-  if (const double ft = clip.file_rate_hz > 0.0 ? 1.0 / clip.file_rate_hz : detect_frame_time(*times, tps); ft > 0.0)
+  if (const double stated = stated_rate_hz(clip.source_record),
+      ft = stated > 0.0 ? 1.0 / stated : detect_frame_time(*times, tps);
+      ft > 0.0)
     clip.frame_time = ft;
   return Ok{};
 }

@@ -3,7 +3,7 @@
 #include "clip_wire.h"
 #include "wire_bytes.h"
 
-#include "rotinterp/clip/bvh_layout.h"
+#include "rotinterp/io/files/file_record.h"
 
 #include <cmath>
 #include <cstdint>
@@ -15,7 +15,7 @@ namespace rotinterp::wire {
 namespace {
 
 // Also the format's version: bytes from another build fail here, not in a field.
-constexpr std::string_view kMagic = "rotinterp-clip-wire-5";
+constexpr std::string_view kMagic = "rotinterp-clip-wire-6";
 
 // Smallest encoded sizes, for Reader::count.
 constexpr std::size_t kCount = 8, kDouble = 8, kVec3 = 3 * kDouble, kQuat = 4 * kDouble;
@@ -70,7 +70,7 @@ void put(Writer& w, const Clip& clip) {
   w.str(clip.unit.reason);
   w.str(clip.source_format);
   w.u64(clip.source_meshes);
-  w.f64(clip.file_rate_hz);
+  w.f64(stated_rate_hz(clip.source_record));
 }
 
 void get(Reader& r, Clip& clip) {
@@ -115,7 +115,6 @@ void get(Reader& r, Clip& clip) {
   }
   clip.frame_time = r.f64();
   layout.frame_time_text = r.str();
-  if (has_layout || !layout.frame_time_text.empty()) clip.bvh_layout = std::make_shared<const BvhLayout>(std::move(layout));
   clip.unit.metres_per_unit = r.f64();
   const std::uint8_t origin = r.u8();
   if (origin > static_cast<std::uint8_t>(UnitOrigin::assumed)) r.fail();
@@ -123,7 +122,10 @@ void get(Reader& r, Clip& clip) {
   clip.unit.reason = r.str();
   clip.source_format = r.str();
   clip.source_meshes = r.size();
-  clip.file_rate_hz = r.f64();
+  auto record = std::make_shared<FileRecord>();
+  record->rate_hz = r.f64();
+  if (has_layout || !layout.frame_time_text.empty()) record->bvh_layout = std::move(layout);
+  if (record->rate_hz != 0.0 || record->bvh_layout) clip.source_record = std::move(record);
 }
 
 // The FBX curves as read (io/fbx/fbx_curves.h): takes, layers, curves, keys, models.
@@ -307,6 +309,7 @@ std::string encode(const ReadOutcome& outcome) {
   w.u64(info.folded_helpers);
   w.u8(info.curves.has_value());
   if (info.curves) put(w, *info.curves);
+  w.str(info.holds);
   return w.take();
 }
 
@@ -340,6 +343,7 @@ Result<ReadOutcome> decode(std::string_view bytes) {
   for (std::string& s : info.warnings) s = r.str();
   info.folded_helpers = r.size();
   if (r.flag()) get(r, info.curves.emplace());
+  info.holds = r.str();
   if (r.failed()) return make_error("clip record cut short or garbled");
   if (!r.at_end()) return make_error("clip record followed by stray bytes");
   return out;

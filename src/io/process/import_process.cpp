@@ -248,7 +248,7 @@ Reply read_reply(int fd, Clock::time_point deadline, std::size_t max_bytes) {
 }
 
 // `path` read by this thread's importer; a fresh one when `fresh` or when it has none.
-Result<wire::ReadOutcome> read_once(Importer& importer, bool fresh, const fs::path& path, const std::string& exe,
+Result<ReadOutcome> read_once(Importer& importer, bool fresh, const fs::path& path, const std::string& exe,
                                     const ReadOptions& options) {
   const std::string label = path.string();
   const auto deadline =
@@ -266,7 +266,7 @@ Result<wire::ReadOutcome> read_once(Importer& importer, bool fresh, const fs::pa
     throw;
   }
   if (reply.whole) {
-    Result<wire::ReadOutcome> got = wire::decode(reply.payload);
+    Result<ReadOutcome> got = wire::decode(reply.payload);
     if (!got || importer.resident_bytes() > kRestartAboveResidentBytes) importer.stop();
     if (got) return got;
   }
@@ -319,12 +319,12 @@ Result<fs::path> find_importer() {
 
 namespace detail {
 
-Result<wire::ReadOutcome> read_in_importer(const fs::path& path, const ReadOptions& options) {
+Result<ReadOutcome> read_in_importer(const fs::path& path, const ReadOptions& options) {
   Result<fs::path> exe = find_importer();
   if (!exe) return exe.failure(path.string() + ": cannot read: ");
   Importer& importer = this_threads_importer();
   const bool reused = importer.ready_for(exe->string());
-  Result<wire::ReadOutcome> got = read_once(importer, !reused, path, exe->string(), options);
+  Result<ReadOutcome> got = read_once(importer, !reused, path, exe->string(), options);
   // An importer that read other files first may have been broken by one of them
   // (a heap damaged without a crash there): before this file is called a crash,
   // a fresh importer reads it.

@@ -1,6 +1,7 @@
 #include "rotinterp/io/record/clip_file.h"
 
 #include <cmath>
+#include <utility>
 
 namespace rotinterp {
 
@@ -11,5 +12,10 @@ std::size_t take_frames(const AnimationSummary& take) {
 
 
 const char* rate_origin_text(bool stated) { return stated ? "stated by the file" : "inferred from its key times"; }
+
+Result<ClipFileInfo> reading_or_failure(ReadOutcome outcome) {
+  if (outcome.error) return make_error(std::move(*outcome.error), outcome.kind);
+  return std::move(outcome.info);
+}
 
 }  // namespace rotinterp

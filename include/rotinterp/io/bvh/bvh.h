@@ -15,7 +15,7 @@
 //    offset itself in them); components without a channel keep the OFFSET.
 #pragma once
 
-#include "rotinterp/clip/bvh_layout.h"
+#include "rotinterp/io/files/file_record.h"
 #include "rotinterp/clip/clip.h"
 #include "rotinterp/core/result.h"
 #include "rotinterp/io/files/write_options.h"

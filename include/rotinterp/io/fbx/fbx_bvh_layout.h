@@ -5,7 +5,7 @@
 // on as node metadata; Blender 3.4 imports the file alike and skips it).
 #pragma once
 
-#include "rotinterp/clip/bvh_layout.h"
+#include "rotinterp/io/files/bvh_layout.h"
 
 #include <optional>
 #include <string>

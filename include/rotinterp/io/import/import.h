@@ -20,7 +20,7 @@ namespace detail {
 // The whole read of `path` in this process, assimp included: what the importer
 // runs. Never throws: out of memory and exceptions become the outcome's error.
 // Warnings are kept in the outcome, not passed to options.on_warning.
-wire::ReadOutcome read_in_this_process(const std::filesystem::path& path, const ReadOptions& options);
+ReadOutcome read_in_this_process(const std::filesystem::path& path, const ReadOptions& options);
 }  // namespace detail
 
 // The extensions assimp imports, lower case without the dot, and "bvh" (read by our

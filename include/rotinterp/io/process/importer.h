@@ -34,7 +34,7 @@ namespace detail {
 // timed_out, too_large, or other when the importer cannot be started) when no
 // whole reading came back. A crash in an importer that had read other files is
 // retried once in a fresh one, so that only the file that crashes it fails.
-Result<wire::ReadOutcome> read_in_importer(const std::filesystem::path& path, const ReadOptions& options);
+Result<ReadOutcome> read_in_importer(const std::filesystem::path& path, const ReadOptions& options);
 
 // main() of the importer executable: `rotinterp-import VERSION PARENT_PID` answers
 // requests on its standard input with replies on its standard output until the

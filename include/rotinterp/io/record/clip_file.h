@@ -46,20 +46,22 @@ struct ClipFileInfo {
   // FBX with ReadOptions::read_curves: the curves as the file stores them, read by
   // our own FBX reader (io/fbx/fbx_curves.h); empty otherwise.
   std::optional<FbxAnimation> curves;
+  // A file without animation, which a read refuses (ErrorKind::no_animation): what it
+  // holds ("1 mesh, 2 nodes: RootNode, Cube"), for info; empty otherwise.
+  std::string holds;
 };
 
-// A file without animation is refused (ErrorKind::no_animation) with "FILE: the file
-// has no animation (it holds 1 mesh, 2 nodes: RootNode, Cube)".
-inline constexpr const char* kHoldsPrefix = "it holds ";
-
-namespace wire {
-// A whole reading, or the reason there is none (`error`, of `kind`), as the importer
-// sends it (io/process clip_wire.h).
+// A whole reading, or the reason there is none (`error`, of `kind`) with what the
+// reading found before it: its warnings, and what a file without animation holds
+// (info.holds). What the importer sends back (io/process clip_wire.h) and what
+// info reads (io/info.h).
 struct ReadOutcome {
   ClipFileInfo info;
   std::optional<std::string> error;
   ErrorKind kind = ErrorKind::other;  // of `error`
 };
-}  // namespace wire
+
+// The outcome's reading, or its error (message and kind).
+Result<ClipFileInfo> reading_or_failure(ReadOutcome outcome);
 
 }  // namespace rotinterp

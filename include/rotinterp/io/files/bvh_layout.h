@@ -1,12 +1,10 @@
 // The layout of the BVH file a clip was read from: each joint's CHANNELS, the Frame
-// Time as written and the rotation channels' own numbers. A Clip carries it
-// (Clip::bvh_layout) without looking inside, so that the BVH writer gives the same
+// Time as written and the rotation channels' own numbers. A clip carries it in its
+// file record (io/files/file_record.h), so that the BVH writer gives the same
 // channel order, Frame Time text and Euler angles back, and the FBX writer each
-// joint's rotation order. The BVH reader (io/bvh.h) fills it; synthetic clips
-// (clip/synth.h) get a random one.
+// joint's rotation order. The BVH reader (io/bvh/bvh.h) fills it; `rotinterp synth`
+// gives its clips their motion's random rotation orders (clip/synth.h).
 #pragma once
-
-#include "rotinterp/clip/clip.h"
 
 #include <cctype>
 #include <cstddef>
@@ -78,37 +76,5 @@ struct BvhLayout {
   // the clip's start, its frame 0 the source's frame 100.
   std::size_t source_first_frame = 0;
 };
-
-// Joint `joint`'s channels in the clip's layout; empty when it has none (a clip
-// that is not from BVH, or a joint without CHANNELS).
-inline const std::vector<Channel>& bvh_channels(const Clip& clip, std::size_t joint) {
-  static const std::vector<Channel> none;
-  const BvhLayout* layout = clip.bvh_layout.get();
-  return layout && joint < layout->channels.size() ? layout->channels[joint] : none;
-}
-
-// The clip's Frame Time as written in its BVH file; empty when there is none.
-inline const std::string& frame_time_text(const Clip& clip) {
-  static const std::string none;
-  return clip.bvh_layout ? clip.bvh_layout->frame_time_text : none;
-}
-
-// `layout` without its Frame Time text, for a clip whose frame time changed; null
-// stays null.
-inline std::shared_ptr<const BvhLayout> without_frame_time_text(const std::shared_ptr<const BvhLayout>& layout) {
-  if (!layout || layout->frame_time_text.empty()) return layout;
-  auto out = std::make_shared<BvhLayout>(*layout);
-  out->frame_time_text.clear();
-  return out;
-}
-
-// `layout` for a cut of its clip that starts `frames` frames later; null stays null.
-inline std::shared_ptr<const BvhLayout> with_source_first_frame(const std::shared_ptr<const BvhLayout>& layout,
-                                                                std::size_t frames) {
-  if (!layout || !layout->source_angles || frames == 0) return layout;
-  auto out = std::make_shared<BvhLayout>(*layout);
-  out->source_first_frame += frames;
-  return out;
-}
 
 }  // namespace rotinterp

@@ -3,6 +3,7 @@
 
 #include "rotinterp/clip/bvh_layout.h"
 #include "rotinterp/clip/frames.h"
+#include "rotinterp/clip/output_limit.h"
 #include "rotinterp/core/work_queue.h"
 #include "rotinterp/interp/interpolator.h"
 
@@ -19,9 +20,6 @@
 namespace rotinterp {
 
 namespace {
-
-// Output size limit: frames × joints (≈ 40 bytes each, 4 GB).
-constexpr std::size_t kMaxOutputKeys = 100000000;
 
 std::string seconds_text(double s) {
   std::ostringstream os;

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets with clang (ASan + UBSan) and runs each for
-# SECONDS (default 60) seconds: fuzz_read_bvh, fuzz_read_any, fuzz_read_fbx, fuzz_interp.
+# SECONDS (default 60) seconds: fuzz_read_bvh, fuzz_read_any, fuzz_read_fbx, fuzz_read_gltf, fuzz_interp.
 # Usage: bash scripts/fuzz.sh [SECONDS] [TARGET...]
 # Seeds: ../shared/data plus tests/fuzz/corpus/<kind>; new inputs go to
 # build-fuzz/corpus/<target>; crashes to build-fuzz/artifacts/<target>/; the whole
@@ -10,7 +10,7 @@ cd "$(dirname "$0")/.."
 seconds=${1:-60}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(fuzz_read_bvh fuzz_read_any fuzz_read_fbx fuzz_interp)
+[ ${#targets[@]} -gt 0 ] || targets=(fuzz_read_bvh fuzz_read_any fuzz_read_fbx fuzz_read_gltf fuzz_interp)
 
 bash scripts/install-deps.sh
 command -v clang++ >/dev/null || DEBIAN_FRONTEND=noninteractive apt-get install -y -q clang libclang-rt-14-dev
@@ -32,6 +32,13 @@ for t in "${targets[@]}"; do
       for f in "$data"/fbx/*.fbx; do { printf '\x01'; cat "$f"; } > "build-fuzz/seeds/any/$(basename "$f")"; done
       seeds=(build-fuzz/seeds/any) ;;
     fuzz_read_fbx) seeds=("$data/fbx" "$data/curves") ;;
+    fuzz_read_gltf)
+      # Seeds: GLB files rotinterp writes from the shared BVH clips (kept in build-fuzz).
+      mkdir -p build-fuzz/seeds/gltf
+      [ -x build/rotinterp ] && for f in "$data"/bvh/*.bvh; do
+        build/rotinterp resample "$f" -o "build-fuzz/seeds/gltf/$(basename "$f" .bvh).glb" --range 0:0.5 -q || true
+      done
+      seeds=(build-fuzz/seeds/gltf) ;;
     fuzz_interp) seeds=(tests/fuzz/corpus/interp) ;;
   esac
   mkdir -p "build-fuzz/corpus/$t" "build-fuzz/artifacts/$t"

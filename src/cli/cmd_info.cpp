@@ -257,6 +257,7 @@ int run_info(const InfoArgs& args) {
   if (!read_options) return fail_usage(read_options.error());
   ReadOptions options = *read_options;
   options.on_warning = warn;
+  if (!std::isfinite(args.sample_hz)) return fail_usage("--sample must be a finite number of Hz");
   if (args.sample_hz > 0.0 && !args.curves) return fail_usage("--sample needs --curves");
   const std::string& path = args.paths.front();
   options.read_curves = args.curves;

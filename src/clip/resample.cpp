@@ -2,6 +2,7 @@
 #include "rotinterp/clip/resample.h"
 
 #include "rotinterp/clip/frames.h"
+#include "rotinterp/clip/output_limit.h"
 #include "rotinterp/core/work_queue.h"
 #include "rotinterp/interp/interpolator.h"
 
@@ -15,8 +16,6 @@ namespace rotinterp {
 
 namespace {
 
-// Output size limit: frames × joints (≈ 40 bytes each, 4 GB).
-constexpr std::size_t kMaxOutputKeys = 100000000;
 
 // The time of output frame i in a clip that keeps the source's frame time: what a
 // reader of the written file gives (start + i·frame_time), so the output's key

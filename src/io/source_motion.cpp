@@ -61,9 +61,9 @@ double on_sampler_clock(const GltfSampler& sampler, double t) {
   return nearest;
 }
 
-Result<FileSource> gltf_source(const std::filesystem::path& path, ClipFileInfo&& info) {
+Result<FileSource> gltf_source(const std::filesystem::path& path, ClipFileInfo&& info, bool allow_external_files) {
   const std::string label = path.string();
-  auto file = read_gltf_animations(path);
+  auto file = read_gltf_animations(path, allow_external_files);
   if (!file) return file.failure();
   // assimp keeps the file's animations in order: ours and the clip's share an index.
   if (info.selected >= file->animations.size() || file->animations[info.selected].name != info.animations[info.selected].name)
@@ -107,7 +107,8 @@ Result<FileSource> read_file_source(const std::filesystem::path& path, const Rea
     if (!fbx) return fbx.failure();
     return fbx_file_source(std::make_shared<const SourceClip>(std::move(*fbx)), label);
   }
-  if (is_format(info->format, FormatId::glb) || is_format(info->format, FormatId::gltf)) return gltf_source(path, std::move(*info));
+  if (is_format(info->format, FormatId::glb) || is_format(info->format, FormatId::gltf))
+    return gltf_source(path, std::move(*info), options.allow_external_files);
   if (is_format(info->format, FormatId::bvh)) return frames_source(std::move(info->clip));
   return make_error(label + ": --method source replays a file's own motion (FBX curves, glTF animation samplers, BVH "
                     "frames); this is a '" + info->format + "' file (use an interpolator, e.g. clamped)");

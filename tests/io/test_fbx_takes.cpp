@@ -168,7 +168,7 @@ TEST(Fbx61, HostileKeyListsAreRefusedInOneLineNamingTheFileAndTheNode) {
       {"1", "0,0,U,s,0,0,a,0.3", "key 0 of 1: a weighted key without its weight"},
       {"2", "0,0,Q,46186158000,90,L", "key 0 of 2: unknown interpolation 'Q'"},
       {"2", "0,0,U,z,46186158000,90,L", "key 0 of 2: unknown tangent mode 'z'"},
-      {"2", "46186158000,0,L,0,90,L", "key 1 of 2: key times do not increase"},
+      {"2", "46186158000,0,L,0,90,L", "key 1: its time 0 is before key 0's 4.6186158e+10 (times must increase)"},
       {"1", "0,0,L,46186158000,90,L", "values after the last of its 1 keys"},
   };
   for (const auto& c : cases) {

@@ -60,7 +60,7 @@ std::vector<Case> cases() {
       {"TruncatedHierarchy", "trunc.bvh", "HIERARCHY\nROOT Hips\n{\n OFFSET 0 0\n", {"OFFSET of joint 'Hips'", "expected a number"}},
       {"EmptyFile", "empty.bvh", "", {"the file is empty"}},
       {"UnknownFormat", "clip.xyz", "this is not a motion clip\n", {"not a motion file (formats read: bvh, fbx, glb, gltf, dae"}},
-      {"GarbageFbx", "garbage.fbx", std::string(200, 'x'), {"cannot read"}},
+      {"GarbageFbx", "garbage.fbx", std::string(200, 'x'), {"FBX node (top level): expected 'Name:'"}},
       // assimp 5.2.5 segfaults on a curve without keys, and a key at 1000 s in a
       // 1 s take trips an assertion inside it (fuzz_read_any crash-3197eb88), which
       // aborts: each ends the importer process, not this one.
@@ -114,14 +114,14 @@ TEST(MalformedPaths, FilesAssimpCrashesOnAreRefusedAndTheCallerGoesOn) {
   test::write_text(path, bytes);
   const test::CliResult r = test::run_cli("info '" + path.string() + "'");
   EXPECT_EQ(r.exit_code, 1) << r.err;
-  // glibc aborts the importer (signal 6); under AddressSanitizer its report ends it with exit status 1.
-  const std::string start = "rotinterp: " + path.string() + ": assimp crashed importing this file (";
+  // Our FBX reader, which sees the file before assimp (issue 47), refuses its broken
+  // zlib array; were it to pass, assimp would crash and the importer be replaced.
+  const std::string start = "rotinterp: " + path.string() + ": FBX node Objects/AnimationCurve/KeyTime: ";
   EXPECT_EQ(r.err.rfind(start, 0), 0u) << r.err;
   EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line: " << r.err;
-  EXPECT_NE(r.err.find("); refused\n"), std::string::npos) << r.err;
   clip = read_clip(path);
   ASSERT_FALSE(clip);
-  EXPECT_EQ(clip.error_kind(), ErrorKind::crashed);
+  EXPECT_EQ(clip.error_kind(), ErrorKind::unreadable);
   // The unchanged file reads.
   EXPECT_TRUE(read_clip(source));
 }

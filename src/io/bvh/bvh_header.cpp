@@ -2,6 +2,7 @@
 // End Sites) and the MOTION header (Frames, exact Frame Time).
 #include "bvh_text.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -26,6 +27,7 @@ class Tokenizer {
     skip_space();
     const std::size_t start = pos_;
     while (pos_ < text_.size() && !is_space(text_[pos_])) ++pos_;
+    farthest_ = std::max(farthest_, pos_);
     return text_.substr(start, pos_ - start);
   }
   std::string_view peek() {
@@ -43,6 +45,8 @@ class Tokenizer {
     return line_;
   }
   std::size_t position() const { return pos_; }
+  // How far any token reached: below the text's size, every token read ended in it.
+  std::size_t farthest() const { return farthest_; }
 
  private:
   void skip_space() {
@@ -52,7 +56,7 @@ class Tokenizer {
     }
   }
   std::string_view text_;
-  std::size_t pos_ = 0;
+  std::size_t pos_ = 0, farthest_ = 0;
   int line_ = 1;
 };
 
@@ -123,6 +127,7 @@ class HeaderParser {
   }
 
   std::size_t position() const { return tok_.position(); }
+  std::size_t farthest() const { return tok_.farthest(); }
   int line() const { return tok_.line(); }
 
  private:
@@ -243,3 +248,17 @@ Result<DataStart> parse_header(std::string_view text, const std::string& label, 
 }
 
 }  // namespace rotinterp::bvh_text
+
+namespace rotinterp {
+
+Status check_bvh_head(std::string_view head, bool whole_file, const std::string& label) {
+  BvhFile file;
+  bvh_text::HeaderParser header(head, label);
+  Status s = header.parse_hierarchy(file);
+  if (s) s = header.parse_motion_header(file);
+  // A token that reached the head's end may go on in the file: only the full parse can tell.
+  if (s || (!whole_file && header.farthest() >= head.size())) return Ok{};
+  return make_error(s.error(), ErrorKind::unreadable);
+}
+
+}  // namespace rotinterp

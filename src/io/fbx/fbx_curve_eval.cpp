@@ -120,6 +120,11 @@ double evaluate_fbx_curve(const FbxCurve& curve, double ticks) {
   return ticks < static_cast<double>(curve.keys.front().ticks) ? curve.keys.front().value : curve.keys.back().value;
 }
 
+double fbx_sample_count(double hz, std::int64_t end_ticks) {
+  if (!(hz > 0.0) || end_ticks < 0) return 0.0;
+  return std::floor((static_cast<double>(end_ticks) + 1e-6) / kTicks * hz) + 1.0;
+}
+
 std::vector<double> sample_fbx_curve(const FbxCurve& curve, double hz, std::int64_t end_ticks) {
   std::vector<double> out;
   if (!(hz > 0.0) || end_ticks < 0) return out;

@@ -1,6 +1,8 @@
 // The FBX node tree's accessors and the choice between the binary and ASCII readers.
 #include "rotinterp/io/fbx/fbx_nodes.h"
 
+#include "rotinterp/io/files/input_file.h"
+
 #include <cstring>
 
 namespace rotinterp {
@@ -37,12 +39,24 @@ std::string fbx_printable(std::string_view name) {
   return out;
 }
 
+std::string fbx_node_where(const std::string& label, const std::vector<std::string>& path) {
+  std::string where;
+  for (const std::string& n : path) where += (where.empty() ? "" : "/") + fbx_printable(n);
+  return label + ": FBX node " + (where.empty() ? "(top level)" : where);
+}
+
 bool is_binary_fbx(std::string_view bytes) {
   return bytes.size() >= 21 && std::memcmp(bytes.data(), kBinaryMagic, 21) == 0;
 }
 
 Result<FbxDocument> parse_fbx_nodes(std::string_view bytes, const std::string& label) {
   return is_binary_fbx(bytes) ? parse_fbx_binary(bytes, label) : parse_fbx_ascii(bytes, label);
+}
+
+Result<FbxDocument> read_fbx_file(const std::string& path, const std::string& label) {
+  Result<std::string> bytes = read_input_file(path, label);
+  if (!bytes) return bytes.failure();
+  return parse_fbx_nodes(*bytes, label);
 }
 
 }  // namespace rotinterp

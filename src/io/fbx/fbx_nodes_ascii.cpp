@@ -40,10 +40,7 @@ class AsciiReader {
   }
 
   Status fail(const std::string& what) const {
-    std::string where;
-    for (const std::string& n : path_) where += (where.empty() ? "" : "/") + fbx_printable(n);
-    return make_error(label_ + ": FBX node " + (where.empty() ? "(top level)" : where) + ": " + what,
-                      ErrorKind::unreadable);
+    return make_error(fbx_node_where(label_, path_) + ": " + what, ErrorKind::unreadable);
   }
 
  private:
@@ -147,9 +144,11 @@ class AsciiReader {
     std::uint64_t count = 0;
     if (std::from_chars(s_.data() + from, s_.data() + pos_, count).ec != std::errc() || pos_ == from)
       return fail("bad array count on line " + std::to_string(line_));
-    // Each value takes at least two characters ("0,"): a larger count is hostile.
-    if (count > kFbxMaxArrayElements || count > (s_.size() - pos_) / 2 + 1)
-      return fail("array of " + std::to_string(count) + " elements cannot fit in the file");
+    // Each value takes at least two characters ("0,", the last without its comma).
+    if (Status s = check_declared_count(count, 2, s_.size() - pos_ + 1, kFbxMaxArrayElements,
+                                        fbx_node_where(label_, path_) + ": line " + std::to_string(line_));
+        !s)
+      return s;
     skip_blank(true);
     if (pos_ >= s_.size() || s_[pos_] != '{') return fail("expected '{' after the array count");
     ++pos_;

@@ -1,6 +1,7 @@
 // parse_fbx_binary: binary FBX 6.1–7.7 node records into an FbxDocument, every
 // offset and count checked before it is used (io/fbx/fbx_nodes.h states the rules).
 #include "rotinterp/io/fbx/fbx_nodes.h"
+#include "rotinterp/io/files/limits.h"
 
 #include <zlib.h>
 
@@ -21,7 +22,7 @@ constexpr std::uint64_t kZlibMaxRatio = 1032;
 class BinaryReader {
  public:
   BinaryReader(std::string_view bytes, const std::string& label, std::uint32_t version)
-      : b_(bytes), label_(label), wide_(version >= kWideOffsetsFrom) {}
+      : b_(bytes), label_(label), wide_(version >= kWideOffsetsFrom), inflation_(bytes.size()) {}
 
   // The nodes from `pos` up to `end` (exclusive of their closing null record).
   Status nodes(std::size_t& pos, std::size_t end, std::vector<FbxNode>& out, std::size_t depth) {
@@ -62,12 +63,9 @@ class BinaryReader {
     return Ok{};
   }
 
-  Status fail(const std::string& what) const {
-    std::string where;
-    for (const std::string& n : path_) where += (where.empty() ? "" : "/") + fbx_printable(n);
-    return make_error(label_ + ": FBX node " + (where.empty() ? "(top level)" : where) + ": " + what,
-                      ErrorKind::unreadable);
-  }
+  Status fail(const std::string& what) const { return make_error(where() + ": " + what, ErrorKind::unreadable); }
+
+  std::string where() const { return fbx_node_where(label_, path_); }
 
  private:
   template <class T>
@@ -121,16 +119,20 @@ class BinaryReader {
     if (!get(pos, end, count) || !get(pos, end, encoding) || !get(pos, end, stored)) return fail("truncated array header");
     if (stored > end - pos) return fail("array of " + std::to_string(stored) + " bytes past the node's properties");
     const std::uint64_t raw_bytes = std::uint64_t{count} * sizeof(T);
-    if (count > kFbxMaxArrayElements) return fail("array of " + std::to_string(count) + " elements refused");
     std::string inflated;
     const char* data = b_.data() + pos;
     if (encoding == 0) {
+      if (Status s = check_declared_count(count, sizeof(T), stored, kFbxMaxArrayElements, where()); !s) return s;
       if (stored != raw_bytes)
         return fail("array of " + std::to_string(count) + " elements stored in " + std::to_string(stored) + " bytes");
     } else if (encoding == 1) {
-      if (raw_bytes > std::uint64_t{stored} * kZlibMaxRatio)
-        return fail("zlib array of " + std::to_string(count) + " elements cannot come from " + std::to_string(stored) +
-                    " bytes");
+      // The count bounds the inflation (uncompress stops there), and the count is
+      // bounded by what the stored bytes and the file's size can hold.
+      if (Status s = check_declared_count(count, sizeof(T), std::uint64_t{stored} * kZlibMaxRatio, kFbxMaxArrayElements,
+                                          where() + " (zlib array)");
+          !s)
+        return s;
+      if (Status s = inflation_.take(std::uint64_t{count} * sizeof(double), where()); !s) return s;
       inflated.resize(static_cast<std::size_t>(raw_bytes));
       uLongf out_len = static_cast<uLongf>(raw_bytes);
       const int rc = ::uncompress(reinterpret_cast<Bytef*>(inflated.data()), &out_len,
@@ -168,6 +170,7 @@ class BinaryReader {
   std::string_view b_;
   const std::string& label_;
   bool wide_;
+  InflationBudget inflation_;  // what the file's zlib arrays may inflate to together
   std::vector<std::string> path_;
 };
 

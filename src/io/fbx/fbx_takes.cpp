@@ -2,6 +2,7 @@
 // from Connections, and Takes/Take/Model/Channel "Transform"/T|R|S/X|Y|Z keys
 // decoded from the 6.1 key list.
 #include "fbx_objects.h"
+#include "rotinterp/io/files/key_checks.h"
 
 #include <algorithm>
 #include <cmath>
@@ -121,7 +122,7 @@ std::string decode_key(KeyList& list, FbxKey& k) {
 }
 
 // Channel X, Y or Z of a T/R/S group: its Default, KeyCount and Key list.
-Status read_channel(const FbxNode& channel, FbxCurve& c, const std::string& where) {
+Status read_channel(const FbxNode& channel, FbxCurve& c, const std::string& where, std::vector<std::string>& repairs) {
   if (const FbxNode* d = channel.child("Default"); d && !d->properties.empty())
     c.default_value = d->properties[0].as_double();
   if (!std::isfinite(c.default_value)) c.default_value = 0.0;
@@ -144,20 +145,24 @@ Status read_channel(const FbxNode& channel, FbxCurve& c, const std::string& wher
     if (!list.ticks(k.ticks) || !list.number(k.value))
       return make_error(at + ": no time and finite value (the list ends or holds something else)",
                         ErrorKind::unreadable);
-    if (i > 0 && k.ticks <= c.keys[i - 1].ticks)
-      return make_error(at + ": key times do not increase", ErrorKind::unreadable);
     if (const std::string wrong = decode_key(list, k); !wrong.empty())
       return make_error(at + ": " + wrong, ErrorKind::unreadable);
   }
   if (!list.at_end())
     return make_error(where + ": values after the last of its " + std::to_string(count) + " keys",
                       ErrorKind::unreadable);
+  std::vector<double> times, values;
+  for (const FbxKey& k : c.keys) times.push_back(static_cast<double>(k.ticks)), values.push_back(k.value);
+  Result<std::vector<std::size_t>> repaired = check_keys(times, values, 1, where);
+  if (!repaired) return repaired.failure();
+  drop_keys(c.keys, *repaired, 1);
+  if (!repaired->empty()) repairs.push_back(repaired_keys_warning(where, repaired->size()));
   return Ok{};
 }
 
 // A take's Model: its Channel "Transform" → T, R, S → X, Y, Z.
 Status read_take_model(const FbxNode& model, const std::vector<FbxModel>& models, FbxTake& take,
-                       const std::string& where) {
+                       std::vector<std::string>& repairs, const std::string& where) {
   const std::string name = object_name(model);
   const FbxNode* transform = nullptr;
   for (const FbxNode& c : model.children)
@@ -191,7 +196,7 @@ Status read_take_model(const FbxNode& model, const std::vector<FbxModel>& models
       c.default_value = animated.defaults[static_cast<std::size_t>(letter[0] - 'X')];
       const std::string path = where + "/Model '" + fbx_printable(name) + "'/Channel Transform/" +
                                group.properties[0].text + "/" + letter + "/Key";
-      if (Status st = read_channel(axis, c, path); !st) return st;
+      if (Status st = read_channel(axis, c, path, repairs); !st) return st;
       animated.defaults[static_cast<std::size_t>(letter[0] - 'X')] = c.default_value;
       if (!c.keys.empty()) take.curves.push_back(std::move(c));
     }
@@ -245,7 +250,7 @@ Result<FbxAnimation> read_fbx_takes(const FbxDocument& doc, const std::string& l
     const std::string where = label + ": FBX node Takes/Take '" + fbx_printable(take.name) + "'";
     for (const FbxNode& model : node.children)
       if (model.name == "Model")
-        if (Status st = read_take_model(model, anim.models, take, where); !st) return st.failure();
+        if (Status st = read_take_model(model, anim.models, take, anim.repairs, where); !st) return st.failure();
     anim.takes.push_back(std::move(take));
   }
   return anim;

@@ -3,15 +3,16 @@
 // number taken from the file is checked before it indexes anything: the file is input.
 #include "rotinterp/io/gltf/gltf_source.h"
 
+#include "rotinterp/io/files/input_file.h"
+#include "rotinterp/io/files/key_checks.h"
+
 #include <nlohmann/json.hpp>
 
 #include <cctype>
 #include <cstdint>
 #include <cstring>
-#include <fstream>
 #include <map>
 #include <optional>
-#include <sstream>
 #include <stdexcept>
 
 namespace rotinterp {
@@ -95,14 +96,6 @@ std::string percent_decoded(const std::string& uri) {
   return out;
 }
 
-Result<std::string> slurp(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return make_error("cannot open " + path.string());
-  std::ostringstream all;
-  all << in.rdbuf();
-  return all.str();
-}
-
 // A whole number ≥ 0 that the spec requires (indices, offsets, lengths, counts).
 std::uint64_t whole(const json& object, const char* key, std::optional<std::uint64_t> fallback = std::nullopt) {
   if (!object.contains(key)) {
@@ -123,8 +116,8 @@ const json& element(const json& doc, const char* array, std::uint64_t index) {
 // The file's buffers, read when first used. Errors throw (caught once, in parse).
 class Buffers {
  public:
-  Buffers(const json& doc, const Container& file, std::filesystem::path folder)
-      : doc_(doc), file_(file), folder_(std::move(folder)) {}
+  Buffers(const json& doc, const Container& file, std::filesystem::path folder, bool allow_external_files)
+      : doc_(doc), file_(file), folder_(std::move(folder)), allow_external_files_(allow_external_files) {}
 
   std::string_view bytes(std::uint64_t index) {
     auto it = loaded_.find(index);
@@ -149,13 +142,19 @@ class Buffers {
       if (!decoded) throw std::runtime_error(name + ": " + decoded.error());
       data = std::move(*decoded);
     } else {
-      // A file beside the .gltf only: no scheme, no absolute path, no way up.
-      const std::filesystem::path relative(percent_decoded(uri));
-      bool leaves = uri.find(':') != std::string::npos || relative.has_root_path() || relative.empty();
-      for (const auto& part : relative) leaves = leaves || part == "..";
-      if (leaves) throw std::runtime_error(name + ": uri '" + uri + "' is not a relative file in the file's folder");
-      auto read = slurp(folder_ / relative);
-      if (!read) throw std::runtime_error(name + ": " + read.error());
+      // A file beside the .gltf (others with allow_external_files), a regular one; no other scheme.
+      const std::string what = name + ": uri '" + uri + "'";
+      if (uri.find(':') != std::string::npos && !allow_external_files_)
+        throw std::runtime_error(what + " is not a relative file in the file's folder");
+      auto file = referenced_file(folder_, percent_decoded(uri), allow_external_files_, what);
+      if (!file) throw std::runtime_error(file.error());
+      // A buffer file's size is checked before it is read: byteLength must fit in it.
+      std::error_code ec;
+      const std::uintmax_t size = std::filesystem::file_size(*file, ec);
+      if (!ec && length > size)
+        throw std::runtime_error(name + " declares " + std::to_string(length) + " bytes and holds " + std::to_string(size));
+      auto read = read_input_file(*file, what);
+      if (!read) throw std::runtime_error(read.error());
       data = std::move(*read);
     }
     if (length > data.size())
@@ -168,6 +167,7 @@ class Buffers {
   const json& doc_;
   const Container& file_;
   std::filesystem::path folder_;
+  bool allow_external_files_;
   std::map<std::uint64_t, std::string> loaded_;
 };
 
@@ -230,7 +230,10 @@ std::vector<double> read_accessor(const json& doc, Buffers& buffers, std::uint64
   return out;
 }
 
-GltfSampler read_sampler(const json& doc, Buffers& buffers, const json& sampler, std::size_t width) {
+// The sampler's keys through the shared pass (io/files/key_checks.h): repeated keys
+// dropped (a line in `repairs`), rotations of no length refused. `where` names it.
+GltfSampler read_sampler(const json& doc, Buffers& buffers, const json& sampler, std::size_t width,
+                         const std::string& where, std::vector<std::string>& repairs) {
   GltfSampler out;
   const std::string how = sampler.value("interpolation", std::string("LINEAR"));
   if (how == "LINEAR") out.interpolation = GltfInterpolation::linear;
@@ -240,11 +243,25 @@ GltfSampler read_sampler(const json& doc, Buffers& buffers, const json& sampler,
   out.width = width;
   out.times = read_accessor(doc, buffers, whole(sampler, "input"), 1, false);
   out.values = read_accessor(doc, buffers, whole(sampler, "output"), width, width == 4);
-  if (Status s = validate_gltf_sampler(out); !s) throw std::runtime_error(s.error());
+  const bool cubic = out.interpolation == GltfInterpolation::cubic_spline;
+  const std::size_t per_key = width * (cubic ? 3 : 1);
+  if (out.values.size() == out.times.size() * per_key) {
+    Result<std::vector<std::size_t>> repaired = check_keys(out.times, out.values, per_key, where);
+    if (!repaired) throw std::runtime_error(repaired.error());
+    drop_keys(out.times, *repaired, 1);
+    drop_keys(out.values, *repaired, per_key);
+    if (!repaired->empty()) repairs.push_back(repaired_keys_warning(where, repaired->size()));
+    // A CUBICSPLINE key is (in-tangent, value, out-tangent): only the value is a rotation.
+    if (width == 4)
+      if (Status q = check_quaternion_keys(out.values, cubic ? width : 0, per_key, where); !q)
+        throw std::runtime_error(q.error());
+  }
+  if (Status s = validate_gltf_sampler(out); !s) throw std::runtime_error(where + ": " + s.error());
   return out;
 }
 
-GltfAnimation read_animation(const json& doc, Buffers& buffers, const json& animation, std::size_t nodes) {
+GltfAnimation read_animation(const json& doc, Buffers& buffers, const json& animation, std::size_t nodes,
+                             std::vector<std::string>& repairs) {
   GltfAnimation out;
   out.name = animation.value("name", std::string());
   out.nodes.assign(nodes, {});
@@ -262,7 +279,9 @@ GltfAnimation read_animation(const json& doc, Buffers& buffers, const json& anim
     if (fresh) {
       if (!animation.contains("samplers") || index >= animation.at("samplers").size())
         throw std::runtime_error("a channel uses sampler " + std::to_string(index) + ", which does not exist");
-      out.samplers.push_back(read_sampler(doc, buffers, animation.at("samplers").at(index), width));
+      const std::string where = "animation '" + out.name + "' sampler " + std::to_string(index) + " (node " +
+                                std::to_string(node) + " " + path + ")";
+      out.samplers.push_back(read_sampler(doc, buffers, animation.at("samplers").at(index), width, where, repairs));
     }
     // A later channel on the same node and path replaces an earlier one, as assimp's importer does.
     (path == "rotation" ? out.nodes[node].rotation : out.nodes[node].translation) = it->second;
@@ -273,7 +292,7 @@ GltfAnimation read_animation(const json& doc, Buffers& buffers, const json& anim
 }  // namespace
 
 Result<GltfAnimations> parse_gltf_animations(std::string_view bytes, const std::filesystem::path& folder,
-                                             const std::string& label) {
+                                             const std::string& label, bool allow_external_files) {
   auto file = split_container(bytes, label);
   if (!file) return file.failure();
   const json doc = json::parse(file->json.begin(), file->json.end(), nullptr, false);
@@ -285,19 +304,19 @@ Result<GltfAnimations> parse_gltf_animations(std::string_view bytes, const std::
       const std::string name = doc.at("nodes").at(i).value("name", std::string());
       out.node_names.push_back(name.empty() ? "nodes_" + std::to_string(i) : name);  // assimp's GetNodeName
     }
-    Buffers buffers(doc, *file, folder);
+    Buffers buffers(doc, *file, folder, allow_external_files);
     if (doc.contains("animations"))
-      for (const json& animation : doc.at("animations")) out.animations.push_back(read_animation(doc, buffers, animation, nodes));
+      for (const json& animation : doc.at("animations")) out.animations.push_back(read_animation(doc, buffers, animation, nodes, out.repairs));
     return out;
   } catch (const std::exception& e) {
     return make_error(label + ": glTF animations: " + e.what(), ErrorKind::unreadable);
   }
 }
 
-Result<GltfAnimations> read_gltf_animations(const std::filesystem::path& path) {
-  auto bytes = slurp(path);
-  if (!bytes) return make_error(path.string() + ": " + bytes.error(), ErrorKind::unreadable);
-  return parse_gltf_animations(*bytes, path.parent_path(), path.string());
+Result<GltfAnimations> read_gltf_animations(const std::filesystem::path& path, bool allow_external_files) {
+  auto bytes = read_input_file(path, path.string());
+  if (!bytes) return bytes.failure();
+  return parse_gltf_animations(*bytes, path.parent_path(), path.string(), allow_external_files);
 }
 
 }  // namespace rotinterp

@@ -3,6 +3,9 @@
 #include "rotinterp/core/geodesic.h"
 #include "rotinterp/io/gltf/gltf_source.h"
 
+#include "rotinterp/core/geodesic.h"
+#include "rotinterp/io/files/key_checks.h"
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -55,16 +58,14 @@ Status validate_gltf_sampler(const GltfSampler& s) {
   // One CUBICSPLINE key, which the spec forbids, is still a constant: our own writer
   // wrote such samplers for tracks of one key (reduce's .glb), so they read.
   if (s.times.empty()) return make_error("a sampler has no key");
-  for (std::size_t k = 0; k < s.times.size(); ++k) {
-    if (!std::isfinite(s.times[k])) return make_error("a sampler's key time is not finite");
-    if (k > 0 && !(s.times[k] > s.times[k - 1])) return make_error("a sampler's key times do not increase");
-  }
   const bool cubic = s.interpolation == GltfInterpolation::cubic_spline;
-  if (s.width == 0 || s.values.size() != s.times.size() * s.width * (cubic ? 3 : 1))
+  const std::size_t per_key = s.width * (cubic ? 3 : 1);
+  if (s.width == 0 || s.values.size() != s.times.size() * per_key)
     return make_error("a sampler's output holds " + std::to_string(s.values.size()) + " numbers for " +
                       std::to_string(s.times.size()) + " keys");
-  for (double v : s.values)
-    if (!std::isfinite(v)) return make_error("a sampler's output value is not finite");
+  Result<std::vector<std::size_t>> repeated = check_keys(s.times, s.values, per_key, "a sampler");
+  if (!repeated) return repeated.failure();
+  if (!repeated->empty()) return make_error("a sampler's key times do not increase at key " + std::to_string(repeated->front()));
   return Ok{};
 }
 

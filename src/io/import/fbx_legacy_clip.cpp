@@ -2,6 +2,7 @@
 // Models, keys from the take's curves evaluated at its frames.
 #include "fbx_legacy.h"
 
+#include "rotinterp/io/files/distinct_names.h"
 #include "rotinterp/io/files/file_record.h"
 #include "rotinterp/io/files/key_times.h"
 
@@ -15,7 +16,6 @@
 #include <cstring>
 #include <fstream>
 #include <set>
-#include <sstream>
 #include <utility>
 
 namespace rotinterp {
@@ -171,14 +171,6 @@ std::vector<double> key_seconds(const FbxTake& take) {
   return out;
 }
 
-Result<FbxDocument> parse_file(const fs::path& path, const std::string& label) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream bytes;
-  if (!in || !(bytes << in.rdbuf())) return make_error(label + ": cannot read the file", ErrorKind::cannot_open);
-  const std::string text = bytes.str();
-  return parse_fbx_nodes(text, label);
-}
-
 }  // namespace
 
 bool is_legacy_fbx(const fs::path& path) {
@@ -204,7 +196,7 @@ bool is_legacy_fbx(const fs::path& path) {
 
 Status read_legacy_fbx(const fs::path& path, const ReadOptions& options, ClipFileInfo& info, const Warnings& warn) {
   const std::string label = path.string();
-  Result<FbxDocument> doc = parse_file(path, label);
+  Result<FbxDocument> doc = read_fbx_file(path, label);
   if (!doc) return make_error(doc.error(), ErrorKind::unreadable);
   Result<FbxAnimation> anim = read_fbx_animation(*doc, label);
   if (!anim) return make_error(anim.error(), ErrorKind::unreadable);
@@ -252,12 +244,11 @@ Status read_legacy_fbx(const fs::path& path, const ReadOptions& options, ClipFil
 
   Clip& clip = info.clip;
   clip.name = take.name.empty() ? path.stem().string() : take.name;
-  std::set<std::string> names;
+  DistinctNames names;
   std::vector<const FbxNodeLayers*> layers_of;
   for (const auto& [model, parent] : joints) {
     Joint joint;
-    joint.name = model->name.empty() ? "model" + std::to_string(model->id) : model->name;
-    while (!names.insert(joint.name).second) joint.name += "#";
+    joint.name = names.take(model->name.empty() ? "model" + std::to_string(model->id) : model->name);
     joint.parent = parent;
     joint.offset = matrix_translation(fbx_node_matrix(*model, fbx_lcl_values(take, *model, nullptr, 0.0)));
     joint.rest_rotation = fbx_node_rotation(*model, model->rotation);

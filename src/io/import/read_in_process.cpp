@@ -10,6 +10,7 @@
 #include "rotinterp/io/record/read_parts.h"
 #include "rotinterp/io/fbx/fbx_curves.h"
 #include "rotinterp/io/fbx/fbx_source.h"
+#include "rotinterp/io/gltf/gltf_source.h"
 #include "scene_parts.h"
 #include "scene_to_clip.h"
 
@@ -22,6 +23,7 @@
 #include <cmath>
 #include <map>
 #include <new>
+#include <optional>
 #include <stdexcept>
 
 namespace rotinterp {
@@ -213,21 +215,48 @@ Status read_bvh_checked(const fs::path& path, const ReadOptions& options, ClipFi
   return Ok{};
 }
 
+// FBX 7 and glTF are read by our own readers before assimp sees them: they check
+// every declared size before allocating (io/files/limits.h), where assimp allocates
+// what a lying count asks, and they refuse keys assimp takes in silence (reversed or
+// NaN times, NaN values): both paths then accept the same files (docs/limits.md).
+// Keys they repaired are warnings; the FBX curves are kept for ReadOptions::read_curves.
+Result<std::optional<FbxAnimation>> read_ahead_of_assimp(const fs::path& path, const std::string& ext,
+                                                         const ReadOptions& options, const Warnings& warn) {
+  const std::string label = path.string();
+  if (is_format(ext, FormatId::fbx)) {
+    Result<FbxAnimation> curves = read_fbx_curves_file(path, label);
+    if (!curves) return curves.failure();
+    for (const std::string& w : curves->repairs) warn(w);
+    return std::optional<FbxAnimation>(std::move(*curves));
+  }
+  if (is_format(ext, FormatId::glb) || is_format(ext, FormatId::gltf)) {
+    Result<GltfAnimations> gltf = read_gltf_animations(path, options.allow_external_files);
+    if (!gltf) return gltf.failure();
+    for (const std::string& w : gltf->repairs) warn(label + ": " + w);
+  }
+  return std::optional<FbxAnimation>();
+}
+
 Status read_here(const fs::path& path, const ReadOptions& options, ClipFileInfo& info, const Warnings& warn) {
   const std::string label = path.string();
   if (Status s = check_file(path, label); !s) return s.failure();
   const std::string ext = extension_of(path);
   info.format = ext;
   const bool fbx = is_format(ext, FormatId::fbx);
-  Status st = is_bvh(path, ext)                ? read_bvh_checked(path, options, info, warn)
-              : fbx && is_legacy_fbx(path) ? read_legacy_fbx(path, options, info, warn)
-                                             : read_with_assimp(path, options, info, warn);
-  if (!st) return st;
-  if (options.read_curves && fbx && !info.curves) {
-    Result<FbxAnimation> curves = read_fbx_curves_file(path, label);
-    if (!curves) return curves.failure();
-    info.curves = std::move(*curves);
+  const bool bvh = is_bvh(path, ext), legacy = !bvh && fbx && is_legacy_fbx(path);
+  std::optional<FbxAnimation> curves;
+  if (!bvh && !legacy) {
+    Result<std::optional<FbxAnimation>> ahead = read_ahead_of_assimp(path, ext, options, warn);
+    if (!ahead) return ahead.failure();
+    curves = std::move(*ahead);
   }
+  Status st = bvh      ? read_bvh_checked(path, options, info, warn)
+              : legacy ? read_legacy_fbx(path, options, info, warn)
+                       : read_with_assimp(path, options, info, warn);
+  if (!st) return st;
+  if (legacy && info.curves)
+    for (const std::string& w : info.curves->repairs) warn(w);
+  if (options.read_curves && fbx && !info.curves && curves) info.curves = std::move(*curves);
   if (info.curves) add_take_starts(*info.curves, info.animations);
   return check_clip(info, label, options);
 }

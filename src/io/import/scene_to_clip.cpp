@@ -4,6 +4,7 @@
 #include "scene_to_clip.h"
 
 #include "rotinterp/io/fbx/fbx_bvh_layout.h"
+#include "rotinterp/io/files/distinct_names.h"
 #include "rotinterp/io/files/file_record.h"
 #include "mesh_end_sites.h"
 #include "scene_parts.h"
@@ -52,11 +53,9 @@ double baked_scale(const std::vector<Trs>& keys, const std::string& name, const 
 // ---- tracks -----------------------------------------------------------------------
 
 // Joint names are unique in a Clip; assimp's may be empty or repeat.
-std::string unique_name(const aiNode* node, std::size_t node_index, std::set<std::string>& taken) {
-  std::string name = node->mName.C_Str();
-  if (name.empty()) name = "node" + std::to_string(node_index);
-  while (!taken.insert(name).second) name += "#";
-  return name;
+std::string unique_name(const aiNode* node, std::size_t node_index, DistinctNames& taken) {
+  const std::string name = node->mName.C_Str();
+  return taken.take(name.empty() ? "node" + std::to_string(node_index) : name);
 }
 
 RotationTrack rotation_track(const JointKeys& k, double tps) {
@@ -159,7 +158,7 @@ Status scene_to_clip(const aiScene* scene, const aiAnimation* anim, double tps, 
   clip.rotations.assign(n, RotationTrack{});
   clip.translations.assign(n, std::nullopt);
   std::vector<double> cum_scale(n, 1.0);  // uniform scale of the joint's frame (baked)
-  std::set<std::string> names;
+  DistinctNames names;
   std::vector<JointKeys> keys(n);
   for (std::size_t j = 0; j < n; ++j) {  // parents first
     const std::size_t node = sel->selected[j];

@@ -62,6 +62,15 @@ class FileText {
   std::size_t size_ = 0;
 };
 
+// The first `bytes` bytes of the file (fewer where it is shorter).
+std::string file_head(const fs::path& path, std::size_t bytes) {
+  std::ifstream f(path, std::ios::binary);
+  std::string head(bytes, '\0');
+  f.read(head.data(), static_cast<std::streamsize>(bytes));
+  head.resize(static_cast<std::size_t>(f.gcount()));
+  return head;
+}
+
 bool looks_like_bvh(const std::string& text) {
   std::size_t i = 0;
   if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) i = 3;  // UTF-8 BOM
@@ -82,42 +91,23 @@ std::string extension_of(const fs::path& path) {
   return ext;
 }
 
-Status check_file(const fs::path& path, const std::string& label) {
-  std::error_code ec;
-  const fs::file_status st = fs::status(path, ec);
-  if (ec == std::errc::too_many_symbolic_link_levels)
-    return make_error(label + ": a loop of symbolic links (too many levels of symbolic links)", ErrorKind::no_file);
-  if (ec || !fs::exists(st)) {
-    std::error_code lec;
-    if (fs::is_symlink(fs::symlink_status(path, lec)))
-      return make_error(label + ": a symbolic link to a missing file", ErrorKind::no_file);
-    if (ec && ec != std::errc::no_such_file_or_directory)
-      return make_error(label + ": cannot read: " + ec.message(), ErrorKind::cannot_open);
-    return make_error(label + ": no such file", ErrorKind::no_file);
-  }
-  if (fs::is_directory(st)) return make_error(label + ": is a directory, not a clip file", ErrorKind::directory);
-  if (!fs::is_regular_file(st)) return make_error(label + ": not a regular file", ErrorKind::cannot_open);
-  const auto size = fs::file_size(path, ec);
-  if (ec) return make_error(label + ": cannot read: " + ec.message(), ErrorKind::cannot_open);
-  if (size == 0) return make_error(label + ": the file is empty", ErrorKind::unreadable);
-  std::ifstream f(path, std::ios::binary);
-  if (!f) return make_error(label + ": cannot open for reading", ErrorKind::cannot_open);
-  return Ok{};
-}
-
 bool is_bvh(const fs::path& path, const std::string& ext) {
   if (is_format(ext, FormatId::bvh)) return true;
-  std::ifstream f(path, std::ios::binary);
-  std::string head(64, '\0');
-  f.read(head.data(), 64);
-  head.resize(static_cast<std::size_t>(f.gcount()));
-  return looks_like_bvh(head);
+  return looks_like_bvh(file_head(path, 64));
 }
 
 // The clip comes from our pass: the file's values in double precision (assimp's
 // float keys would use up half of the 1e-4° round-trip budget).
 Result<BvhFile> read_bvh_file(const fs::path& path, ClipFileInfo& info, const Warnings& warn) {
   const std::string label = path.string();
+  // A header that fails in the file's first MiB fails before the rest is read.
+  const std::string head = file_head(path, kBvhHeadBytes + 1);
+  // (A byte order mark and UTF-16 are left to parse_bvh, which skips UTF-8's and names UTF-16.)
+  const bool marked = head.rfind("\xEF\xBB\xBF", 0) == 0 || head.rfind("\xFF\xFE", 0) == 0 ||
+                      head.rfind("\xFE\xFF", 0) == 0 || (head.size() > 1 && (head[0] == '\0' || head[1] == '\0'));
+  const std::string_view first = std::string_view(head).substr(0, kBvhHeadBytes);
+  if (Status st = marked ? Status(Ok{}) : check_bvh_head(first, head.size() <= kBvhHeadBytes, label); !st)
+    return st.failure();
   FileText text;
   if (Status st = text.open(path, label); !st) return make_error(st.error(), ErrorKind::unreadable);
   Result<BvhFile> bvh = parse_bvh(text.text(), label);

@@ -18,6 +18,7 @@
 #include "rotinterp/io/files/file_record.h"
 #include "rotinterp/clip/clip.h"
 #include "rotinterp/core/result.h"
+#include "rotinterp/io/files/limits.h"
 #include "rotinterp/io/files/write_options.h"
 
 #include <cstddef>
@@ -62,11 +63,9 @@ struct BvhFile {
   bool has_position_channels(std::size_t joint) const;
 };
 
-// Limits of what parse_bvh() accepts, each far beyond real files (a mocap skeleton
-// nests fewer than 50 joints deep and names them in a few dozen bytes; mocap runs
-// at 24–1000 Hz). Outside them a file is refused with one line.
-constexpr std::size_t kMaxJointDepth = 1000;      // ROOT is level 1
-constexpr std::size_t kMaxNameBytes = 1024;       // a joint name (assimp's own limit too)
+// Limits of what parse_bvh() accepts, each far beyond real files (mocap runs at
+// 24–1000 Hz; the depth and name limits, kMaxJointDepth and kMaxNameBytes, are
+// every reader's: io/files/limits.h). Outside them a file is refused with one line.
 constexpr double kMinBvhFrameTime = 1e-6;         // seconds: 1 MHz
 constexpr double kMaxBvhFrameTime = 3600.0;       // seconds: one frame an hour
 
@@ -76,6 +75,12 @@ constexpr double kMaxBvhFrameTime = 3600.0;       // seconds: one frame an hour
 // when the data rows run out. Joints are parsed without recursion, so depth costs
 // no stack. A UTF-8 byte order mark is skipped; UTF-16 text is refused as such.
 Result<BvhFile> parse_bvh(std::string_view text, const std::string& label);
+
+// The first bytes of a file (`head`; all of it where `whole_file`) checked as BVH up
+// to its data rows, before the file is read whole: Ok where the head parses or is cut
+// inside the header, parse_bvh's own error where the header fails within the head
+// (io/files/limits.h kBvhHeadBytes).
+Status check_bvh_head(std::string_view head, bool whole_file, const std::string& label);
 
 // The skeleton of a parsed file: joints (names, parents, OFFSETs, identity rest
 // rotations) and End Sites named "EndSite_<joint>".

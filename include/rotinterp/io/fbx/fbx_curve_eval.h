@@ -37,5 +37,8 @@ double evaluate_fbx_curve(const FbxCurve& curve, double ticks);
 // The curve at k/hz seconds for k = 0, 1, … while k/hz ≤ end_ticks (FBX time 0 is
 // t = 0). hz > 0.
 std::vector<double> sample_fbx_curve(const FbxCurve& curve, double hz, std::int64_t end_ticks);
+// How many samples that gives (about: the last may fall either side of the end), as a
+// double so that a huge rate does not wrap; 0 where hz is not > 0 or NaN.
+double fbx_sample_count(double hz, std::int64_t end_ticks);
 
 }  // namespace rotinterp

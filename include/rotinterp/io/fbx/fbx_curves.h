@@ -132,14 +132,18 @@ struct FbxAnimation {
   std::uint32_t version = 0;  // the file's FBX version (6100, 7500, …)
   std::vector<FbxTake> takes;
   std::vector<FbxModel> models;
+  // One warning per curve whose keys the reader repaired (io/files/key_checks.h K3),
+  // for the read to pass on. Not part of the curves.
+  std::vector<std::string> repairs;
 };
 
 // The animation of a parsed FBX file: 7.x objects, or 6.1 Objects/Model
 // (Properties60) and Takes, whose keys are a flat list per channel (time, value,
 // interpolation letter, then the tangent mode's slopes and weights). Malformed
-// animation (key arrays of differing lengths, times not increasing, attribute
-// counts that do not cover the keys, 6.1 key lists shorter or longer than their
-// KeyCount) is refused with one line naming the file and the curve's node path.
+// animation (key arrays of differing lengths, keys that break the rules of
+// io/files/key_checks.h, attribute counts that do not cover the keys, 6.1 key lists
+// shorter or longer than their KeyCount) is refused with one line naming the file and
+// the curve's node path.
 Result<FbxAnimation> read_fbx_animation(const FbxDocument& doc, const std::string& label);
 
 // The file at `path` read whole and through parse_fbx_nodes and read_fbx_animation;

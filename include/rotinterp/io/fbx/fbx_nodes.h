@@ -20,6 +20,7 @@
 #pragma once
 
 #include "rotinterp/core/result.h"
+#include "rotinterp/io/files/limits.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -28,9 +29,6 @@
 #include <vector>
 
 namespace rotinterp {
-
-inline constexpr std::size_t kFbxMaxDepth = 64;                       // real files nest < 10
-inline constexpr std::size_t kFbxMaxArrayElements = std::size_t{1} << 28;  // 2 GiB of doubles
 
 // One property. Binary type codes are kept: 'C' bool, 'Y' int16, 'I' int32,
 // 'L' int64 (all in `integer`), 'F' float, 'D' double (`number`), 'S' string,
@@ -76,12 +74,19 @@ struct FbxDocument {
 // '?', at most 200 bytes (messages are one line).
 std::string fbx_printable(std::string_view name);
 
+// "file.fbx: FBX node Objects/AnimationCurve/KeyTime" for the node names `path` (from
+// the top): what the readers' errors start with.
+std::string fbx_node_where(const std::string& label, const std::vector<std::string>& path);
+
 // Whether `bytes` start with the binary FBX magic.
 bool is_binary_fbx(std::string_view bytes);
 
 // Reads a whole FBX file's bytes (binary or ASCII, chosen by the magic). `label`
 // names the file in errors (ErrorKind::unreadable).
 Result<FbxDocument> parse_fbx_nodes(std::string_view bytes, const std::string& label);
+
+// The file at `path` (io/files/input_file.h read_input_file) through parse_fbx_nodes.
+Result<FbxDocument> read_fbx_file(const std::string& path, const std::string& label);
 
 // The two encodings, for the tests (parse_fbx_nodes chooses).
 Result<FbxDocument> parse_fbx_binary(std::string_view bytes, const std::string& label);

@@ -41,6 +41,8 @@ enum class GltfInterpolation { step, linear, cubic_spline };
 //  2. times finite and strictly increasing;
 //  3. values.size() = keys × width, ×3 for CUBICSPLINE (in-tangent, value, out-tangent
 //     per key, in that order), every value finite.
+// (2 and 3 are the key rules of io/files/key_checks.h; reading also drops repeated
+// keys and refuses rotations of no length there.)
 struct GltfSampler {
   GltfInterpolation interpolation = GltfInterpolation::linear;
   std::vector<double> times;   // seconds, glTF time
@@ -67,16 +69,20 @@ struct GltfAnimation {
 struct GltfAnimations {
   std::vector<std::string> node_names;  // as assimp names them (see above)
   std::vector<GltfAnimation> animations;
+  // One warning per sampler whose keys the reader repaired (io/files/key_checks.h K3).
+  std::vector<std::string> repairs;
 };
 
 // Reads a .glb or .gltf file's nodes and animations. Buffers come from the GLB's
 // binary chunk, data: URIs (base64) or files beside the .gltf given by a relative URI
-// that stays in the file's folder (absolute paths, other schemes and `..` are refused).
-// Every accessor read is checked against its buffer view and its buffer (count ×
-// stride within both) before it is read. Errors: one line naming the file (`label`).
-Result<GltfAnimations> read_gltf_animations(const std::filesystem::path& path);
+// that stays in the file's folder; absolute paths, other schemes and `..` are refused
+// unless `allow_external_files` (ReadOptions::allow_external_files), and every buffer
+// file must be a regular file (io/files/input_file.h). Every accessor read is checked
+// against its buffer view and its buffer (count × stride within both) before it is
+// read. Errors: one line naming the file (`label`).
+Result<GltfAnimations> read_gltf_animations(const std::filesystem::path& path, bool allow_external_files = false);
 // The same from the file's bytes; relative buffer URIs resolve in `folder`.
 Result<GltfAnimations> parse_gltf_animations(std::string_view bytes, const std::filesystem::path& folder,
-                                             const std::string& label);
+                                             const std::string& label, bool allow_external_files = false);
 
 }  // namespace rotinterp

@@ -42,6 +42,10 @@ struct ReadOptions {
   // read (ClipFileInfo::curves; `info --curves`). A malformed curve then refuses the
   // file (ErrorKind::unreadable). Off by default.
   bool read_curves = false;
+  // glTF: read buffer files that lie outside the file's folder (a uri with `..`, an
+  // absolute path, or a link leading out). Off by default: a file from elsewhere
+  // should not make rotinterp read /etc or a home folder (docs/limits.md).
+  bool allow_external_files = false;
   // Threads for a long BVH's conversion (core/work_queue.h thread_count: 0 = as many as
   // the machine has; it uses two at most). A caller reading files side by side gives 1.
   unsigned threads = 0;

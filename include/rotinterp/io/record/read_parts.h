@@ -5,6 +5,7 @@
 
 #include "rotinterp/core/result.h"
 #include "rotinterp/io/bvh/bvh.h"
+#include "rotinterp/io/files/input_file.h"
 #include "rotinterp/io/record/clip_file.h"
 #include "rotinterp/io/record/read_options.h"
 
@@ -30,10 +31,6 @@ std::string lower(std::string s);
 
 // "fbx" for "x/y.FBX": lower case, no dot.
 std::string extension_of(const std::filesystem::path& path);
-
-// Before any parser runs: the path names a non-empty regular file we may open
-// (errors of kind no_file, directory, cannot_open or unreadable).
-Status check_file(const std::filesystem::path& path, const std::string& label);
 
 // BVH content: by extension, or a HIERARCHY first under another one.
 bool is_bvh(const std::filesystem::path& path, const std::string& ext);

@@ -15,6 +15,7 @@
 #include "rotinterp/core/rotation.h"
 #include "rotinterp/interp/continued.h"
 #include "rotinterp/interp/interpolator.h"
+#include "rotinterp/interp/key_arrays.h"
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -40,17 +41,6 @@ template <class T>
 T checked(Result<T> r) {
   if (!r) value_error(r.error());
   return std::move(*r);
-}
-
-inline Quat quat_at(const double* p, bool scalar_first) {
-  return scalar_first ? Quat(p[0], p[1], p[2], p[3]) : Quat(p[3], p[0], p[1], p[2]);
-}
-inline void put_quat(const Quat& q, double* p, bool scalar_first) {
-  if (scalar_first) {
-    p[0] = q.w(), p[1] = q.x(), p[2] = q.y(), p[3] = q.z();
-  } else {
-    p[0] = q.x(), p[1] = q.y(), p[2] = q.z(), p[3] = q.w();
-  }
 }
 
 inline std::vector<py::ssize_t> shape_of(const py::array& a) { return {a.shape(), a.shape() + a.ndim()}; }
@@ -136,7 +126,7 @@ inline std::string quat_index_text(const char* what, const py::array& a, py::ssi
 // finite non-zero quaternion normalized; or any object with as_quat() (a scipy
 // Rotation), whose scalar-last layout is used whatever scalar_first says. The
 // library itself keeps its unit-norm contract (RotationTrack rule 3): this is the
-// boundary where rounded data becomes unit (unit_quat, below).
+// boundary where rounded data becomes unit (unit_quat, interp/key_arrays.h).
 
 // Refuses an array whose last axis is not 4, naming `what` and its shape.
 inline void require_quat_shape(const py::array& raw, const char* what) {
@@ -158,19 +148,6 @@ inline Doubles quat_array(const py::handle& h, bool& scalar_first, const char* w
   if (!raw) value_error(std::string(what) + " must be quaternions: a numeric array of shape (..., 4) or a scipy Rotation");
   require_quat_shape(raw, what);
   return raw;
-}
-
-// The 4 components at p made unit into `unit`, in the same layout; false for a zero,
-// NaN or infinite quaternion. Scaled by the largest component first: no overflow or
-// underflow in the norm for finite components of any size (1e300 or 1e-320).
-inline bool unit_quat(const double* p, Eigen::Vector4d& unit) {
-  const Eigen::Map<const Eigen::Vector4d> q(p);
-  if (!q.allFinite()) return false;
-  const double largest = q.cwiseAbs().maxCoeff();
-  if (largest == 0.0) return false;
-  const Eigen::Vector4d scaled = q / largest;
-  unit = scaled / scaled.norm();
-  return true;
 }
 
 // Raises the error for the first quaternion of `raw` that unit_quat refuses, by its

@@ -63,6 +63,7 @@ py::array interpolate(const py::handle& times_in, const py::handle& quats_in, co
   if (floats) {
     quats = py::reinterpret_borrow<py::array>(quats_in);
     require_quat_shape(quats, "quats");
+    require_key_count(static_cast<double>(quats.size() / 4), 1, "quats");
   } else {
     quats = quat_array(quats_in, in_scalar_first, "quats");
   }
@@ -77,6 +78,7 @@ py::array interpolate(const py::handle& times_in, const py::handle& quats_in, co
     throw;
   }
   const auto n = static_cast<std::size_t>(new_times.size());
+  require_key_count(static_cast<double>(n), joints, "new_times");
   std::vector<py::ssize_t> shape;  // a number gives one sample's shape: (4,) or (J, 4)
   if (new_times.ndim() == 1) shape.push_back(static_cast<py::ssize_t>(n));
   if (!single) shape.push_back(static_cast<py::ssize_t>(joints));
@@ -202,9 +204,13 @@ py::array angle_between(const py::handle& a_in, const py::handle& b_in, bool sca
 // q = swing · twist about `axis` (3,) in the moving frame, for (…, 4) arrays.
 py::tuple swing_twist_split(const py::handle& q_in, const py::handle& axis_in, bool scalar_first) {
   bool q_first = scalar_first;
-  const Doubles q = unit_quats(q_in, q_first, "q"), axis = Doubles::ensure(axis_in);
-  if (!axis || axis.ndim() != 1 || axis.shape(0) != 3) value_error("swing_twist: axis must have shape (3,)");
-  const Vec3 ax(axis.at(0), axis.at(1), axis.at(2));
+  const Doubles q = unit_quats(q_in, q_first, "q"), axis = real_array(axis_in, "axis");
+  if (axis.ndim() != 1 || axis.shape(0) != 3) value_error("swing_twist: axis must have shape (3,)");
+  Vec3 ax(axis.at(0), axis.at(1), axis.at(2));
+  if (!ax.allFinite() || ax.cwiseAbs().maxCoeff() == 0.0)  // a twist needs a direction
+    value_error("swing_twist: axis must be a finite non-zero vector, got " +
+                py::str(py::reinterpret_borrow<py::object>(axis_in)).cast<std::string>());
+  ax /= ax.cwiseAbs().maxCoeff();  // no underflow in its norm (an axis of 1e-200)
   py::array_t<double> swing(shape_of(q)), twist(shape_of(q));
   const auto n = static_cast<std::size_t>(q.size() / 4);
   for (std::size_t i = 0; i < n; ++i) {

@@ -96,19 +96,25 @@ Clip make_clip(const std::vector<std::string>& names, const py::handle& parents_
   const std::size_t nj = names.size();
   const Doubles times = times_array(times_in, "times");
   const auto f = static_cast<std::size_t>(times.shape(0));
-  const auto parents = py::array_t<long long, py::array::c_style | py::array::forcecast>::ensure(parents_in);
+  const Integers parents = integer_array(parents_in, "parents");
   bool in_scalar_first = scalar_first;  // a scipy Rotation comes scalar-last
-  const Doubles offsets = Doubles::ensure(offsets_in);
+  const Doubles offsets = real_array(offsets_in, "offsets");
+  const double unit = metres_per_unit_arg(py::float_(metres), "metres_per_unit");
   Doubles rotations = unit_quats(rotations_in, in_scalar_first, "rotations");
   // (F·J, 4), frame-major, as a flat scipy Rotation of every frame's joints holds them.
   if (rotations.ndim() == 2 && static_cast<std::size_t>(rotations.shape(0)) == f * nj && nj > 0)
     rotations = Doubles::ensure(rotations.reshape({static_cast<py::ssize_t>(f), static_cast<py::ssize_t>(nj),
                                                    py::ssize_t{4}}));
-  if (!parents || parents.ndim() != 1 || static_cast<std::size_t>(parents.shape(0)) != nj)
+  if (parents.ndim() != 1 || static_cast<std::size_t>(parents.shape(0)) != nj)
     value_error("parents must be a 1-D array with one entry per name (" + std::to_string(nj) + ")");
-  if (!offsets || offsets.ndim() != 2 || static_cast<std::size_t>(offsets.shape(0)) != nj || offsets.shape(1) != 3)
+  // Kept in int's range for Skeleton::validate, which refuses the rest (a parent after its joint).
+  for (std::size_t j = 0; j < nj; ++j)
+    if (parents.at(j) < -1 || parents.at(j) >= static_cast<long long>(nj))
+      value_error("parents[" + std::to_string(j) + "] = " + std::to_string(parents.at(j)) +
+                  " is neither -1 (a root) nor the index of a joint (0 to " + std::to_string(nj - 1) + ")");
+  if (offsets.ndim() != 2 || static_cast<std::size_t>(offsets.shape(0)) != nj || offsets.shape(1) != 3)
     value_error("offsets must have shape (J, 3) = (" + std::to_string(nj) + ", 3)");
-  if (!rotations || rotations.ndim() != 3 || static_cast<std::size_t>(rotations.shape(0)) != f ||
+  if (rotations.ndim() != 3 || static_cast<std::size_t>(rotations.shape(0)) != f ||
       static_cast<std::size_t>(rotations.shape(1)) != nj || rotations.shape(2) != 4)
     value_error("rotations must have shape (F, J, 4) = (" + std::to_string(f) + ", " + std::to_string(nj) + ", 4), got " +
                 shape_text(rotations));
@@ -116,7 +122,7 @@ Clip make_clip(const std::vector<std::string>& names, const py::handle& parents_
   Clip c;
   c.name = name;
   c.source_format = "python";
-  c.unit = {metres, UnitOrigin::given, "given: Clip(metres_per_unit=)"};
+  c.unit = {unit, UnitOrigin::given, "given: Clip(metres_per_unit=)"};
   for (std::size_t j = 0; j < nj; ++j) {
     Joint joint;
     joint.name = names[j];
@@ -135,8 +141,8 @@ Clip make_clip(const std::vector<std::string>& names, const py::handle& parents_
       const std::string joint = item.first.cast<std::string>();
       const int j = c.skeleton.find(joint);
       if (j < 0) value_error("translations: no joint '" + joint + "'");
-      const Doubles p = Doubles::ensure(item.second);
-      if (!p || p.ndim() != 2 || static_cast<std::size_t>(p.shape(0)) != f || p.shape(1) != 3)
+      const Doubles p = real_array(item.second, "translations");
+      if (p.ndim() != 2 || static_cast<std::size_t>(p.shape(0)) != f || p.shape(1) != 3)
         value_error("translations['" + joint + "'] must have shape (F, 3) = (" + std::to_string(f) + ", 3)");
       require_finite(p, "translations");
       TranslationTrack tr;
@@ -156,6 +162,12 @@ Clip make_clip(const std::vector<std::string>& names, const py::handle& parents_
     if (uniform) c.frame_time = dt;
   }
   if (Status s = c.validate(); !s) value_error("clip '" + name + "': " + s.error());
+  // Every frame-based call (positions, to_euler, evaluate, resample) makes each joint's
+  // frames: refused here, before any of them allocates.
+  if (c.frame_time > 0.0)
+    require_key_count((c.end_time() - c.start_time()) / c.frame_time + 1.0, nj,
+                      "frame_time=" + py::str(py::float_(c.frame_time)).cast<std::string>() + " s over " +
+                          py::str(py::float_(c.end_time() - c.start_time())).cast<std::string>() + " s of keys");
   return c;
 }
 
@@ -171,8 +183,8 @@ std::vector<std::size_t> frame_indices(const py::object& frames, std::size_t cou
     for (std::size_t k = 0; k < count; ++k) out.push_back(k);
     return out;
   }
-  const auto a = py::array_t<long long, py::array::c_style | py::array::forcecast>::ensure(frames);
-  if (!a || a.ndim() > 1) value_error("frames must be None, a frame index or a 1-D array of frame indices");
+  const Integers a = integer_array(frames, "frames");
+  if (a.ndim() > 1) value_error("frames must be None, a frame index or a 1-D array of frame indices");
   const auto n = static_cast<long long>(count);
   for (py::ssize_t i = 0; i < a.size(); ++i) {
     const long long k = a.data()[i];

@@ -18,6 +18,7 @@
 #include <cerrno>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <optional>
 #include <string>
@@ -75,9 +76,7 @@ Clip resample(const Clip& clip, const py::object& fps, const py::object& keep_ev
   ResampleOptions o;
   if (!fps.is_none()) o.fps = rate_of(fps);
   if (!keep_every.is_none()) {
-    const long long n = keep_every.cast<long long>();
-    if (n < 1) value_error("keep_every must be a whole number >= 1, got " + std::to_string(n));
-    o.keep_every = static_cast<std::size_t>(n);
+    o.keep_every = static_cast<std::size_t>(whole_number(keep_every, "keep_every", 1));
   }
   o.method = method_of(method).name;
   for (const auto& [joint, m] : method_for) o.method_for.emplace_back(joint, method_of(m).name);
@@ -114,7 +113,7 @@ Clip resample(const Clip& clip, const py::object& fps, const py::object& keep_ev
 // ---- evaluate --------------------------------------------------------------------------
 
 py::dict evaluate(const py::object& inputs, const std::optional<std::vector<std::string>>& method_names_in,
-                  const std::vector<int>& keep_every, int subframe, double shell_distance_m) {
+                  const py::object& keep_every, int subframe, const py::object& shell_distance) {
   ClipEvalOptions o;
   if (method_names_in) {
     o.methods = *method_names_in;
@@ -124,11 +123,16 @@ py::dict evaluate(const py::object& inputs, const std::optional<std::vector<std:
   for (std::string& m : o.methods) {
     m = method_of(m).name;  // one spelling in the results ("SLERP" is slerp)
   }
-  for (int n : keep_every)
-    if (n < 1) value_error("keep_every values must be >= 1, got " + std::to_string(n));
-  o.keep_every = keep_every;
+  for (const py::handle n : keep_every) {
+    const long long k = whole_number(n, "keep_every values", 1);
+    if (k > std::numeric_limits<int>::max()) value_error("keep_every value " + std::to_string(k) + " is too large");
+    o.keep_every.push_back(static_cast<int>(k));
+  }
   o.subframe = subframe;
-  o.shell_distance_m = shell_distance_m;
+  // A length as eval --shell-distance takes it ("3cm"), or a number of metres; its parser's refusals.
+  const Result<double> shell = parse_length(py::str(shell_distance).cast<std::string>());
+  if (!shell) value_error("shell_distance: " + shell.error());
+  o.shell_distance_m = *shell;
   // One clip, one path, or a list of them; paths keep their text as the clip id (as
   // in errors.csv), clips their name.
   std::vector<py::object> items;
@@ -198,13 +202,7 @@ py::dict evaluate(const py::object& inputs, const std::optional<std::vector<std:
 ReadOptions read_options(const py::object& anim, const py::object& unit) {
   ReadOptions o;
   if (!anim.is_none()) o.animation = py::str(anim).cast<std::string>();
-  if (py::isinstance<py::str>(unit)) {
-    o.unit = checked(parse_unit(unit.cast<std::string>()));
-  } else if (!unit.is_none()) {
-    const double m = unit.cast<double>();
-    if (!(m > 0.0) || !std::isfinite(m)) value_error("unit must be m, cm, mm, in, ft or metres per unit > 0");
-    o.unit = m;
-  }
+  if (!unit.is_none()) o.unit = metres_per_unit_arg(unit, "unit");
   return o;
 }
 
@@ -260,8 +258,8 @@ void bind_commands(py::module_& m) {
         py::arg("method_for") = std::map<std::string, std::string>{}, py::arg("translation") = "cubic",
         py::arg("range") = py::none(), py::arg("loop") = py::none());
   m.def("evaluate", &evaluate, py::arg("inputs"), py::arg("methods") = py::none(),
-        py::arg("keep_every") = std::vector<int>{2, 4, 8, 16}, py::arg("subframe") = 0,
-        py::arg("shell_distance") = kDefaultShellDistanceMetres);
+        py::arg("keep_every") = py::make_tuple(2, 4, 8, 16), py::arg("subframe") = 0,
+        py::arg("shell_distance") = py::float_(kDefaultShellDistanceMetres));
 }
 
 }  // namespace rotinterp::python

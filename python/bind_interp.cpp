@@ -4,6 +4,7 @@
 #include "rotinterp/clip/metrics.h"
 #include "rotinterp/clip/resample.h"
 #include "rotinterp/interp/interpolator.h"
+#include "rotinterp/interp/key_arrays.h"
 
 #include <algorithm>
 #include <cstddef>
@@ -34,82 +35,17 @@ py::list method_list() {
 
 // ---- interpolate ------------------------------------------------------------------
 
-// quats (K, 4) or (K, J, 4) against times (K,): the joint count (0 for a single track).
-std::size_t joints_of(const py::array& q, std::size_t k) {
+// quats (K, 4) or (K, J, 4) against times (K,): the joint count, 1 for a single track
+// (`single`), and 0 for J = 0: an empty (N, 0, 4) result.
+std::size_t joints_of(const py::array& q, std::size_t k, bool& single) {
   if (q.ndim() >= 1 && q.shape(0) == 0 && k == 0)
     value_error("times and quats are empty (quats of shape " + shape_text(q) + "): a track needs at least one key");
-  const bool single = q.ndim() == 2 && q.shape(1) == 4;
+  single = q.ndim() == 2 && q.shape(1) == 4;
   const bool many = q.ndim() == 3 && q.shape(2) == 4;
   if (!single && !many) value_error("quats must have shape (K, 4) or (K, J, 4), got " + shape_text(q));
   if (static_cast<std::size_t>(q.shape(0)) != k)
     value_error("quats has " + std::to_string(q.shape(0)) + " keys but times has " + std::to_string(k));
-  return single ? 0 : static_cast<std::size_t>(q.shape(1));
-}
-
-// Joint j's track from times (K,) and raw quaternions (K, J, 4), each key made unit
-// (unit_quat) on the way: the one copy of the keys, which make_interpolator then takes
-// over. False at the first key unit_quat refuses.
-// Components are float64 or float32 (read as they are: each is exactly a double).
-template <class Component>
-bool gather_unit_track(const double* times, const Component* quats, std::size_t k, std::size_t joints, std::size_t j,
-                       bool scalar_first, RotationTrack& track) {
-  track.times.assign(times, times + k);
-  track.keys.resize(k);
-  Eigen::Vector4d u = Eigen::Vector4d::Zero();
-  for (std::size_t i = 0; i < k; ++i) {
-    const Component* p = quats + 4 * (i * joints + j);
-    const double raw[4] = {p[0], p[1], p[2], p[3]};
-    if (!unit_quat(raw, u)) return false;
-    track.keys[i] = quat_at(u.data(), scalar_first);
-  }
-  return true;
-}
-
-// Methods whose curve is nothing but its keys: all joints' curves are alive at once for
-// them, so that the output is written a block of times at a time, every joint of a row
-// together (one pass over the (N, J, 4) output instead of a strided pass per joint).
-// Other methods hold rates or control points besides (31 c2 curves alive at once cost
-// 11 000 page faults a call, more than the evaluation itself): one joint at a time,
-// each curve freed before the next is built, so that the heap memory is reused.
-bool curve_is_its_keys(const std::string& method) {
-  const std::string& name = find_method(method)->name;
-  return name == "slerp" || name == "nlerp";
-}
-
-// interpolate's work, without the GIL: the (N, J, 4) output `o` (J = joints, 1 for a
-// single track) of `method` on the raw quaternions q (K, J, 4). Returns false on a
-// quaternion that unit_quat refuses, or with a joint's error in `error`.
-template <class Component>
-bool interpolate_joints(const double* t, const Component* q, std::size_t k, std::size_t joints, const double* nt,
-                        std::size_t n, const std::string& method, bool continued, bool in_scalar_first,
-                        bool out_scalar_first, double* o, std::string& error) {
-  constexpr std::size_t kBlock = 64;  // output times per evaluate call (measured: 64 to 1024 alike)
-  const std::size_t jn = joints == 0 ? 1 : joints;
-  const std::size_t group = curve_is_its_keys(method) ? jn : 1;
-  std::vector<std::unique_ptr<Interpolator>> curves(group);
-  std::vector<Quat> samples(kBlock);
-  for (std::size_t j0 = 0; j0 < jn; j0 += group) {
-    const std::size_t g = std::min(group, jn - j0);
-    for (std::size_t c = 0; c < g; ++c) {
-      curves[c].reset();
-      RotationTrack track;
-      if (!gather_unit_track(t, q, k, jn, j0 + c, in_scalar_first, track)) return false;
-      auto curve = make_interpolator(method, std::move(track));
-      if (!curve) {
-        error = (joints ? "joint " + std::to_string(j0 + c) + ": " : std::string()) + curve.error();
-        return true;
-      }
-      curves[c] = continued ? continue_at_end_velocity(std::move(*curve), t[0], t[k - 1]) : std::move(*curve);
-    }
-    for (std::size_t i0 = 0; i0 < n; i0 += kBlock) {
-      const std::size_t m = std::min(kBlock, n - i0);
-      for (std::size_t c = 0; c < g; ++c) {
-        curves[c]->evaluate(nt + i0, m, samples.data());
-        for (std::size_t i = 0; i < m; ++i) put_quat(samples[i], o + 4 * ((i0 + i) * jn + j0 + c), out_scalar_first);
-      }
-    }
-  }
-  return true;
+  return single ? 1 : static_cast<std::size_t>(q.shape(1));
 }
 
 py::array interpolate(const py::handle& times_in, const py::handle& quats_in, const py::handle& new_times_in,
@@ -127,39 +63,44 @@ py::array interpolate(const py::handle& times_in, const py::handle& quats_in, co
   if (floats) {
     quats = py::reinterpret_borrow<py::array>(quats_in);
     require_quat_shape(quats, "quats");
+    require_key_count(static_cast<double>(quats.size() / 4), 1, "quats");
   } else {
     quats = quat_array(quats_in, in_scalar_first, "quats");
   }
   const auto k = static_cast<std::size_t>(times.shape(0));
   std::size_t joints = 0;
+  bool single = false;
   try {
-    joints = joints_of(quats, k);
+    joints = joints_of(quats, k, single);
     require_continuable(ends, method_of(method));
   } catch (const py::value_error&) {
     refuse_bad_quats(Doubles::ensure(quats), "quats");  // a bad quaternion is named first, whatever else is wrong
     throw;
   }
   const auto n = static_cast<std::size_t>(new_times.size());
+  require_key_count(static_cast<double>(n), joints, "new_times");
   std::vector<py::ssize_t> shape;  // a number gives one sample's shape: (4,) or (J, 4)
   if (new_times.ndim() == 1) shape.push_back(static_cast<py::ssize_t>(n));
-  if (joints) shape.push_back(static_cast<py::ssize_t>(joints));
+  if (!single) shape.push_back(static_cast<py::ssize_t>(joints));
   shape.push_back(4);
   py::array_t<double> out(shape);
-  double* o = out.mutable_data();
-  std::string error;
-  bool keys_unit;
-  const bool continued = ends == Extrapolate::at_end_velocity;
+  const KeyArraysCurve curve{method_of(method).name, ends == Extrapolate::at_end_velocity, scalar_first};
+  Status s = Ok{};
   {
     py::gil_scoped_release release;
-    keys_unit = floats ? interpolate_joints(times.data(), static_cast<const float*>(quats.data()), k, joints,
-                                            new_times.data(), n, method, continued, in_scalar_first, scalar_first, o, error)
-                       : interpolate_joints(times.data(), static_cast<const double*>(quats.data()), k, joints,
-                                            new_times.data(), n, method, continued, in_scalar_first, scalar_first, o, error);
+    s = floats ? interpolate_key_arrays(
+                     KeyArrays<float>{times.data(), static_cast<const float*>(quats.data()), k, joints, in_scalar_first},
+                     new_times.data(), n, curve, out.mutable_data())
+               : interpolate_key_arrays(
+                     KeyArrays<double>{times.data(), static_cast<const double*>(quats.data()), k, joints, in_scalar_first},
+                     new_times.data(), n, curve, out.mutable_data());
   }
-  // A bad quaternion anywhere is named before a joint's error, as when all keys were
-  // made unit before any joint was built.
-  if (!keys_unit || !error.empty()) refuse_bad_quats(Doubles::ensure(quats), "quats");
-  if (!error.empty()) value_error(error);
+  // A bad quaternion anywhere is named (by numpy's index) before a joint's error, as
+  // when all keys were made unit before any joint was built.
+  if (!s) {
+    refuse_bad_quats(Doubles::ensure(quats), "quats");
+    value_error(s.error());
+  }
   return out;
 }
 
@@ -174,7 +115,9 @@ class PyInterpolator {
     bool in_scalar_first = scalar_first;  // a scipy Rotation comes scalar-last
     const Doubles quats = unit_quats(quats_in, in_scalar_first, "quats");
     const auto k = static_cast<std::size_t>(times.shape(0));
-    if (joints_of(quats, k) != 0) value_error("make_interpolator takes one track: quats of shape (K, 4)");
+    bool single = false;
+    joints_of(quats, k, single);
+    if (!single) value_error("make_interpolator takes one track: quats of shape (K, 4)");
     track_ = track_of(times.data(), quats.data(), k, 1, 0, in_scalar_first);
     curve_ = checked(make_interpolator(method_, track_));
     if (extrapolate_ == Extrapolate::at_end_velocity)
@@ -261,9 +204,13 @@ py::array angle_between(const py::handle& a_in, const py::handle& b_in, bool sca
 // q = swing · twist about `axis` (3,) in the moving frame, for (…, 4) arrays.
 py::tuple swing_twist_split(const py::handle& q_in, const py::handle& axis_in, bool scalar_first) {
   bool q_first = scalar_first;
-  const Doubles q = unit_quats(q_in, q_first, "q"), axis = Doubles::ensure(axis_in);
-  if (!axis || axis.ndim() != 1 || axis.shape(0) != 3) value_error("swing_twist: axis must have shape (3,)");
-  const Vec3 ax(axis.at(0), axis.at(1), axis.at(2));
+  const Doubles q = unit_quats(q_in, q_first, "q"), axis = real_array(axis_in, "axis");
+  if (axis.ndim() != 1 || axis.shape(0) != 3) value_error("swing_twist: axis must have shape (3,)");
+  Vec3 ax(axis.at(0), axis.at(1), axis.at(2));
+  if (!ax.allFinite() || ax.cwiseAbs().maxCoeff() == 0.0)  // a twist needs a direction
+    value_error("swing_twist: axis must be a finite non-zero vector, got " +
+                py::str(py::reinterpret_borrow<py::object>(axis_in)).cast<std::string>());
+  ax /= ax.cwiseAbs().maxCoeff();  // no underflow in its norm (an axis of 1e-200)
   py::array_t<double> swing(shape_of(q)), twist(shape_of(q));
   const auto n = static_cast<std::size_t>(q.size() / 4);
   for (std::size_t i = 0; i < n; ++i) {

@@ -50,8 +50,7 @@ py::dict reduce(const Clip& clip, const std::string& method, const py::object& t
                                                  : checked(parse_length(py::str(shell_distance).cast<std::string>()));
   if (budget.deg == 0.0 && budget.mm == 0.0) budget.mm = kDefaultReduceToleranceMm;
   const double deg = budget.deg, mm = budget.mm;
-  if (unit_in && (!std::isfinite(*unit_in) || !(*unit_in > 0.0))) value_error("metres_per_unit must be > 0");
-  const double unit = unit_in ? *unit_in : metres_per_unit(clip);
+  const double unit = unit_in ? metres_per_unit_arg(py::float_(*unit_in), "metres_per_unit") : metres_per_unit(clip);
   const auto units = [unit](double millimetres) { return millimetres / 1000.0 / unit; };
   ReduceOptions opt;
   opt.method = method_name;

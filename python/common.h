@@ -9,12 +9,15 @@
 #pragma once
 
 #include "rotinterp/clip/clip.h"
+#include "rotinterp/clip/key_limit.h"
+#include "rotinterp/clip/units.h"
 #include "rotinterp/io/fbx/fbx_source.h"
 #include "rotinterp/io/source_motion.h"
 #include "rotinterp/core/result.h"
 #include "rotinterp/core/rotation.h"
 #include "rotinterp/interp/continued.h"
 #include "rotinterp/interp/interpolator.h"
+#include "rotinterp/interp/key_arrays.h"
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -22,6 +25,7 @@
 #include <pybind11/stl/filesystem.h>
 
 #include <cmath>
+#include <cstring>
 #include <cstddef>
 #include <string>
 #include <utility>
@@ -42,17 +46,6 @@ T checked(Result<T> r) {
   return std::move(*r);
 }
 
-inline Quat quat_at(const double* p, bool scalar_first) {
-  return scalar_first ? Quat(p[0], p[1], p[2], p[3]) : Quat(p[3], p[0], p[1], p[2]);
-}
-inline void put_quat(const Quat& q, double* p, bool scalar_first) {
-  if (scalar_first) {
-    p[0] = q.w(), p[1] = q.x(), p[2] = q.y(), p[3] = q.z();
-  } else {
-    p[0] = q.x(), p[1] = q.y(), p[2] = q.z(), p[3] = q.w();
-  }
-}
-
 inline std::vector<py::ssize_t> shape_of(const py::array& a) { return {a.shape(), a.shape() + a.ndim()}; }
 
 inline std::string shape_text(const py::array& a) {
@@ -67,10 +60,71 @@ inline void require_finite(const Doubles& a, const char* what) {
     if (!std::isfinite(p[i])) value_error(std::string(what) + " has a non-finite value at flat index " + std::to_string(i));
 }
 
+// `h` as an array, not yet converted, if its dtype is one of numpy's `kinds`: real
+// numbers ("iuf": integers and floats) by default. Any other dtype (complex, bool, str,
+// bytes, datetime64, timedelta64, object) raises TypeError: a cast to float64 would
+// take it in silence, dropping an imaginary part or a unit.
+inline py::array typed_array(const py::handle& h, const char* what, const char* kinds = "iuf") {
+  py::array a = py::array::ensure(h);
+  if (!a) value_error(std::string(what) + " must be an array of numbers");
+  if (!std::strchr(kinds, a.dtype().kind()))
+    throw py::type_error(std::string(what) + " must be " +
+                         (std::strcmp(kinds, "iu") == 0 ? "integers" : "real numbers (integers or floats)") +
+                         ", got dtype " + py::str(a.dtype()).cast<std::string>());
+  return a;
+}
+
+// Refuses a call that would make more than kMaxKeys keys (frames × joints) before it
+// allocates them: "<what> would give 400000000 frames × 1 joint, more than ... keys".
+inline void require_key_count(double frames, std::size_t joints, const std::string& what) {
+  if (too_many_keys(frames, joints)) value_error(what + " would give " + too_many_keys_text(frames, joints));
+}
+
+// A real array of at most kMaxKeys values per joint, as float64 (converted only when
+// it is not C-contiguous float64; the limit is checked before the conversion).
+inline Doubles real_array(const py::handle& h, const char* what) {
+  const py::array a = typed_array(h, what);
+  require_key_count(static_cast<double>(a.size()), 1, what);
+  return Doubles::ensure(a);
+}
+
+// An integer array as int64 (kinds "iu"; a float such as 0.7 is refused, never
+// truncated), refused where a uint64 value passes int64, as a wrap would hide it.
+using Integers = py::array_t<long long, py::array::c_style | py::array::forcecast>;
+inline Integers integer_array(const py::handle& h, const char* what) {
+  const py::array a = typed_array(h, what, "iu");
+  require_key_count(static_cast<double>(a.size()), 1, what);
+  if (a.dtype().kind() == 'u' && a.size() > 0 && a.attr("max")().cast<unsigned long long>() > (1ULL << 63) - 1)
+    value_error(std::string(what) + " has a value past 2**63 - 1: " + py::str(a.attr("max")()).cast<std::string>());
+  return Integers::ensure(a);
+}
+
+// A whole number given as a Python or numpy integer, at least `min`: a float (2.5) or
+// a bool is refused (TypeError), never truncated, and one past int64 is too large.
+inline long long whole_number(const py::handle& h, const std::string& what, long long min) {
+  const std::string text = py::repr(h).cast<std::string>();
+  if (py::isinstance<py::bool_>(h) || !PyIndex_Check(h.ptr()))
+    throw py::type_error(what + " must be a whole number, got " + text);
+  const auto index = py::reinterpret_steal<py::object>(PyNumber_Index(h.ptr()));
+  if (!index) throw py::error_already_set();
+  int overflow = 0;
+  const long long v = PyLong_AsLongLongAndOverflow(index.ptr(), &overflow);
+  if (overflow || v < min) value_error(what + " must be a whole number >= " + std::to_string(min) + ", got " + text);
+  return v;
+}
+
+// Metres per unit given as a number (or a string, as --unit takes it: "cm"), through
+// --unit's parser: a positive finite number, else its message after "<what>: ".
+inline double metres_per_unit_arg(const py::handle& h, const char* what) {
+  const Result<double> m = parse_unit(py::str(h).cast<std::string>());
+  if (!m) value_error(std::string(what) + ": " + m.error());
+  return *m;
+}
+
 // A 1-D array of times.
 inline Doubles times_array(const py::handle& h, const char* what) {
-  Doubles t = Doubles::ensure(h);
-  if (!t || t.ndim() != 1) value_error(std::string(what) + " must be a 1-D array of seconds");
+  Doubles t = real_array(h, what);
+  if (t.ndim() != 1) value_error(std::string(what) + " must be a 1-D array of seconds");
   require_finite(t, what);
   return t;
 }
@@ -96,8 +150,8 @@ inline void require_continuable(Extrapolate ends, const MethodInfo& method) {
 }
 inline Doubles sample_times(const py::handle& h, const char* what, Extrapolate extrapolate, double first,
                             double last) {
-  Doubles t = Doubles::ensure(h);
-  if (!t || t.ndim() > 1) value_error(std::string(what) + " must be a number or a 1-D array of seconds");
+  Doubles t = real_array(h, what);
+  if (t.ndim() > 1) value_error(std::string(what) + " must be a number or a 1-D array of seconds");
   require_finite(t, what);
   if (extrapolate == Extrapolate::raise)
     for (py::ssize_t i = 0; i < t.size(); ++i)
@@ -136,7 +190,7 @@ inline std::string quat_index_text(const char* what, const py::array& a, py::ssi
 // finite non-zero quaternion normalized; or any object with as_quat() (a scipy
 // Rotation), whose scalar-last layout is used whatever scalar_first says. The
 // library itself keeps its unit-norm contract (RotationTrack rule 3): this is the
-// boundary where rounded data becomes unit (unit_quat, below).
+// boundary where rounded data becomes unit (unit_quat, interp/key_arrays.h).
 
 // Refuses an array whose last axis is not 4, naming `what` and its shape.
 inline void require_quat_shape(const py::array& raw, const char* what) {
@@ -148,29 +202,13 @@ inline void require_quat_shape(const py::array& raw, const char* what) {
 // quat_array: the array as float64 (converted only when it is not C-contiguous
 // float64), its last axis 4; scalar_first is set to the layout of its data.
 inline Doubles quat_array(const py::handle& h, bool& scalar_first, const char* what) {
-  Doubles raw;
-  if (py::hasattr(h, "as_quat")) {
-    raw = Doubles::ensure(h.attr("as_quat")());
-    scalar_first = false;
-  } else {
-    raw = Doubles::ensure(h);
-  }
-  if (!raw) value_error(std::string(what) + " must be quaternions: a numeric array of shape (..., 4) or a scipy Rotation");
-  require_quat_shape(raw, what);
+  const bool rotation = py::hasattr(h, "as_quat");
+  const py::array a = typed_array(rotation ? h.attr("as_quat")() : py::reinterpret_borrow<py::object>(h), what);
+  if (rotation) scalar_first = false;
+  require_quat_shape(a, what);
+  require_key_count(static_cast<double>(a.size() / 4), 1, what);
+  const Doubles raw = Doubles::ensure(a);
   return raw;
-}
-
-// The 4 components at p made unit into `unit`, in the same layout; false for a zero,
-// NaN or infinite quaternion. Scaled by the largest component first: no overflow or
-// underflow in the norm for finite components of any size (1e300 or 1e-320).
-inline bool unit_quat(const double* p, Eigen::Vector4d& unit) {
-  const Eigen::Map<const Eigen::Vector4d> q(p);
-  if (!q.allFinite()) return false;
-  const double largest = q.cwiseAbs().maxCoeff();
-  if (largest == 0.0) return false;
-  const Eigen::Vector4d scaled = q / largest;
-  unit = scaled / scaled.norm();
-  return true;
 }
 
 // Raises the error for the first quaternion of `raw` that unit_quat refuses, by its

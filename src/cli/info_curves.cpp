@@ -3,7 +3,7 @@
 #include "info_curves.h"
 
 #include "common.h"
-#include "rotinterp/clip/output_limit.h"
+#include "rotinterp/clip/key_limit.h"
 #include "rotinterp/io/fbx/fbx_curve_eval.h"
 
 #include <fmt/core.h>
@@ -12,13 +12,14 @@ namespace rotinterp::cli {
 
 int print_info_curves(const std::string& path, const ClipFileInfo& info, double sample_hz, bool json) {
   if (!info.curves) return fail(path + ": --curves reads FBX files only (this is a '" + info.format + "' file)");
-  // The samples' size, checked before they are made (clip/output_limit.h).
+  // The samples' size, checked before they are made (clip/key_limit.h).
   if (const FbxTake* take = selected_take(info); take && sample_hz > 0.0) {
-    const double total = fbx_sample_count(sample_hz, fbx_take_span(*take).stop) * static_cast<double>(take->curves.size());
-    if (total > static_cast<double>(kMaxOutputKeys))
+    const double samples = fbx_sample_count(sample_hz, fbx_take_span(*take).stop);
+    const double total = samples * static_cast<double>(take->curves.size());
+    if (too_many_keys(samples, take->curves.size()))
       return fail(fmt::format("{}: --sample {:g} would give {:.0f} samples over {} curve(s), more than {}; give a lower "
                               "--sample",
-                              path, sample_hz, total, take->curves.size(), kMaxOutputKeys));
+                              path, sample_hz, total, take->curves.size(), kMaxKeys));
   }
   if (json) {
     fmt::print("{}\n", curves_info_json(info, sample_hz));

@@ -2,7 +2,7 @@
 #include "rotinterp/clip/resample.h"
 
 #include "rotinterp/clip/frames.h"
-#include "rotinterp/clip/output_limit.h"
+#include "rotinterp/clip/key_limit.h"
 #include "rotinterp/core/work_queue.h"
 #include "rotinterp/interp/interpolator.h"
 
@@ -187,8 +187,8 @@ Result<Clip> resample(const Clip& in, Clip* consumable, const ResampleOptions& o
   }
 
   auto too_many = [n](std::size_t frames) {
-    return make_error("resampling would give " + std::to_string(frames) + " frames × " + std::to_string(n) +
-                      " joints, more than " + std::to_string(kMaxOutputKeys) + " keys; give a lower --fps or a --range");
+    return make_error("resampling would give " + too_many_keys_text(static_cast<double>(frames), n) +
+                      "; give a lower --fps or a --range");
   };
   Plan plan;
   Clip out = in.without_tracks();
@@ -200,7 +200,7 @@ Result<Clip> resample(const Clip& in, Clip* consumable, const ResampleOptions& o
     const auto i0 = static_cast<std::size_t>(std::max(0.0, std::ceil(fa - 1e-6)));
     const auto i1 = std::min(grid->size() - 1, static_cast<std::size_t>(std::floor(fb + 1e-6)));
     if (i1 < i0) return make_error("range " + seconds_text(a) + ":" + seconds_text(b) + " s holds no frame");
-    if (i1 - i0 + 1 > kMaxOutputKeys / n) return too_many(i1 - i0 + 1);
+    if (too_many_keys(static_cast<double>(i1 - i0 + 1), n)) return too_many(i1 - i0 + 1);
     plan.keep_every = true;
     for (std::size_t i = i0; i <= i1; ++i) {
       plan.eval_times.push_back(grid->exact_time(i));
@@ -216,7 +216,7 @@ Result<Clip> resample(const Clip& in, Clip* consumable, const ResampleOptions& o
     g.end = start + b;
     g.rate = rate;
     g.count = (!opt.range && grid) ? sample_count(grid->size(), *grid->rate, rate) : sample_count(b - a, rate);
-    if (g.count > kMaxOutputKeys / n) return too_many(g.count);
+    if (too_many_keys(static_cast<double>(g.count), n)) return too_many(g.count);
     plan.eval_times = g.times();
     if (opt.fps) {
       TimeGrid o = g;

@@ -139,8 +139,10 @@ Result<ResampledFile> resample_input(FileRun& run, const ResampleArgs& a, const 
 
 namespace {
 
-WriteOptions resample_write_options(const ResampleArgs& a, const ResampleOptions& opt) {
+WriteOptions resample_write_options(const ResampleArgs& a, const ResampleOptions& opt, FileRun& run) {
   WriteOptions write_options;
+  write_options.source = run.input;
+  write_options.on_kept = [&run](const std::string& kept) { run.kept = kept; };
   write_options.bvh_order = a.bvh_order;
   write_options.fbx_ascii = a.fbx_ascii;
   write_options.on_warning = warn;
@@ -168,7 +170,7 @@ Status write_resampled(FileRun& run, const ResampledFile& done, const ResampleAr
       return Ok{};
     });
   } else {
-    written = write_clip(*out, run.output, resample_write_options(a, opt));
+    written = write_clip(*out, run.output, resample_write_options(a, opt, run));
   }
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - run.started).count();
   return written;
@@ -209,6 +211,7 @@ void print_run(const FileRun& run, const std::string& input, const std::string& 
              run.frames, run.output_frames, how, methods, translation_interp_name(opt.translation), run.seconds,
              describe_unit(run.unit), a.out_unit_m ? ", written in " + unit_name(*a.out_unit_m) : std::string());
   if (!run.cycle.empty()) fmt::print("  {}\n", run.cycle);
+  if (!run.kept.empty()) fmt::print("  {}\n", run.kept);
 }
 
 // Stage names on the progress line (reading and writing long clips take seconds).
@@ -280,7 +283,7 @@ int run_takes(const ResampleArgs& a, ResampleOptions opt) {
     stage("writing " + a.output);
     std::vector<Clip> clips;
     for (ResampledFile& d : done) clips.push_back(std::move(d.clip));
-    written = write_clips(clips, a.output, resample_write_options(a, opt));
+    written = write_clips(clips, a.output, resample_write_options(a, opt, runs.front()));
   }
   end_progress(a.quiet);
   if (!written) return fail(written.error());

@@ -53,6 +53,7 @@ struct FileRun {
   std::size_t replayed = 0;  // --method source: joints evaluated from the file's own motion
   std::string replays;       // … which is (FileSource::replays): "the file's curves", …
   std::size_t copied_curves = 0;  // --method source to FBX without --fps: joints whose curves were written back
+  std::string kept;               // FBX character to FBX: what passed through (io/fbx/fbx_character.h)
   std::chrono::steady_clock::time_point started;
 };
 

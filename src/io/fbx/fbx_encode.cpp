@@ -5,6 +5,7 @@
 
 #include <zlib.h>
 
+#include <cctype>
 #include <charconv>
 #include <cstring>
 #include <limits>
@@ -231,8 +232,10 @@ FbxEncoder& FbxEncoder::property(const FbxProperty& p) {
     case 'C':
     case 'Y':
       before_prop(p.type);
-      if (format_ == Format::ascii) out_ += std::to_string(p.integer);
-      else if (p.type == 'C') out_.push_back(static_cast<char>(p.integer != 0));
+      // A bool byte as stored: 0/1, or Maya's 'Y'/'T' (Shading), which ASCII spells as the letter.
+      if (format_ == Format::ascii && p.type == 'C' && std::isupper(static_cast<int>(p.integer))) out_.push_back(static_cast<char>(p.integer));
+      else if (format_ == Format::ascii) out_ += std::to_string(p.integer);
+      else if (p.type == 'C') out_.push_back(static_cast<char>(p.integer));
       else put_le(out_, static_cast<std::uint16_t>(p.integer));
       return *this;
     case 'I': return i32(static_cast<std::int32_t>(p.integer));

@@ -1,11 +1,10 @@
 #include "blender_character.h"
 
+#include "client_fixture.h"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <cstdlib>
-#include <fstream>
-#include <stdexcept>
 
 namespace rotinterp::test {
 
@@ -17,17 +16,9 @@ Vec3 point(const nlohmann::json& p) { return {p[0].get<double>(), p[1].get<doubl
 
 std::vector<BlenderCharacter> blender_characters(const std::vector<std::pair<std::string, std::string>>& pairs,
                                                  double step, const std::filesystem::path& dir) {
-  const auto json = dir / "character.json", log = dir / "character.log";
-  std::string cmd = "blender -b --factory-startup --python " + std::string(ROTINTERP_SOURCE_DIR) +
-                    "/tests/clients/blender_character.py -- " + json.string() + " " + std::to_string(step);
   std::vector<std::string> files;
   for (const auto& [source, ours] : pairs) files.push_back(source), files.push_back(ours);
-  for (const std::string& f : files) cmd += " '" + f + "'";
-  cmd += " >" + log.string() + " 2>&1";
-  if (std::system(cmd.c_str()) != 0)
-    throw std::runtime_error("Blender failed (is it installed? scripts/install-deps.sh adds it):\n" + read_text(log));
-  std::ifstream in(json);
-  const nlohmann::json all = nlohmann::json::parse(in);
+  const nlohmann::json all = run_blender("blender_character.py", " " + std::to_string(step), files, dir, "character");
   std::vector<BlenderCharacter> out;
   for (const std::string& f : files) {
     const nlohmann::json& r = all.at(f);

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 #include <string>
 
@@ -84,6 +85,50 @@ TEST(FbxCharacter, NonAnimationNodesComeBackEqualAndOnlyTheAnimationIsReplaced) 
     const Result<FbxAnimation> animation = read_fbx_animation(*out, "out.fbx");
     ASSERT_TRUE(animation) << animation.error();
     EXPECT_EQ(animation->takes.size(), 1u) << name;
+  }
+}
+
+// An inconsistent source: a connection to an object that is not there, and a
+// cluster whose bone link is gone. Both are dropped, and the summary says so.
+TEST(FbxCharacter, ConnectionsToMissingObjectsAndClustersWithoutABoneAreDroppedAndSaid) {
+  const std::filesystem::path path = test::kData / "fbx" / "digitalrune_Marine_Run.fbx";
+  const Result<Clip> clip = read_clip(path);
+  ASSERT_TRUE(clip) << clip.error();
+  Result<FbxCharacter> source = read_fbx_character(path);
+  ASSERT_TRUE(source) << source.error();
+  std::set<std::int64_t> clusters, models;
+  for (const FbxNode& o : source->doc.node("Objects")->children) {
+    if (o.name == "Deformer" && o.properties.at(2).text == "Cluster") clusters.insert(o.properties[0].integer);
+    if (o.name == "Model") models.insert(o.properties[0].integer);
+  }
+  auto& nodes = source->doc.nodes;
+  auto& links = std::find_if(nodes.begin(), nodes.end(), [](const FbxNode& n) { return n.name == "Connections"; })->children;
+  // The first model → cluster link goes; a link to id 42 (no object) comes.
+  const auto bone_link = std::find_if(links.begin(), links.end(), [&](const FbxNode& c) {
+    return models.count(c.properties.at(1).integer) && clusters.count(c.properties.at(2).integer);
+  });
+  ASSERT_NE(bone_link, links.end());
+  const std::int64_t orphan = bone_link->properties[2].integer;
+  links.erase(bone_link);
+  FbxNode missing = links.front();
+  missing.properties[2].integer = 42;
+  links.push_back(missing);
+
+  const Result<FbxCharacterTake> take = fbx_character_take(*clip, *source, &source->animation.takes.front());
+  ASSERT_TRUE(take) << take.error();
+  const Result<FbxCharacterFile> file = encode_fbx_character(*source, {*take}, std::nullopt, FbxEncoding::binary);
+  ASSERT_TRUE(file) << file.error();
+  EXPECT_EQ(file->kept.dropped_connections, 1u);
+  EXPECT_EQ(file->kept.dropped_clusters, 1u);
+  EXPECT_NE(file->kept.text().find("1 connection to missing objects dropped"), std::string::npos) << file->kept.text();
+  EXPECT_NE(file->kept.text().find("1 cluster linked to no bone dropped"), std::string::npos) << file->kept.text();
+  const Result<FbxDocument> out = parse_fbx_nodes(file->bytes, "out.fbx");
+  ASSERT_TRUE(out) << out.error();
+  for (const FbxNode& o : out->node("Objects")->children) EXPECT_NE(o.properties.at(0).integer, orphan);
+  for (const FbxNode& c : out->node("Connections")->children) {
+    EXPECT_NE(c.properties.at(1).integer, orphan);
+    EXPECT_NE(c.properties.at(2).integer, orphan);
+    EXPECT_NE(c.properties.at(2).integer, 42);
   }
 }
 

@@ -98,12 +98,16 @@ std::optional<Status> write_character(const std::vector<Clip>& takes, const std:
 }
 
 void warn_meshes_lost(const Clip& clip, const std::string& label, const WriteOptions& options) {
-  if (clip.source_meshes > 0 && options.on_warning)
-    options.on_warning(label + ": the source's " + std::to_string(clip.source_meshes) +
-                       " mesh(es) and their skins are not written, only the skeleton and its motion");
+  if (clip.source_meshes > 0 && options.on_warning) options.on_warning(meshes_not_written(clip, label));
 }
 
 }  // namespace
+
+std::string meshes_not_written(const Clip& clip, const std::string& label) {
+  if (clip.source_meshes == 0) return "";
+  return label + ": the source's " + std::to_string(clip.source_meshes) +
+         " mesh(es) and their skins are not written, only the skeleton and its motion";
+}
 
 bool can_write_format(const std::filesystem::path& path) {
   const FormatInfo* format = format_of(path);

@@ -127,6 +127,8 @@ Status write_reduced_fbx(const std::string& path, const Clip& source, const Meth
   for (const ReducedJoint& j : run.result.joints) o.budgets.push_back({j.budget.rotation_deg, j.budget.shell, j.budget.translation});
   auto fbx = encode_reduced_fbx(run.result.reduced, source, o);
   if (!fbx) return make_error(path + ": " + fbx.error());
+  // The character is kept by resample only, so far (io/fbx/fbx_character.h).
+  if (const std::string lost = meshes_not_written(source, path); !lost.empty()) warn(lost);
   const double mm = source.unit.metres_per_unit * 1000.0;
   if (!fbx->within_budget)
     return make_error(fmt::format("{}: the FBX Euler curves miss the budget even keyed with the source's values "

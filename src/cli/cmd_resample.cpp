@@ -105,6 +105,7 @@ void print_run(const FileRun& run, const std::string& input, const std::string& 
              run.frames, run.output_frames, how, methods, translation_interp_name(opt.translation), run.seconds,
              describe_unit(run.unit), a.out_unit_m ? ", written in " + unit_name(*a.out_unit_m) : std::string());
   if (!run.cycle.empty()) fmt::print("  {}\n", run.cycle);
+  if (!run.kept.empty()) fmt::print("  {}\n", run.kept);
 }
 
 // Stage names on the progress line (reading and writing long clips take seconds).
@@ -176,7 +177,7 @@ int run_takes(const ResampleArgs& a, ResampleOptions opt) {
     stage("writing " + a.output);
     std::vector<Clip> clips;
     for (ResampledFile& d : done) clips.push_back(std::move(d.clip));
-    written = write_clips(clips, a.output, resample_write_options(a, opt));
+    written = write_clips(clips, a.output, resample_write_options(a, opt, runs.front()));
   }
   end_progress(a.quiet);
   if (!written) return fail(written.error());

@@ -54,6 +54,7 @@ struct FileRun {
   std::size_t replayed = 0;  // --method source: joints evaluated from the file's own motion
   std::string replays;       // … which is (FileSource::replays): "the file's curves", …
   std::size_t copied_curves = 0;  // --method source to FBX without --fps: joints whose curves were written back
+  std::string kept;               // FBX character to FBX: what passed through (io/fbx/fbx_character.h)
   std::chrono::steady_clock::time_point started;
 };
 
@@ -68,7 +69,7 @@ struct ResampledFile {
 Result<ResampledFile> resample_input(FileRun& run, const ResampleArgs& a, const ResampleOptions& opt,
                                      const std::function<void(const std::string&)>& stage);
 // How resampled clips are written: --bvh-order, --fbx-ascii, warnings, threads.
-WriteOptions resample_write_options(const ResampleArgs& a, const ResampleOptions& opt);
+WriteOptions resample_write_options(const ResampleArgs& a, const ResampleOptions& opt, FileRun& run);
 // Writes it to run.output (the source's own FBX curves where they go back as stored).
 Status write_resampled(FileRun& run, const ResampledFile& done, const ResampleArgs& a, const ResampleOptions& opt,
                        const std::function<void(const std::string&)>& stage);

@@ -74,8 +74,10 @@ Result<ResampledFile> resample_input(FileRun& run, const ResampleArgs& a, const 
   return done;
 }
 
-WriteOptions resample_write_options(const ResampleArgs& a, const ResampleOptions& opt) {
+WriteOptions resample_write_options(const ResampleArgs& a, const ResampleOptions& opt, FileRun& run) {
   WriteOptions write_options;
+  write_options.source = run.input;
+  write_options.on_kept = [&run](const std::string& kept) { run.kept = kept; };
   write_options.bvh_order = a.bvh_order;
   write_options.fbx_ascii = a.fbx_ascii;
   write_options.on_warning = warn;
@@ -101,7 +103,7 @@ Status write_resampled(FileRun& run, const ResampledFile& done, const ResampleAr
       return Ok{};
     });
   } else {
-    written = write_clip(*out, run.output, resample_write_options(a, opt));
+    written = write_clip(*out, run.output, resample_write_options(a, opt, run));
   }
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - run.started).count();
   return written;

@@ -6,6 +6,7 @@
 #include "rotinterp/io/files/formats.h"
 #include "rotinterp/io/bvh/bvh.h"
 #include "rotinterp/io/import/import.h"
+#include "rotinterp/io/fbx/fbx_character.h"
 #include "rotinterp/io/fbx/fbx_write.h"
 #include "rotinterp/io/gltf/gltf_write.h"
 #include "rotinterp/io/files/key_times.h"
@@ -13,6 +14,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <optional>
 #include <set>
 
 namespace rotinterp {
@@ -77,7 +79,35 @@ std::vector<std::string> unique_take_names(const std::vector<Clip>& takes) {
   return names;
 }
 
+// FBX from an FBX character: the source's tree with our animation (io/fbx/fbx_character.h);
+// nullopt where it is no such source or the character cannot be kept (a warning says why).
+std::optional<Status> write_character(const std::vector<Clip>& takes, const std::filesystem::path& path,
+                                      const WriteOptions& options) {
+  const FormatInfo* source = options.source.empty() ? nullptr : format_of(options.source);
+  if (takes.front().source_meshes == 0 || !source || source->id != FormatId::fbx) return std::nullopt;
+  auto file = fbx_character_file(takes, options.source, options.fbx_ascii);
+  if (!file) {
+    if (options.on_warning) options.on_warning(path.string() + ": the character is not kept: " + file.error());
+    return std::nullopt;
+  }
+  if (options.on_kept) options.on_kept(path.string() + ": " + file->kept.text());
+  return write_file_atomically(path, [&](std::ostream& out) -> Status {
+    out.write(file->bytes.data(), static_cast<std::streamsize>(file->bytes.size()));
+    return Ok{};
+  });
+}
+
+void warn_meshes_lost(const Clip& clip, const std::string& label, const WriteOptions& options) {
+  if (clip.source_meshes > 0 && options.on_warning) options.on_warning(meshes_not_written(clip, label));
+}
+
 }  // namespace
+
+std::string meshes_not_written(const Clip& clip, const std::string& label) {
+  if (clip.source_meshes == 0) return "";
+  return label + ": the source's " + std::to_string(clip.source_meshes) +
+         " mesh(es) and their skins are not written, only the skeleton and its motion";
+}
 
 bool can_write_format(const std::filesystem::path& path) {
   const FormatInfo* format = format_of(path);
@@ -87,11 +117,11 @@ bool can_write_format(const std::filesystem::path& path) {
 Status write_clip(const Clip& clip, const std::filesystem::path& path, const WriteOptions& options) {
   const std::string label = path.string();
   const std::string ext = lower_extension(path);
-  if (clip.source_meshes > 0 && options.on_warning && can_write_format(path))
-    options.on_warning(label + ": the source's " + std::to_string(clip.source_meshes) +
-                       " mesh(es) and their skins are not written, only the skeleton and its motion");
   const FormatInfo* known = format_of(path);
   const FormatId id = known && known->writes ? known->id : FormatId::dae;  // dae: assimp's exporters below
+  if (id == FormatId::fbx)
+    if (std::optional<Status> written = write_character({clip}, path, options)) return *written;
+  if (can_write_format(path)) warn_meshes_lost(clip, label, options);
   if (id == FormatId::bvh) {
     return write_file_atomically(path, [&](std::ostream& out) { return write_bvh(clip, out, options, label); });
   }
@@ -140,10 +170,13 @@ Status write_clips(const std::vector<Clip>& takes, const std::filesystem::path& 
     named.push_back(from_time_zero(takes[i]));
     named.back().name = names[i];
   }
+  if (fbx) {  // on the source's own time axis, not from t = 0
+    std::vector<Clip> renamed = takes;
+    for (std::size_t i = 0; i < takes.size(); ++i) renamed[i].name = names[i];
+    if (std::optional<Status> written = write_character(renamed, path, options)) return *written;
+  }
   const auto with_meshes = std::find_if(takes.begin(), takes.end(), [](const Clip& c) { return c.source_meshes > 0; });
-  if (with_meshes != takes.end() && options.on_warning)
-    options.on_warning(label + ": the source's " + std::to_string(with_meshes->source_meshes) +
-                       " mesh(es) and their skins are not written, only the skeleton and its motion");
+  if (with_meshes != takes.end()) warn_meshes_lost(*with_meshes, label, options);
   if (!fbx) {  // glTF or GLB
     std::vector<const Clip*> pointers;
     for (const Clip& c : named) pointers.push_back(&c);

@@ -38,16 +38,21 @@ BlenderImport playing(const BlenderImport& b, const std::string& action) {
   return out;
 }
 
-std::vector<BlenderImport> blender_imports(const std::vector<std::string>& files, const std::filesystem::path& dir) {
-  const auto json = dir / "blender.json", log = dir / "blender.log";
-  std::string cmd = "blender -b --factory-startup --python " + std::string(ROTINTERP_SOURCE_DIR) +
-                    "/tests/clients/blender_dump.py -- " + json.string();
+nlohmann::json run_blender(const std::string& script, const std::string& args, const std::vector<std::string>& files,
+                           const std::filesystem::path& dir, const std::string& stem) {
+  const auto json = dir / (stem + ".json"), log = dir / (stem + ".log");
+  std::string cmd = "blender -b --factory-startup --python " + std::string(ROTINTERP_SOURCE_DIR) + "/tests/clients/" +
+                    script + " -- " + json.string() + args;
   for (const std::string& f : files) cmd += " '" + f + "'";
   cmd += " >" + log.string() + " 2>&1";
   if (std::system(cmd.c_str()) != 0)
     throw std::runtime_error("Blender failed (is it installed? scripts/install-deps.sh adds it):\n" + read_text(log));
   std::ifstream in(json);
-  const nlohmann::json all = nlohmann::json::parse(in);
+  return nlohmann::json::parse(in);
+}
+
+std::vector<BlenderImport> blender_imports(const std::vector<std::string>& files, const std::filesystem::path& dir) {
+  const nlohmann::json all = run_blender("blender_dump.py", "", files, dir, "blender");
   std::vector<BlenderImport> out;
   for (const std::string& f : files) {
     const nlohmann::json& r = all.at(f);

@@ -40,6 +40,11 @@ struct BlenderImport {
 // it has no such action).
 BlenderImport playing(const BlenderImport& b, const std::string& action);
 
+// Runs Blender once with tests/clients/`script` on `args` then `files` (quoted),
+// writing DIR/STEM.json (the script's first argument) and DIR/STEM.log; returns the JSON.
+nlohmann::json run_blender(const std::string& script, const std::string& args, const std::vector<std::string>& files,
+                           const std::filesystem::path& dir, const std::string& stem);
+
 // Runs Blender once on `files` (a BVH may end in "@SCALE", its global_scale;
 // default 0.01) and returns each import by its entry in `files`.
 std::vector<BlenderImport> blender_imports(const std::vector<std::string>& files, const std::filesystem::path& dir);

@@ -37,6 +37,10 @@ Status write_clip(const Clip& clip, const std::filesystem::path& path, const Wri
 // write_clip of one clip writes the same bytes as before (take name "clip" if empty).
 Status write_clips(const std::vector<Clip>& takes, const std::filesystem::path& path, const WriteOptions& options = {});
 
+// The warning that `clip`'s source meshes (and skins) are not written to `label`, one
+// line; "" where the source had none.
+std::string meshes_not_written(const Clip& clip, const std::string& label);
+
 // Whether write_clip writes the format named by `path`'s extension (any case), so
 // that callers can reject an output name before doing the work.
 bool can_write_format(const std::filesystem::path& path);

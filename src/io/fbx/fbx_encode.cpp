@@ -5,6 +5,7 @@
 
 #include <zlib.h>
 
+#include <cctype>
 #include <charconv>
 #include <cstring>
 #include <limits>
@@ -224,6 +225,46 @@ void FbxEncoder::array(char type, const std::vector<T>& a) {
   put_le(out_, encoding);
   put_le(out_, static_cast<std::uint32_t>(bytes.size()));
   out_ += bytes;
+}
+
+FbxEncoder& FbxEncoder::property(const FbxProperty& p) {
+  switch (p.type) {
+    case 'C':
+    case 'Y':
+      before_prop(p.type);
+      // A bool byte as stored: 0/1, or Maya's 'Y'/'T' (Shading), which ASCII spells as the letter.
+      if (format_ == Format::ascii && p.type == 'C' && std::isupper(static_cast<int>(p.integer))) out_.push_back(static_cast<char>(p.integer));
+      else if (format_ == Format::ascii) out_ += std::to_string(p.integer);
+      else if (p.type == 'C') out_.push_back(static_cast<char>(p.integer));
+      else put_le(out_, static_cast<std::uint16_t>(p.integer));
+      return *this;
+    case 'I': return i32(static_cast<std::int32_t>(p.integer));
+    case 'L': return i64(p.integer);
+    case 'F':
+      before_prop('F');
+      if (format_ == Format::ascii) put_number_text(out_, static_cast<float>(p.number));
+      else put_le(out_, bits(static_cast<float>(p.number)));
+      return *this;
+    case 'D': return f64(p.number);
+    case 'S': return str(p.text);
+    case 'R': return raw(p.text);
+    case 'b': {
+      std::vector<std::int8_t> flags(p.integers.begin(), p.integers.end());
+      array('b', flags);
+      return *this;
+    }
+    case 'i': return i32_array(std::vector<std::int32_t>(p.integers.begin(), p.integers.end()));
+    case 'l': return i64_array(p.integers);
+    case 'f': return f32_array(std::vector<float>(p.numbers.begin(), p.numbers.end()));
+    default: return f64_array(p.numbers);  // 'd'
+  }
+}
+
+void FbxEncoder::node(const FbxNode& n) {
+  begin(n.name);
+  for (const FbxProperty& p : n.properties) property(p);
+  for (const FbxNode& child : n.children) node(child);
+  end();
 }
 
 FbxEncoder& FbxEncoder::i32_array(const std::vector<std::int32_t>& a) { array('i', a); return *this; }

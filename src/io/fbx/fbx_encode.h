@@ -14,6 +14,7 @@
 #pragma once
 
 #include "rotinterp/core/result.h"
+#include "rotinterp/io/fbx/fbx_nodes.h"
 
 #include <cstdint>
 #include <string>
@@ -45,6 +46,11 @@ class FbxEncoder {
   FbxEncoder& i64_array(const std::vector<std::int64_t>& a);  // 'l'
   FbxEncoder& f32_array(const std::vector<float>& a);         // 'f'
   FbxEncoder& f64_array(const std::vector<double>& a);        // 'd'
+  // A property as read (io/fbx/fbx_nodes.h), in its own type: what a tree edit
+  // writes back unchanged. ASCII spells bools and int16s as integers.
+  FbxEncoder& property(const FbxProperty& p);
+  // A read node with its properties and children, unchanged.
+  void node(const FbxNode& n);
 
   // An object's name with its class as each encoding spells it: "Hips\0\1Model"
   // in binary, "Model::Hips" in ASCII.

@@ -44,13 +44,6 @@ FbxOutKey copied_key(const FbxKey& k) {
   return out;
 }
 
-// FBX's EFbxRotationOrder (XYZ = 0 is R = Rz·Ry·Rx) as our outermost-first axes.
-EulerAxes order_axes(int order) {
-  static const char* names[] = {"XYZ", "XZY", "YZX", "YXZ", "ZXY", "ZYX"};
-  const char* name = names[order >= 0 && order < 6 ? order : 0];
-  return {name[2] - 'X', name[1] - 'X', name[0] - 'X'};
-}
-
 bool zero(const FbxVec3& v) { return v[0] == 0.0 && v[1] == 0.0 && v[2] == 0.0; }
 Vec3 vec(const FbxVec3& v) { return {v[0], v[1], v[2]}; }
 
@@ -103,7 +96,7 @@ Result<SourceFbx> encode_source_fbx(const Clip& clip, const SourceClip& source, 
       const FbxLayerChannels* rotation = keyed_layer(jc.layers, kFbxRotation);
       if (!rotation) continue;
       FbxOutJoint& o = curves[j];
-      o.axes = order_axes(m.rotation_order);
+      o.axes = fbx_order_axes(m.rotation_order);
       o.node = FbxOutNode{rest[j], vec(m.rotation), vec(m.pre_rotation), vec(m.post_rotation)};
       for (std::size_t a = 0; a < 3; ++a) {
         o.rotation[a].clear();

@@ -20,14 +20,6 @@ constexpr int kLayerRotationOrder = 0;
 // A layer weight above this is a full weight (the DCCs store 100 % as 99.99…).
 constexpr double kFullWeight = 0.99999;
 
-// FBX RotationOrder (0 XYZ, 1 XZY, 2 YZX, 3 YXZ, 4 ZXY, 5 ZYX: innermost axis
-// first) as io/files/euler.h's outermost-first axes.
-EulerAxes fbx_order_axes(int order) {
-  static const char* names[] = {"XYZ", "XZY", "YZX", "YXZ", "ZXY", "ZYX"};
-  const char* name = names[order >= 0 && order < 6 ? order : 0];
-  return {name[2] - 'X', name[1] - 'X', name[0] - 'X'};
-}
-
 // Degrees (X, Y, Z) back from a rotation, nearest `near` (no 360° jumps).
 FbxVec3 fbx_euler_angles(int order, const Quat& q, const FbxVec3& near) {
   const EulerAxes axes = fbx_order_axes(order);
@@ -89,6 +81,12 @@ Eigen::Matrix4d translation(const FbxVec3& v) {
 }
 
 }  // namespace
+
+EulerAxes fbx_order_axes(int order) {
+  static const char* names[] = {"XYZ", "XZY", "YZX", "YXZ", "ZXY", "ZYX"};
+  const char* name = names[order >= 0 && order < 6 ? order : 0];
+  return {name[2] - 'X', name[1] - 'X', name[0] - 'X'};
+}
 
 std::size_t fbx_lcl_index(const std::string& property) {
   if (property == "Lcl Translation") return kFbxTranslation;

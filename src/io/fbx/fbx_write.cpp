@@ -17,11 +17,6 @@ namespace rotinterp {
 namespace {
 
 constexpr int kTimeModeDefault = 0;
-// A fixed creation time (and the FileId the format notes give for it), so that the
-// same command writes the same bytes.
-constexpr const char* kCreationTime = "1970-01-01 10:00:00:000";
-constexpr unsigned char kFileId[16] = {0x28, 0xb3, 0x2a, 0xeb, 0xb6, 0x24, 0xcc, 0xc2,
-                                       0xbf, 0xc8, 0xb0, 0x2a, 0xa9, 0x2b, 0xfc, 0xf1};
 
 // FBX's EFbxRotationOrder names the axes in the order they apply (innermost first):
 // eEulerXYZ = 0 is R = Rz·Ry·Rx.
@@ -93,10 +88,7 @@ Result<std::string> encode_fbx_takes(const Clip& clip, const std::vector<FbxOutT
   doc.leaf_str("Creator", creator);
   e.end();
   if (encoding == FbxEncoding::binary) {
-    e.begin("FileId");
-    e.raw(std::string_view(reinterpret_cast<const char*>(kFileId), sizeof kFileId));
-    e.end();
-    doc.leaf_str("CreationTime", kCreationTime);
+    doc.file_id();
     doc.leaf_str("Creator", creator);
   }
 

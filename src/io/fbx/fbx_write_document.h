@@ -48,6 +48,17 @@ class FbxWriteDocument {
     enc_.str(v);
     enc_.end();
   }
+  // Binary files: the FileId and CreationTime top-level nodes, fixed (the FileId the
+  // format notes give for this creation time, which the encoder's footer matches),
+  // so that the same command writes the same bytes.
+  void file_id() {
+    static constexpr unsigned char kFileId[16] = {0x28, 0xb3, 0x2a, 0xeb, 0xb6, 0x24, 0xcc, 0xc2,
+                                                  0xbf, 0xc8, 0xb0, 0x2a, 0xa9, 0x2b, 0xfc, 0xf1};
+    enc_.begin("FileId");
+    enc_.raw(std::string_view(reinterpret_cast<const char*>(kFileId), sizeof kFileId));
+    enc_.end();
+    leaf_str("CreationTime", "1970-01-01 10:00:00:000");
+  }
   void connect(std::int64_t child, std::int64_t parent, std::string_view property = {}) {
     enc_.begin("C");
     enc_.str(property.empty() ? "OO" : "OP").i64(child).i64(parent);

@@ -100,6 +100,8 @@ FbxTakeIds new_take_ids(const std::vector<FbxOutJoint>& curves, const std::funct
   ids.translation_node.assign(n, 0);
   ids.rotation_curve.assign(n, {});
   ids.translation_curve.assign(n, {});
+  ids.scaling_node.assign(n, 0);
+  ids.scaling_curve.assign(n, {});
   for (std::size_t j = 0; j < n; ++j) {
     ids.rotation_node[j] = new_id();
     for (std::size_t a = 0; a < 3; ++a) ids.rotation_curve[j][a] = curves[j].rotation[a].empty() ? 0 : new_id();
@@ -109,8 +111,13 @@ FbxTakeIds new_take_ids(const std::vector<FbxOutJoint>& curves, const std::funct
       for (std::size_t a = 0; a < 3; ++a) ids.translation_curve[j][a] = curves[j].translation[a].empty() ? 0 : new_id();
       ++ids.curve_nodes;
     }
+    if (curves[j].has_scaling) {
+      ids.scaling_node[j] = new_id();
+      for (std::size_t a = 0; a < 3; ++a) ids.scaling_curve[j][a] = curves[j].scaling[a].empty() ? 0 : new_id();
+      ++ids.curve_nodes;
+    }
     for (std::size_t a = 0; a < 3; ++a)
-      ids.curves += (ids.rotation_curve[j][a] != 0) + (ids.translation_curve[j][a] != 0);
+      ids.curves += (ids.rotation_curve[j][a] != 0) + (ids.translation_curve[j][a] != 0) + (ids.scaling_curve[j][a] != 0);
   }
   return ids;
 }
@@ -119,7 +126,7 @@ FbxTickSpan fbx_curves_span(const std::vector<FbxOutJoint>& curves) {
   FbxTickSpan span;
   bool any = false;
   for (const FbxOutJoint& c : curves)
-    for (const auto* set : {&c.rotation, &c.translation})
+    for (const auto* set : {&c.rotation, &c.translation, &c.scaling})
       for (const FbxOutCurve& curve : *set) {
         if (curve.empty()) continue;
         span.start = any ? std::min(span.start, curve.front().ticks) : curve.front().ticks;
@@ -148,12 +155,15 @@ void write_take_objects(FbxWriteDocument& doc, const FbxOutTake& take, const Fbx
     write_curve_node(doc, ids.rotation_node[j], "R", curves[j].rotation, curves[j].rotation_default);
     if (ids.translation_node[j])
       write_curve_node(doc, ids.translation_node[j], "T", curves[j].translation, curves[j].translation_default);
+    if (ids.scaling_node[j]) write_curve_node(doc, ids.scaling_node[j], "S", curves[j].scaling, Vec3::Ones());
   }
   for (std::size_t j = 0; j < curves.size(); ++j) {
     for (std::size_t a = 0; a < 3; ++a)
       if (ids.rotation_curve[j][a]) write_curve(doc, ids.rotation_curve[j][a], curves[j].rotation[a]);
     for (std::size_t a = 0; a < 3; ++a)
       if (ids.translation_curve[j][a]) write_curve(doc, ids.translation_curve[j][a], curves[j].translation[a]);
+    for (std::size_t a = 0; a < 3; ++a)
+      if (ids.scaling_curve[j][a]) write_curve(doc, ids.scaling_curve[j][a], curves[j].scaling[a]);
   }
 }
 
@@ -166,11 +176,17 @@ void write_take_connections(FbxWriteDocument& doc, const FbxOutTake& take, const
     doc.connect(ids.rotation_node[j], model_id[j], "Lcl Rotation");
     for (std::size_t a = 0; a < 3; ++a)
       if (ids.rotation_curve[j][a]) doc.connect(ids.rotation_curve[j][a], ids.rotation_node[j], axis_names[a]);
-    if (!ids.translation_node[j]) continue;
-    doc.connect(ids.translation_node[j], ids.layer);
-    doc.connect(ids.translation_node[j], model_id[j], "Lcl Translation");
-    for (std::size_t a = 0; a < 3; ++a)
-      if (ids.translation_curve[j][a]) doc.connect(ids.translation_curve[j][a], ids.translation_node[j], axis_names[a]);
+    const std::pair<std::int64_t, const std::array<std::int64_t, 3>*> others[] = {
+        {ids.translation_node[j], &ids.translation_curve[j]}, {ids.scaling_node[j], &ids.scaling_curve[j]}};
+    const char* properties[] = {"Lcl Translation", "Lcl Scaling"};
+    for (std::size_t p = 0; p < 2; ++p) {
+      const auto [node, curves] = others[p];
+      if (!node) continue;
+      doc.connect(node, ids.layer);
+      doc.connect(node, model_id[j], properties[p]);
+      for (std::size_t a = 0; a < 3; ++a)
+        if ((*curves)[a]) doc.connect((*curves)[a], node, axis_names[a]);
+    }
   }
 }
 

@@ -13,11 +13,11 @@
 namespace rotinterp {
 
 // The object ids of one take, drawn from the writer's counter in file order: stack,
-// layer, then per joint its "R" node and curves, its "T" node and curves (0: none).
+// layer, then per joint its "R" node and curves, its "T" and "S" nodes and curves (0: none).
 struct FbxTakeIds {
   std::int64_t stack = 0, layer = 0;
-  std::vector<std::int64_t> rotation_node, translation_node;
-  std::vector<std::array<std::int64_t, 3>> rotation_curve, translation_curve;
+  std::vector<std::int64_t> rotation_node, translation_node, scaling_node;
+  std::vector<std::array<std::int64_t, 3>> rotation_curve, translation_curve, scaling_curve;
   std::size_t curve_nodes = 0, curves = 0;
 };
 FbxTakeIds new_take_ids(const std::vector<FbxOutJoint>& curves, const std::function<std::int64_t()>& new_id);

@@ -23,6 +23,7 @@
 
 #include "rotinterp/core/rotation.h"
 #include "rotinterp/io/fbx/fbx_curves.h"
+#include "rotinterp/io/files/euler.h"
 
 #include <Eigen/Geometry>
 
@@ -62,6 +63,10 @@ struct FbxLclValues {
   FbxVec3 translation{0, 0, 0}, rotation{0, 0, 0}, scaling{1, 1, 1};
 };
 FbxLclValues fbx_lcl_values(const FbxTake& take, const FbxModel& model, const FbxNodeLayers* node, double ticks);
+
+// FBX RotationOrder (0 XYZ, 1 XZY, 2 YZX, 3 YXZ, 4 ZXY, 5 ZYX: innermost axis
+// first; XYZ outside 0–5) as io/files/euler.h's outermost-first axes.
+EulerAxes fbx_order_axes(int order);
 
 // Euler angles in degrees (X, Y, Z) in FBX rotation order `order` as a rotation.
 Quat fbx_euler_rotation(int order, const FbxVec3& degrees);

@@ -71,6 +71,9 @@ struct FbxOutJoint {
   std::array<FbxOutCurve, 3> rotation, translation;
   Vec3 rotation_default = Vec3::Zero(), translation_default = Vec3::Zero();  // channels without keys
   bool has_translation = false;  // an "T" curve node (any translation channel with keys)
+  // Lcl Scaling curves: only a source's own scale written back (io/fbx/fbx_character.h).
+  std::array<FbxOutCurve, 3> scaling;
+  bool has_scaling = false;  // an "S" curve node
   std::optional<FbxOutNode> node;
 };
 

@@ -1,0 +1,167 @@
+// A character's takes as curves in its models' own conventions, and the file of them (io/fbx/fbx_character.h).
+#include "rotinterp/io/fbx/fbx_character.h"
+
+#include "rotinterp/clip/frames.h"
+#include "rotinterp/io/fbx/fbx_transform.h"
+#include "rotinterp/io/files/key_times.h"
+#include "rotinterp/track/sample.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace rotinterp {
+
+namespace {
+
+// First FBX version whose animation is objects (AnimationStack, …), not Takes.
+constexpr std::uint32_t kFirstObjectVersion = 7000;
+// A static Lcl Translation is the clip's rest offset within this, relative to max(1, |offset|).
+constexpr double kSameTranslation = 1e-6;
+
+// A scale within this of 1 is none (as the reader bakes it: io/import/scene_to_clip.cpp).
+constexpr double kUnitScaleTolerance = 1e-5;
+
+Vec3 vec(const FbxVec3& v) { return {v[0], v[1], v[2]}; }
+
+// The uniform scale the reader baked into a joint's children's offsets and
+// translations (the mean of a positive static scale, else 1): divided out again here.
+double baked_scale(const FbxVec3& s) {
+  double mean = std::cbrt(std::abs(s[0] * s[1] * s[2]));
+  if (!(mean > 0.0) || !std::isfinite(mean) || std::abs(mean - 1.0) < kUnitScaleTolerance) mean = 1.0;
+  return mean;
+}
+
+// The constant part C and the rotated part V of a node's local translation:
+// translation(t) = T + C + Q(t)·V, from T·Roff·Rp·Rpre·R·Rpost⁻¹·Rp⁻¹·Soff·Sp·S·Sp⁻¹
+// (io/fbx/fbx_transform.h) with S the node's static scaling.
+struct PivotTerms {
+  Vec3 constant = Vec3::Zero(), rotated = Vec3::Zero();
+};
+PivotTerms pivot_terms(const FbxModel& m) {
+  const Vec3 scaled_pivot = vec(m.scaling).cwiseProduct(vec(m.scaling_pivot));
+  return {vec(m.rotation_offset) + vec(m.rotation_pivot),
+          vec(m.scaling_offset) + vec(m.scaling_pivot) - scaled_pivot - vec(m.rotation_pivot)};
+}
+
+}  // namespace
+
+Result<FbxCharacter> read_fbx_character(const std::filesystem::path& path) {
+  FbxCharacter out;
+  out.label = path.string();
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream bytes;
+  if (!in || !(bytes << in.rdbuf())) return make_error(out.label + ": cannot read the file", ErrorKind::cannot_open);
+  auto doc = parse_fbx_nodes(bytes.str(), out.label);
+  if (!doc) return doc.failure();
+  if (doc->version < kFirstObjectVersion)
+    return make_error(out.label + ": FBX " + std::to_string(doc->version) + " keeps its animation in Takes; only FBX 7 files are edited");
+  auto animation = read_fbx_animation(*doc, out.label);
+  if (!animation) return animation.failure();
+  out.doc = std::move(*doc);
+  out.animation = std::move(*animation);
+  return out;
+}
+
+Result<std::vector<const FbxModel*>> fbx_character_models(const Skeleton& skeleton, const FbxCharacter& source) {
+  std::multimap<std::string, const FbxModel*> by_name;
+  for (const FbxModel& m : source.animation.models) by_name.emplace(m.name, &m);
+  std::vector<const FbxModel*> out;
+  for (const Joint& joint : skeleton.joints) {
+    const auto count = by_name.count(joint.name);
+    if (count != 1)
+      return make_error(source.label + ": joint '" + fbx_printable(joint.name) + "' has " +
+                        (count == 0 ? std::string("no model") : std::to_string(count) + " models") + " of its name");
+    out.push_back(by_name.find(joint.name)->second);
+  }
+  return out;
+}
+
+Result<FbxCharacterTake> fbx_character_take(const Clip& clip, const FbxCharacter& source, const FbxTake* take) {
+  if (Status s = clip.validate(); !s) return s.failure("cannot write an invalid clip: ");
+  auto models = fbx_character_models(clip.skeleton, source);
+  if (!models) return models.failure();
+  const std::int64_t origin = take ? fbx_take_span(*take).start : 0;
+  const std::map<std::string, FbxNodeLayers> layers = take ? fbx_node_layers(*take) : std::map<std::string, FbxNodeLayers>{};
+  auto node_layers = [&](const FbxModel& m) {
+    const auto it = layers.find(m.name);
+    return it == layers.end() ? nullptr : &it->second;
+  };
+  const std::vector<double> times = all_key_times(clip);
+  const std::size_t n = models->size();
+  // The clip with each joint's rotation as its model's R = Rpre⁻¹ · Q · Rpost and
+  // its translation as its model's Lcl Translation, T = translation / parent scale − C − Q·V.
+  Clip local = clip;
+  std::vector<EulerAxes> axes;
+  std::vector<double> scale(n, 1.0);  // the reader's baked scale of each joint's frame
+  FbxCharacterTake out;
+  for (std::size_t j = 0; j < n; ++j) {
+    const FbxModel& m = *(*models)[j];
+    const int parent = clip.skeleton.joints[j].parent;
+    const double parent_scale = parent >= 0 ? scale[static_cast<std::size_t>(parent)] : 1.0;
+    const FbxVec3 s0 = take ? fbx_lcl_values(*take, m, node_layers(m), static_cast<double>(origin)).scaling : m.scaling;
+    scale[j] = parent_scale * baked_scale(s0);
+    out.model_ids.push_back(m.id);
+    axes.push_back(fbx_order_axes(m.rotation_order));
+    const Quat pre = fbx_euler_rotation(0, m.pre_rotation), post = fbx_euler_rotation(0, m.post_rotation);
+    for (Quat& q : local.rotations[j].keys) q = (pre.conjugate() * q * post).normalized();
+    const PivotTerms pivot = pivot_terms(m);
+    const auto& track = clip.translations[j];
+    const Vec3 offset = clip.skeleton.joints[j].offset / parent_scale;
+    const bool pivots = !pivot.constant.isZero(0.0) || !pivot.rotated.isZero(0.0);
+    const bool static_differs =
+        (offset - vec(m.translation)).norm() > kSameTranslation * std::max(1.0, offset.norm());
+    if (!pivots && !track && !static_differs) continue;  // the model's static value holds
+    // A key at every key time of the clip.
+    TranslationTrack keyed;
+    for (double t : times) {
+      const Vec3 value = track ? Vec3(sample_translation(*track, t) / parent_scale) : offset;
+      keyed.times.push_back(t);
+      keyed.keys.push_back(value - pivot.constant - sample_rotation(clip.rotations[j], t) * pivot.rotated);
+    }
+    local.translations[j] = std::move(keyed);
+  }
+  out.take.name = clip.name.empty() ? std::string("clip") : clip.name;
+  out.take.curves = fbx_frame_curves(local, axes);
+  for (std::size_t j = 0; j < n; ++j) {
+    FbxOutJoint& joint = out.take.curves[j];
+    for (auto* set : {&joint.rotation, &joint.translation})
+      for (FbxOutCurve& curve : *set)
+        for (FbxOutKey& key : curve) key.ticks += origin;
+    // The source's own scale, evaluated at the rotation keys (a clip has none).
+    const FbxModel& m = *(*models)[j];
+    const FbxNodeLayers* node = node_layers(m);
+    if (!node || !node->keyed(kFbxScaling)) continue;
+    joint.has_scaling = true;
+    for (const FbxOutKey& key : joint.rotation[static_cast<std::size_t>(joint.axes[0])]) {
+      const FbxVec3 s = fbx_lcl_values(*take, m, node, static_cast<double>(key.ticks)).scaling;
+      for (std::size_t a = 0; a < 3; ++a) joint.scaling[a].push_back({key.ticks, static_cast<float>(s[a])});
+    }
+  }
+  return out;
+}
+
+Result<FbxCharacterFile> fbx_character_file(const std::vector<Clip>& takes, const std::filesystem::path& source,
+                                            bool ascii) {
+  if (takes.empty()) return make_error(source.string() + ": no takes to write");
+  auto character = read_fbx_character(source);
+  if (!character) return character.failure();
+  const std::vector<FbxTake>& source_takes = character->animation.takes;
+  std::vector<FbxCharacterTake> written;
+  std::optional<Rate> rate = clip_rate(takes.front());
+  for (const Clip& clip : takes) {
+    if (clip_rate(clip) != rate) rate.reset();  // TimeMode then keeps the source's
+    const auto same_name = std::find_if(source_takes.begin(), source_takes.end(),
+                                        [&](const FbxTake& t) { return t.name == clip.name; });
+    const FbxTake* take = same_name != source_takes.end() ? &*same_name : source_takes.empty() ? nullptr : &source_takes.front();
+    auto one = fbx_character_take(clip, *character, take);
+    if (!one) return one.failure();
+    written.push_back(std::move(*one));
+  }
+  const bool as_ascii = ascii || !character->doc.binary;
+  return encode_fbx_character(*character, written, rate, as_ascii ? FbxEncoding::ascii : FbxEncoding::binary);
+}
+
+}  // namespace rotinterp

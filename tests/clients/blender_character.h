@@ -1,0 +1,52 @@
+// Shared by the character tests: Blender imports a source FBX character and what
+// rotinterp wrote from it (tests/clients/blender_character.py), and the two are
+// compared as a user sees them, with nothing fitted: the meshes, the takes, and the
+// deformed meshes at the same three times.
+#pragma once
+
+#include "io/io_test_util.h"
+#include "rotinterp/core/rotation.h"
+
+#include <filesystem>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace rotinterp::test {
+
+struct BlenderMesh {
+  std::string name;
+  std::size_t vertices = 0, faces = 0, materials = 0;
+  std::vector<std::string> groups;  // vertex-group names
+  bool operator==(const BlenderMesh& o) const {
+    return name == o.name && vertices == o.vertices && faces == o.faces && materials == o.materials && groups == o.groups;
+  }
+};
+
+// The deformed meshes at one time: their vertices' bounding box and centroid (world, metres).
+struct BlenderPose {
+  double time = 0.0;  // s, FBX time
+  Vec3 low, high, centroid;
+};
+
+struct BlenderCharacter {
+  std::vector<BlenderMesh> meshes;
+  std::set<std::string> takes;  // the take of each action ("OBJECT|TAKE|LAYER")
+  std::vector<BlenderPose> poses;  // first, middle, last
+};
+
+// Runs Blender once on (source, ours) pairs; `step`: the grid (s) the middle time
+// lies on, a key time of both. Returns each file's import, in order.
+std::vector<BlenderCharacter> blender_characters(const std::vector<std::pair<std::string, std::string>>& pairs,
+                                                 double step, const std::filesystem::path& dir);
+
+// The largest difference between the two's bounding boxes and centroids at the
+// same times (metres), and the figure's height (the source's box at its first time).
+struct PoseDeviation {
+  double distance = 0.0, height = 0.0;
+  std::size_t times = 0;
+};
+PoseDeviation pose_deviation(const BlenderCharacter& ours, const BlenderCharacter& source);
+
+}  // namespace rotinterp::test

@@ -18,6 +18,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -118,17 +119,25 @@ std::string cycle_text(const ReduceResult& r) {
 
 // The kept keys as FBX curves replaying the method (io/fbx/fbx_reduced.h), refused
 // unless our reader's replay of the file is within the budget at every frame.
-Status write_reduced_fbx(const std::string& path, const Clip& source, const MethodRun& run, const ReduceOptions& opt,
-                         bool quiet) {
+Status write_reduced_fbx(const std::string& path, const Clip& source, const std::string& input, const MethodRun& run,
+                         const ReduceOptions& opt, bool quiet) {
   FbxReducedOptions o;
+  // A character's file with its reduced curves (io/fbx/fbx_character.h), else the skeleton alone.
+  std::optional<FbxCharacter> character;
+  if (keeps_fbx_character(source, input)) {
+    auto read = read_fbx_character(input);
+    if (read) character = std::move(*read);
+    else warn(path + ": the character is not kept: " + read.error());
+  }
+  o.character = character ? &*character : nullptr;
   o.method = run.method;
   o.translation = opt.translation;
   o.shell_distance = opt.shell_distance;
   for (const ReducedJoint& j : run.result.joints) o.budgets.push_back({j.budget.rotation_deg, j.budget.shell, j.budget.translation});
   auto fbx = encode_reduced_fbx(run.result.reduced, source, o);
   if (!fbx) return make_error(path + ": " + fbx.error());
-  // The character is kept by resample only, so far (io/fbx/fbx_character.h).
-  if (const std::string lost = meshes_not_written(source, path); !lost.empty()) warn(lost);
+  if (!character)
+    if (const std::string lost = meshes_not_written(source, path); !lost.empty()) warn(lost);
   const double mm = source.unit.metres_per_unit * 1000.0;
   if (!fbx->within_budget)
     return make_error(fmt::format("{}: the FBX Euler curves miss the budget even keyed with the source's values "
@@ -140,6 +149,7 @@ Status write_reduced_fbx(const std::string& path, const Clip& source, const Meth
                "translation\n",
                fbx->rotation_keys, fbx->translation_keys, run.result.kept_keys, fbx->added_keys, fbx->corrected_keys,
                fbx->max_rotation_error_deg, fbx->max_shell_error * mm, fbx->max_translation_error * mm);
+  if (!quiet && fbx->kept) fmt::print("  {}: {}\n", path, fbx->kept->text());
   return write_file_atomically(path, [&](std::ostream& out) -> Status {
     out.write(fbx->bytes.data(), static_cast<std::streamsize>(fbx->bytes.size()));
     return Ok{};
@@ -246,7 +256,7 @@ Status reduce_one_file(const std::string& input, const ReduceArgs& a, const Redu
       w.on_warning = warn;
       written = write_clip(first.result.reduced, o.output, w);
     } else if (fbx) {
-      written = write_reduced_fbx(o.output, *clip, first, opt, a.quiet || !o.print);
+      written = write_reduced_fbx(o.output, *clip, input, first, opt, a.quiet || !o.print);
     } else {
       opt.method = first.method;
       written = write_keys_json(o.output, *clip, first, opt, metres_per_unit, budgets);

@@ -83,8 +83,7 @@ std::vector<std::string> unique_take_names(const std::vector<Clip>& takes) {
 // nullopt where it is no such source or the character cannot be kept (a warning says why).
 std::optional<Status> write_character(const std::vector<Clip>& takes, const std::filesystem::path& path,
                                       const WriteOptions& options) {
-  const FormatInfo* source = options.source.empty() ? nullptr : format_of(options.source);
-  if (takes.front().source_meshes == 0 || !source || source->id != FormatId::fbx) return std::nullopt;
+  if (!keeps_fbx_character(takes.front(), options.source)) return std::nullopt;
   auto file = fbx_character_file(takes, options.source, options.fbx_ascii);
   if (!file) {
     if (options.on_warning) options.on_warning(path.string() + ": the character is not kept: " + file.error());
@@ -102,6 +101,11 @@ void warn_meshes_lost(const Clip& clip, const std::string& label, const WriteOpt
 }
 
 }  // namespace
+
+bool keeps_fbx_character(const Clip& clip, const std::string& source) {
+  const FormatInfo* format = source.empty() ? nullptr : format_of(source);
+  return clip.source_meshes > 0 && format && format->id == FormatId::fbx;
+}
 
 std::string meshes_not_written(const Clip& clip, const std::string& label) {
   if (clip.source_meshes == 0) return "";

@@ -37,6 +37,11 @@ Status write_clip(const Clip& clip, const std::filesystem::path& path, const Wri
 // write_clip of one clip writes the same bytes as before (take name "clip" if empty).
 Status write_clips(const std::vector<Clip>& takes, const std::filesystem::path& path, const WriteOptions& options = {});
 
+// Whether an FBX written from `clip`, read from the file `source`, is that file's
+// character with only its animation replaced (io/fbx/fbx_character.h): an FBX source
+// with meshes.
+bool keeps_fbx_character(const Clip& clip, const std::string& source);
+
 // The warning that `clip`'s source meshes (and skins) are not written to `label`, one
 // line; "" where the source had none.
 std::string meshes_not_written(const Clip& clip, const std::string& label);

@@ -46,6 +46,26 @@ PivotTerms pivot_terms(const FbxModel& m) {
           vec(m.scaling_offset) + vec(m.scaling_pivot) - scaled_pivot - vec(m.rotation_pivot)};
 }
 
+// Each joint's model: the one of its name.
+Result<std::vector<const FbxModel*>> joint_models(const Skeleton& skeleton, const FbxCharacter& source) {
+  std::multimap<std::string, const FbxModel*> by_name;
+  for (const FbxModel& m : source.animation.models) by_name.emplace(m.name, &m);
+  std::vector<const FbxModel*> out;
+  for (const Joint& joint : skeleton.joints) {
+    const auto count = by_name.count(joint.name);
+    if (count != 1)
+      return make_error(source.label + ": joint '" + fbx_printable(joint.name) + "' has " +
+                        (count == 0 ? std::string("no model") : std::to_string(count) + " models") + " of its name");
+    out.push_back(by_name.find(joint.name)->second);
+  }
+  return out;
+}
+
+const FbxNodeLayers* layers_of(const std::map<std::string, FbxNodeLayers>& layers, const FbxModel& m) {
+  const auto it = layers.find(m.name);
+  return it == layers.end() ? nullptr : &it->second;
+}
+
 }  // namespace
 
 Result<FbxCharacter> read_fbx_character(const std::filesystem::path& path) {
@@ -65,74 +85,48 @@ Result<FbxCharacter> read_fbx_character(const std::filesystem::path& path) {
   return out;
 }
 
-Result<std::vector<const FbxModel*>> fbx_character_models(const Skeleton& skeleton, const FbxCharacter& source) {
-  std::multimap<std::string, const FbxModel*> by_name;
-  for (const FbxModel& m : source.animation.models) by_name.emplace(m.name, &m);
-  std::vector<const FbxModel*> out;
-  for (const Joint& joint : skeleton.joints) {
-    const auto count = by_name.count(joint.name);
-    if (count != 1)
-      return make_error(source.label + ": joint '" + fbx_printable(joint.name) + "' has " +
-                        (count == 0 ? std::string("no model") : std::to_string(count) + " models") + " of its name");
-    out.push_back(by_name.find(joint.name)->second);
+const FbxTake* fbx_character_source_take(const FbxCharacter& source, const std::string& name) {
+  const std::vector<FbxTake>& takes = source.animation.takes;
+  const auto same_name = std::find_if(takes.begin(), takes.end(), [&](const FbxTake& t) { return t.name == name; });
+  return same_name != takes.end() ? &*same_name : takes.empty() ? nullptr : &takes.front();
+}
+
+Result<FbxCharacterJoints> fbx_character_joints(const Clip& clip, const FbxCharacter& source, const FbxTake* take) {
+  auto models = joint_models(clip.skeleton, source);
+  if (!models) return models.failure();
+  const std::int64_t origin = take ? fbx_take_span(*take).start : 0;
+  const std::map<std::string, FbxNodeLayers> layers = take ? fbx_node_layers(*take) : std::map<std::string, FbxNodeLayers>{};
+  FbxCharacterJoints out;
+  out.models = std::move(*models);
+  std::vector<double> scale;  // the reader's baked scale of each joint's frame
+  for (std::size_t j = 0; j < out.models.size(); ++j) {
+    const FbxModel& m = *out.models[j];
+    const int parent = clip.skeleton.joints[j].parent;
+    FbxJointFrame f;
+    f.parent_scale = parent >= 0 ? scale[static_cast<std::size_t>(parent)] : 1.0;
+    const FbxVec3 s0 = take ? fbx_lcl_values(*take, m, layers_of(layers, m), static_cast<double>(origin)).scaling : m.scaling;
+    scale.push_back(f.parent_scale * baked_scale(s0));
+    f.axes = fbx_order_axes(m.rotation_order);
+    f.pre = fbx_euler_rotation(0, m.pre_rotation);
+    f.post = fbx_euler_rotation(0, m.post_rotation);
+    const PivotTerms pivot = pivot_terms(m);
+    f.constant = pivot.constant;
+    f.rotated = pivot.rotated;
+    const Vec3 offset = clip.skeleton.joints[j].offset / f.parent_scale;
+    f.keyed_translation = !pivot.constant.isZero(0.0) || !pivot.rotated.isZero(0.0) ||
+                          (offset - vec(m.translation)).norm() > kSameTranslation * std::max(1.0, offset.norm());
+    out.frames.push_back(f);
   }
   return out;
 }
 
-Result<FbxCharacterTake> fbx_character_take(const Clip& clip, const FbxCharacter& source, const FbxTake* take) {
-  if (Status s = clip.validate(); !s) return s.failure("cannot write an invalid clip: ");
-  auto models = fbx_character_models(clip.skeleton, source);
-  if (!models) return models.failure();
-  const std::int64_t origin = take ? fbx_take_span(*take).start : 0;
-  const std::map<std::string, FbxNodeLayers> layers = take ? fbx_node_layers(*take) : std::map<std::string, FbxNodeLayers>{};
-  auto node_layers = [&](const FbxModel& m) {
-    const auto it = layers.find(m.name);
-    return it == layers.end() ? nullptr : &it->second;
-  };
-  const std::vector<double> times = all_key_times(clip);
-  const std::size_t n = models->size();
-  // The clip with each joint's rotation as its model's R = Rpre⁻¹ · Q · Rpost and
-  // its translation as its model's Lcl Translation, T = translation / parent scale − C − Q·V.
-  Clip local = clip;
-  std::vector<EulerAxes> axes;
-  std::vector<double> scale(n, 1.0);  // the reader's baked scale of each joint's frame
-  FbxCharacterTake out;
-  for (std::size_t j = 0; j < n; ++j) {
-    const FbxModel& m = *(*models)[j];
-    const int parent = clip.skeleton.joints[j].parent;
-    const double parent_scale = parent >= 0 ? scale[static_cast<std::size_t>(parent)] : 1.0;
-    const FbxVec3 s0 = take ? fbx_lcl_values(*take, m, node_layers(m), static_cast<double>(origin)).scaling : m.scaling;
-    scale[j] = parent_scale * baked_scale(s0);
-    out.model_ids.push_back(m.id);
-    axes.push_back(fbx_order_axes(m.rotation_order));
-    const Quat pre = fbx_euler_rotation(0, m.pre_rotation), post = fbx_euler_rotation(0, m.post_rotation);
-    for (Quat& q : local.rotations[j].keys) q = (pre.conjugate() * q * post).normalized();
-    const PivotTerms pivot = pivot_terms(m);
-    const auto& track = clip.translations[j];
-    const Vec3 offset = clip.skeleton.joints[j].offset / parent_scale;
-    const bool pivots = !pivot.constant.isZero(0.0) || !pivot.rotated.isZero(0.0);
-    const bool static_differs =
-        (offset - vec(m.translation)).norm() > kSameTranslation * std::max(1.0, offset.norm());
-    if (!pivots && !track && !static_differs) continue;  // the model's static value holds
-    // A key at every key time of the clip.
-    TranslationTrack keyed;
-    for (double t : times) {
-      const Vec3 value = track ? Vec3(sample_translation(*track, t) / parent_scale) : offset;
-      keyed.times.push_back(t);
-      keyed.keys.push_back(value - pivot.constant - sample_rotation(clip.rotations[j], t) * pivot.rotated);
-    }
-    local.translations[j] = std::move(keyed);
-  }
-  out.take.name = clip.name.empty() ? std::string("clip") : clip.name;
-  out.take.curves = fbx_frame_curves(local, axes);
-  for (std::size_t j = 0; j < n; ++j) {
-    FbxOutJoint& joint = out.take.curves[j];
-    for (auto* set : {&joint.rotation, &joint.translation})
-      for (FbxOutCurve& curve : *set)
-        for (FbxOutKey& key : curve) key.ticks += origin;
-    // The source's own scale, evaluated at the rotation keys (a clip has none).
-    const FbxModel& m = *(*models)[j];
-    const FbxNodeLayers* node = node_layers(m);
+void keep_source_scaling(std::vector<FbxOutJoint>& curves, const FbxCharacterJoints& joints, const FbxTake* take) {
+  if (!take) return;
+  const std::map<std::string, FbxNodeLayers> layers = fbx_node_layers(*take);
+  for (std::size_t j = 0; j < curves.size(); ++j) {
+    FbxOutJoint& joint = curves[j];
+    const FbxModel& m = *joints.models[j];
+    const FbxNodeLayers* node = layers_of(layers, m);
     if (!node || !node->keyed(kFbxScaling)) continue;
     joint.has_scaling = true;
     for (const FbxOutKey& key : joint.rotation[static_cast<std::size_t>(joint.axes[0])]) {
@@ -140,6 +134,48 @@ Result<FbxCharacterTake> fbx_character_take(const Clip& clip, const FbxCharacter
       for (std::size_t a = 0; a < 3; ++a) joint.scaling[a].push_back({key.ticks, static_cast<float>(s[a])});
     }
   }
+}
+
+FbxOutTake fbx_character_out_take(const std::string& name, std::vector<FbxOutJoint> curves, const FbxTake* replaced) {
+  FbxOutTake out;
+  out.name = name.empty() ? std::string("clip") : name;
+  out.curves = std::move(curves);
+  if (replaced && replaced->name == out.name && !replaced->layers.empty()) out.layer = replaced->layers.front().name;
+  return out;
+}
+
+Result<FbxCharacterTake> fbx_character_take(const Clip& clip, const FbxCharacter& source, const FbxTake* take) {
+  if (Status s = clip.validate(); !s) return s.failure("cannot write an invalid clip: ");
+  auto joints = fbx_character_joints(clip, source, take);
+  if (!joints) return joints.failure();
+  const std::int64_t origin = take ? fbx_take_span(*take).start : 0;
+  const std::vector<double> times = all_key_times(clip);
+  // The clip with each joint's rotation and translation as its model's Lcl values.
+  Clip local = clip;
+  std::vector<EulerAxes> axes;
+  FbxCharacterTake out;
+  for (std::size_t j = 0; j < joints->models.size(); ++j) {
+    const FbxJointFrame& f = joints->frames[j];
+    out.model_ids.push_back(joints->models[j]->id);
+    axes.push_back(f.axes);
+    for (Quat& q : local.rotations[j].keys) q = f.lcl_rotation(q);
+    const auto& track = clip.translations[j];
+    if (!track && !f.keyed_translation) continue;  // the model's static value holds
+    // A key at every key time of the clip.
+    TranslationTrack keyed;
+    for (double t : times) {
+      const Vec3 value = track ? sample_translation(*track, t) : clip.skeleton.joints[j].offset;
+      keyed.times.push_back(t);
+      keyed.keys.push_back(f.lcl_translation(value, sample_rotation(clip.rotations[j], t)));
+    }
+    local.translations[j] = std::move(keyed);
+  }
+  out.take = fbx_character_out_take(clip.name, fbx_frame_curves(local, axes), take);
+  for (FbxOutJoint& joint : out.take.curves)
+    for (auto* set : {&joint.rotation, &joint.translation})
+      for (FbxOutCurve& curve : *set)
+        for (FbxOutKey& key : curve) key.ticks += origin;
+  keep_source_scaling(out.take.curves, *joints, take);
   return out;
 }
 
@@ -148,15 +184,11 @@ Result<FbxCharacterFile> fbx_character_file(const std::vector<Clip>& takes, cons
   if (takes.empty()) return make_error(source.string() + ": no takes to write");
   auto character = read_fbx_character(source);
   if (!character) return character.failure();
-  const std::vector<FbxTake>& source_takes = character->animation.takes;
   std::vector<FbxCharacterTake> written;
   std::optional<Rate> rate = clip_rate(takes.front());
   for (const Clip& clip : takes) {
     if (clip_rate(clip) != rate) rate.reset();  // TimeMode then keeps the source's
-    const auto same_name = std::find_if(source_takes.begin(), source_takes.end(),
-                                        [&](const FbxTake& t) { return t.name == clip.name; });
-    const FbxTake* take = same_name != source_takes.end() ? &*same_name : source_takes.empty() ? nullptr : &source_takes.front();
-    auto one = fbx_character_take(clip, *character, take);
+    auto one = fbx_character_take(clip, *character, fbx_character_source_take(*character, clip.name));
     if (!one) return one.failure();
     written.push_back(std::move(*one));
   }

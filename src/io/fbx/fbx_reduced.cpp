@@ -27,17 +27,22 @@ struct TrackKeys {
   void add(std::size_t f) { frames.insert(std::upper_bound(frames.begin(), frames.end(), f), f); }
 };
 
-// A joint's rotation through its method, in Euler angles (radians, in the
-// sequence's order) continuous from frame to frame.
+// A joint's rotation through its method, as its Lcl Rotation in Euler angles
+// (radians, in the sequence's order) continuous from frame to frame.
 class EulerCurve {
  public:
-  EulerCurve(std::unique_ptr<Interpolator> m, const EulerAxes& axes, const std::vector<double>& times, double step)
-      : method_(std::move(m)), axes_(axes), times_(times), step_(step) {
+  EulerCurve(std::unique_ptr<Interpolator> m, const FbxJointFrame& joint, const std::vector<double>& times, double step)
+      : method_(std::move(m)), joint_(joint), times_(times), step_(step) {
     Vec3 previous = Vec3::Zero();
-    for (double t : times) frames_.push_back(previous = at(t, previous));
+    for (double t : times) {
+      rotations_.push_back(method_->evaluate(t));
+      frames_.push_back(previous = euler_nearest(joint_.lcl_rotation(rotations_.back()), joint_.axes, previous));
+    }
   }
-  const EulerAxes& axes() const { return axes_; }
+  const EulerAxes& axes() const { return joint_.axes; }
+  const FbxJointFrame& joint() const { return joint_; }
   const Vec3& frame(std::size_t f) const { return frames_[f]; }
+  const Quat& rotation(std::size_t f) const { return rotations_[f]; }  // the clip's, not the Lcl one
   // One-sided slopes (radians per second) at frame f, from the curve left or right of it.
   Vec3 slope(std::size_t f, double side) const {
     const double h = side * step_, t = times_[f];
@@ -47,11 +52,14 @@ class EulerCurve {
   }
 
  private:
-  Vec3 at(double t, const Vec3& near) const { return euler_nearest(method_->evaluate(t), axes_, near); }
+  Vec3 at(double t, const Vec3& near) const {
+    return euler_nearest(joint_.lcl_rotation(method_->evaluate(t)), joint_.axes, near);
+  }
   std::unique_ptr<Interpolator> method_;
-  EulerAxes axes_;
+  FbxJointFrame joint_;
   const std::vector<double>& times_;
   double step_;
+  std::vector<Quat> rotations_;
   std::vector<Vec3> frames_;
 };
 
@@ -65,7 +73,8 @@ std::array<FbxOutCurve, 3> rotation_curves(const EulerCurve& curve, const TrackK
   const std::size_t last = ticks.size() - 1;
   for (std::size_t k = 0; k < keys.frames.size(); ++k) {
     const std::size_t f = keys.frames[k];
-    const Vec3 value = keys.source_value[f] ? euler_nearest(source[f], axes, curve.frame(f)) : curve.frame(f);
+    const Vec3 value =
+        keys.source_value[f] ? euler_nearest(curve.joint().lcl_rotation(source[f]), axes, curve.frame(f)) : curve.frame(f);
     const Vec3 right = cubic && f < last ? curve.slope(f, 1.0) : Vec3::Zero();
     const bool has_next = k + 1 < keys.frames.size();
     const Vec3 next_left = cubic && has_next ? curve.slope(keys.frames[k + 1], -1.0) : Vec3::Zero();
@@ -82,19 +91,24 @@ std::array<FbxOutCurve, 3> rotation_curves(const EulerCurve& curve, const TrackK
 }
 
 // The Lcl Translation curves of one joint through `keys`: the translation curve's
-// values and Hermite tangents (exact in FBX's cubic), or linear keys.
+// values and Hermite tangents (exact in FBX's cubic where the joint's frame has no
+// rotated pivot), or linear keys; each value through the joint's frame with the
+// rotation of `rotations` there.
 std::array<FbxOutCurve, 3> translation_curves(const TranslationCurve& curve, const TrackKeys& keys,
                                               const std::vector<Vec3>& source, const std::vector<double>& times,
-                                              const std::vector<std::int64_t>& ticks, bool cubic) {
+                                              const std::vector<std::int64_t>& ticks, bool cubic,
+                                              const EulerCurve& rotations) {
+  const FbxJointFrame& joint = rotations.joint();
   std::array<FbxOutCurve, 3> out;
   const double end = times[keys.frames.back()];
   // The curve's slope at a key time (its last key's from inside).
   auto slope = [&](std::size_t f) { return curve.derivative(f == keys.frames.back() ? std::nextafter(end, -1e300) : times[f]); };
   for (std::size_t k = 0; k < keys.frames.size(); ++k) {
     const std::size_t f = keys.frames[k];
-    const Vec3 value = keys.source_value[f] ? source[f] : curve.evaluate(times[f]);
-    const Vec3 right = cubic ? slope(f) : Vec3::Zero();
-    const Vec3 next_left = cubic && k + 1 < keys.frames.size() ? slope(keys.frames[k + 1]) : Vec3::Zero();
+    const Vec3 value = joint.lcl_translation(keys.source_value[f] ? source[f] : curve.evaluate(times[f]), rotations.rotation(f));
+    const Vec3 right = cubic ? Vec3(slope(f) / joint.parent_scale) : Vec3::Zero();
+    const Vec3 next_left =
+        cubic && k + 1 < keys.frames.size() ? Vec3(slope(keys.frames[k + 1]) / joint.parent_scale) : Vec3::Zero();
     for (std::size_t a = 0; a < 3; ++a) {
       const auto s = static_cast<Eigen::Index>(a);
       FbxOutKey key = out_key(ticks[f], value[s]);
@@ -167,22 +181,42 @@ Result<FbxReducedResult> encode_reduced_fbx(const Clip& reduced, const Clip& sou
   const FrameGrid& grid = dense.grid;
   const std::size_t frames = grid.size();
   if (frames < 2) return make_error("FBX curves: the source has fewer than two frames");
-  const std::vector<std::int64_t> ticks = fbx_ticks(grid.times, grid.rate);
+  // Each joint's frame: a character's models' conventions, else our writer's own.
+  FbxCharacterJoints joints;
+  const FbxTake* take = options.character ? fbx_character_source_take(*options.character, reduced.name) : nullptr;
+  if (options.character) {
+    auto models = fbx_character_joints(reduced, *options.character, take);
+    if (!models) return models.failure();
+    joints = std::move(*models);
+  } else {
+    joints.frames.resize(n);
+    for (std::size_t j = 0; j < n; ++j) joints.frames[j].axes = fbx_joint_axes(reduced, j);
+  }
+  // A character's keys lie on its source take's time axis (io/fbx/fbx_character.h).
+  std::vector<std::int64_t> ticks = fbx_ticks(grid.times, grid.rate);
+  if (take)
+    for (std::int64_t& t : ticks) t += fbx_take_span(*take).start;
+  const bool ascii = options.ascii || (options.character && !options.character->doc.binary);
   double spacing = grid.times.back() - grid.times.front();
   for (std::size_t f = 1; f < frames; ++f) spacing = std::min(spacing, grid.times[f] - grid.times[f - 1]);
 
   std::vector<EulerCurve> curves;
+  std::vector<std::optional<TranslationTrack>> tracks(n);
   std::vector<std::optional<TranslationCurve>> moves(n);
   std::vector<TrackKeys> rot_keys(n), pos_keys(n);
   curves.reserve(n);
   for (std::size_t j = 0; j < n; ++j) {
     auto m = method->make(reduced.rotations[j]);
     if (!m) return m.failure();
-    curves.emplace_back(std::move(*m), fbx_joint_axes(reduced, j), grid.times, kSlopeStep * spacing);
+    curves.emplace_back(std::move(*m), joints.frames[j], grid.times, kSlopeStep * spacing);
     auto keys = frames_of(reduced.rotations[j].times, grid, sk.joints[j].name);
     if (!keys) return keys.failure();
     rot_keys[j] = std::move(*keys);
-    if (const auto& tr = reduced.translations[j]) {
+    tracks[j] = reduced.translations[j];
+    if (!tracks[j] && joints.frames[j].keyed_translation)  // the rest offset, keyed where the rotation is
+      tracks[j] = TranslationTrack{reduced.rotations[j].times,
+                                   std::vector<Vec3>(reduced.rotations[j].times.size(), sk.joints[j].offset)};
+    if (const auto& tr = tracks[j]) {
       moves[j].emplace(*tr, options.translation);
       auto pk = frames_of(tr->times, grid, sk.joints[j].name);
       if (!pk) return pk.failure();
@@ -199,11 +233,22 @@ Result<FbxReducedResult> encode_reduced_fbx(const Clip& reduced, const Clip& sou
       out[j].has_translation = moves[j].has_value();
       if (moves[j])
         out[j].translation = translation_curves(*moves[j], pos_keys[j], dense.translation[j], grid.times, ticks,
-                                                cubic_translations && reduced.translations[j]->times.size() > 1);
+                                                cubic_translations && tracks[j]->times.size() > 1, curves[j]);
     }
-    auto bytes = encode_fbx_curves(reduced, out, options.ascii ? FbxEncoding::ascii : FbxEncoding::binary);
+    Result<std::string> bytes = make_error("");
+    if (options.character) {
+      keep_source_scaling(out, joints, take);
+      FbxCharacterTake written{fbx_character_out_take(reduced.name, std::move(out), take), {}};
+      for (const FbxModel* m : joints.models) written.model_ids.push_back(m->id);
+      auto file = encode_fbx_character(*options.character, {written}, grid.rate, ascii ? FbxEncoding::ascii : FbxEncoding::binary);
+      if (!file) return file.failure();
+      result.kept = file->kept;
+      bytes = std::move(file->bytes);
+    } else {
+      bytes = encode_fbx_curves(reduced, out, ascii ? FbxEncoding::ascii : FbxEncoding::binary);
+    }
     if (!bytes) return bytes.failure();
-    auto errors = fbx_replay_errors(*bytes, sk, dense, ticks, options.budgets, options.shell_distance);
+    auto errors = fbx_replay_errors(*bytes, sk, dense, ticks, options.budgets, options.shell_distance, joints.frames);
     if (!errors) return errors.failure();
 
     // Parents before children (the skeleton's order): a frame an ancestor repaired

@@ -30,7 +30,8 @@ double shell_distance_between(const Quat& ra, const Vec3& pa, const Quat& rb, co
 
 Result<FbxReplayErrors> fbx_replay_errors(const std::string& bytes, const Skeleton& skeleton, const DenseClip& source,
                                           const std::vector<std::int64_t>& frame_ticks,
-                                          const std::vector<FbxJointBudget>& budgets, double shell_distance) {
+                                          const std::vector<FbxJointBudget>& budgets, double shell_distance,
+                                          const std::vector<FbxJointFrame>& joint_frames) {
   const std::string label = "the written FBX";
   Result<FbxDocument> doc = parse_fbx_nodes(bytes, label);
   if (!doc) return doc.failure();
@@ -61,7 +62,7 @@ Result<FbxReplayErrors> fbx_replay_errors(const std::string& bytes, const Skelet
     for (std::size_t j = 0; j < n; ++j) {
       const FbxLclValues v = fbx_lcl_values(take, *model[j], node[j], static_cast<double>(frame_ticks[f]));
       rotation[j] = fbx_node_rotation(*model[j], v.rotation);
-      translation[j] = Vec3(v.translation[0], v.translation[1], v.translation[2]);
+      translation[j] = joint_frames[j].clip_translation(Vec3(v.translation[0], v.translation[1], v.translation[2]), rotation[j]);
       source_rotation[j] = source.rotation[j][f];
       source_translation[j] = source.translation[j][f];
       out.rotation_deg[j][f] = angular_distance(rotation[j], source_rotation[j]) * kDegrees;

@@ -23,11 +23,13 @@ struct FbxReplayErrors {
 
 // `bytes` parsed, read (io/fbx/fbx_curves.h) and evaluated (io/fbx/fbx_transform.h) in its
 // first take at `frame_ticks` (one per source frame), each joint's node found by
-// name, against `source` (whose skeleton is `skeleton`). Shell errors only for
+// name, against `source` (whose skeleton is `skeleton`), its translations mapped
+// back through each joint's frame (one per joint). Shell errors only for
 // joints whose budget has one. Errors: the file does not parse, has no take, or
 // lacks a joint's node.
 Result<FbxReplayErrors> fbx_replay_errors(const std::string& bytes, const Skeleton& skeleton, const DenseClip& source,
                                           const std::vector<std::int64_t>& frame_ticks,
-                                          const std::vector<FbxJointBudget>& budgets, double shell_distance);
+                                          const std::vector<FbxJointBudget>& budgets, double shell_distance,
+                                          const std::vector<FbxJointFrame>& joint_frames);
 
 }  // namespace rotinterp

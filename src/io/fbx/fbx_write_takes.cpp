@@ -148,7 +148,7 @@ void write_take_objects(FbxWriteDocument& doc, const FbxOutTake& take, const Fbx
   e.end();
   e.end();
   e.begin("AnimationLayer");
-  e.i64(ids.layer).str(e.object_name("BaseLayer", "AnimLayer")).str("");
+  e.i64(ids.layer).str(e.object_name(take.layer, "AnimLayer")).str("");
   e.end();
   const std::vector<FbxOutJoint>& curves = take.curves;
   for (std::size_t j = 0; j < curves.size(); ++j) {

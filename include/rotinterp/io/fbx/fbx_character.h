@@ -32,6 +32,7 @@
 #include "rotinterp/io/fbx/fbx_curves.h"
 #include "rotinterp/io/fbx/fbx_nodes.h"
 #include "rotinterp/io/fbx/fbx_write.h"
+#include "rotinterp/io/files/euler.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -63,6 +64,45 @@ struct FbxKept {
   std::string text() const;
 };
 
+// How one joint's clip motion maps onto its model's Lcl curves, from
+// T·Roff·Rp·Rpre·R·Rpost⁻¹·Rp⁻¹·Soff·Sp·S·Sp⁻¹ (io/fbx/fbx_transform.h) with S the
+// model's scaling at the take's start: the clip rotation Q = Rpre·R·Rpost⁻¹ and the
+// clip translation (T + constant + Q·rotated) · parent_scale, where parent_scale is
+// the scale the reader baked into the joint's frame (divided out again here). Our
+// own writer's joints (no pre/post rotation, no pivots) have the identity frame.
+struct FbxJointFrame {
+  EulerAxes axes{2, 1, 0};  // the model's rotation order, outermost first
+  Quat pre = Quat::Identity(), post = Quat::Identity();
+  Vec3 constant = Vec3::Zero(), rotated = Vec3::Zero();
+  double parent_scale = 1.0;
+  // Whether the model's static Lcl Translation cannot hold the joint's rest offset
+  // (pivots, or another value): the joint is keyed even without a translation track.
+  bool keyed_translation = false;
+  Quat lcl_rotation(const Quat& q) const { return (pre.conjugate() * q * post).normalized(); }
+  Vec3 lcl_translation(const Vec3& t, const Quat& q) const { return t / parent_scale - constant - q * rotated; }
+  Vec3 clip_translation(const Vec3& lcl, const Quat& q) const { return (lcl + constant + q * rotated) * parent_scale; }
+};
+
+// The take of `source` a clip named `name` was read from: the one of that name, else
+// the first; nullptr without takes.
+const FbxTake* fbx_character_source_take(const FbxCharacter& source, const std::string& name);
+
+// Each joint's frame and model, in `clip`'s joint order. Errors: a joint with no
+// model of its name, or several.
+struct FbxCharacterJoints {
+  std::vector<FbxJointFrame> frames;
+  std::vector<const FbxModel*> models;
+};
+Result<FbxCharacterJoints> fbx_character_joints(const Clip& clip, const FbxCharacter& source, const FbxTake* take);
+
+// The source's own Lcl Scaling where `take` animates it, keyed at each joint's
+// rotation key times (a clip has no scale): written back with the curves.
+void keep_source_scaling(std::vector<FbxOutJoint>& curves, const FbxCharacterJoints& joints, const FbxTake* take);
+
+// A take written over the source's take `replaced` (or nullptr): named `name` ("clip"
+// if empty), these curves, and the replaced take's layer name where the names agree.
+FbxOutTake fbx_character_out_take(const std::string& name, std::vector<FbxOutJoint> curves, const FbxTake* replaced);
+
 // The curves of `clip` (valid, read from `source`) in the conventions of its
 // models: a key at every key time of the clip, clip time t at FBX time `take`'s
 // start + t (0 without a take); translations with the scale the reader baked into
@@ -73,10 +113,6 @@ struct FbxCharacterTake {
   std::vector<std::int64_t> model_ids;  // per joint of the clip
 };
 Result<FbxCharacterTake> fbx_character_take(const Clip& clip, const FbxCharacter& source, const FbxTake* take);
-
-// Each joint's rotation order, Pre/PostRotation and pivots as the source's model
-// of its name holds them (the conventions fbx_character_take writes in).
-Result<std::vector<const FbxModel*>> fbx_character_models(const Skeleton& skeleton, const FbxCharacter& source);
 
 // The source's tree with its animation replaced by `takes` (in order, the first the
 // active one; their model_ids the source's), at `rate` where they share one, in

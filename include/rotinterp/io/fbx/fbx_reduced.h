@@ -24,13 +24,18 @@
 //    within budget or no key is left to add or correct.
 // Rotation keys share their times over the three axes (one key time counts once,
 // as reduce counts a key).
+// From an FBX character (options.character): the curves are in its models' own
+// conventions (io/fbx/fbx_character.h FbxJointFrame), keyed on its source take's
+// time axis, and the file checked is the character's tree with them as its one take.
 #pragma once
 
 #include "rotinterp/clip/clip.h"
 #include "rotinterp/clip/translation_curve.h"
 #include "rotinterp/core/result.h"
+#include "rotinterp/io/fbx/fbx_character.h"
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -49,7 +54,9 @@ struct FbxReducedOptions {
   TranslationInterp translation = TranslationInterp::cubic;
   std::vector<FbxJointBudget> budgets;  // one per joint
   double shell_distance = 0.0;          // clip units; > 0 where a shell budget is set
-  bool ascii = false;                   // ASCII FBX 7.4 (default binary)
+  bool ascii = false;                   // ASCII FBX 7.4 (default binary; a character's ASCII source: ASCII)
+  // The FBX character the source clip was read from, or null: the skeleton alone.
+  const FbxCharacter* character = nullptr;
 };
 
 struct FbxReducedResult {
@@ -62,6 +69,7 @@ struct FbxReducedResult {
   double max_shell_error = 0.0;        // clip units (0 without a shell budget)
   double max_translation_error = 0.0;  // clip units
   bool within_budget = true;           // every frame of every joint within its budget
+  std::optional<FbxKept> kept;         // what passed through, from a character
 };
 
 // `reduced` holds the kept keys (ReduceResult::reduced), `source` is the clip they

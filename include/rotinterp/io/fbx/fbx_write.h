@@ -89,6 +89,9 @@ Result<std::string> encode_fbx_curves(const Clip& clip, const std::vector<FbxOut
 struct FbxOutTake {
   std::string name;
   std::vector<FbxOutJoint> curves;
+  // Its AnimationLayer's name: a character's take keeps its source take's, which
+  // readers name actions by (Blender: "OBJECT|TAKE" where the two names agree).
+  std::string layer = "BaseLayer";
 };
 // The FBX file of `clip`'s skeleton and unit with these takes (each some rotation
 // curve with keys on every joint; every take's joints in the first take's rotation

@@ -27,13 +27,10 @@ std::vector<BlenderCharacter> blender_characters(const std::vector<std::pair<std
       c.meshes.push_back({m.at("name").get<std::string>(), m.at("vertices").get<std::size_t>(),
                           m.at("faces").get<std::size_t>(), m.at("materials").get<std::size_t>(),
                           m.at("groups").get<std::vector<std::string>>()});
-    for (const auto& a : r.at("actions")) {
-      const std::string name = a.get<std::string>();
-      const std::size_t first = name.find('|'), last = name.rfind('|');
-      c.takes.insert(first != std::string::npos && last > first ? name.substr(first + 1, last - first - 1) : name);
-    }
-    for (const auto& p : r.at("poses"))
-      c.poses.push_back({p.at("time").get<double>(), point(p.at("min")), point(p.at("max")), point(p.at("centroid"))});
+    for (const auto& take : r.at("takes")) c.takes.insert(take.get<std::string>());
+    for (const auto& [take, poses] : r.at("poses").items())
+      for (const auto& p : poses)
+        c.poses[take].push_back({p.at("time").get<double>(), point(p.at("min")), point(p.at("max")), point(p.at("centroid"))});
     out.push_back(std::move(c));
   }
   return out;
@@ -41,12 +38,19 @@ std::vector<BlenderCharacter> blender_characters(const std::vector<std::pair<std
 
 PoseDeviation pose_deviation(const BlenderCharacter& ours, const BlenderCharacter& source) {
   PoseDeviation d;
-  if (!source.poses.empty()) d.height = source.poses.front().high.z() - source.poses.front().low.z();
-  for (std::size_t i = 0; i < std::min(ours.poses.size(), source.poses.size()); ++i) {
-    const BlenderPose &a = ours.poses[i], &b = source.poses[i];
-    for (const auto& [p, q] : {std::pair{a.low, b.low}, {a.high, b.high}, {a.centroid, b.centroid}})
-      d.distance = std::max(d.distance, (p - q).cwiseAbs().maxCoeff());
-    ++d.times;
+  if (!source.poses.empty() && !source.poses.begin()->second.empty()) {
+    const BlenderPose& first = source.poses.begin()->second.front();
+    d.height = first.high.z() - first.low.z();
+  }
+  for (const auto& [take, theirs] : source.poses) {
+    const auto mine = ours.poses.find(take);
+    if (mine == ours.poses.end()) continue;
+    for (std::size_t i = 0; i < std::min(mine->second.size(), theirs.size()); ++i) {
+      const BlenderPose &a = mine->second[i], &b = theirs[i];
+      for (const auto& [p, q] : {std::pair{a.low, b.low}, {a.high, b.high}, {a.centroid, b.centroid}})
+        d.distance = std::max(d.distance, (p - q).cwiseAbs().maxCoeff());
+      ++d.times;
+    }
   }
   return d;
 }

@@ -1,13 +1,14 @@
 // Shared by the character tests: Blender imports a source FBX character and what
 // rotinterp wrote from it (tests/clients/blender_character.py), and the two are
 // compared as a user sees them, with nothing fitted: the meshes, the takes, and the
-// deformed meshes at the same three times.
+// deformed meshes at the same three times of each take.
 #pragma once
 
 #include "io/io_test_util.h"
 #include "rotinterp/core/rotation.h"
 
 #include <filesystem>
+#include <map>
 #include <set>
 #include <string>
 #include <utility>
@@ -32,8 +33,8 @@ struct BlenderPose {
 
 struct BlenderCharacter {
   std::vector<BlenderMesh> meshes;
-  std::set<std::string> takes;  // the take of each action ("OBJECT|TAKE|LAYER")
-  std::vector<BlenderPose> poses;  // first, middle, last
+  std::set<std::string> takes;  // the take of each action (blender_character.py: its name without "OBJECT|")
+  std::map<std::string, std::vector<BlenderPose>> poses;  // per take: first, middle, last
 };
 
 // Runs Blender once on (source, ours) pairs; `step`: the grid (s) the middle time
@@ -42,7 +43,9 @@ std::vector<BlenderCharacter> blender_characters(const std::vector<std::pair<std
                                                  double step, const std::filesystem::path& dir);
 
 // The largest difference between the two's bounding boxes and centroids at the
-// same times (metres), and the figure's height (the source's box at its first time).
+// same times of the same take (metres), and the figure's height (the source's box
+// at its first take's first time). `times`: the times compared, over every take of
+// the source; a take of the source that ours lacks compares none.
 struct PoseDeviation {
   double distance = 0.0, height = 0.0;
   std::size_t times = 0;

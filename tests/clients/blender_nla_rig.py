@@ -1,11 +1,14 @@
-# Run by the client tests: blender -b --factory-startup --python blender_nla_rig.py -- OUT_STEM
+# Run by the client tests: blender -b --factory-startup --python blender_nla_rig.py -- OUT_STEM [skinned]
 # Builds a three-bone armature with two actions of different lengths and start frames
 # ("Walk" frames 1-21, "Wave" frames 10-45, each on an NLA track, 30 fps) and exports
 # it as Blender users do: OUT_STEM.fbx with every action baked as a take
 # (bake_anim_use_all_actions) and OUT_STEM.glb with an animation per NLA track.
+# `skinned`: a character, the armature deforming a mesh of its own (a tube around the
+# bones, a vertex group per bone, weights blended along it, one material).
 import math, sys
 import bpy
-out = sys.argv[sys.argv.index("--") + 1]
+args = sys.argv[sys.argv.index("--") + 1:]
+out, skinned = args[0], "skinned" in args[1:]
 bpy.ops.wm.read_factory_settings(use_empty=True)
 scene = bpy.context.scene
 scene.render.fps = 30
@@ -44,6 +47,33 @@ def make_action(name, first, last, amp):
     obj.animation_data.action = None
     return act
 
+
+
+def add_skinned_tube(bone_names, rings=13, sides=8, radius=0.15, length=1.5):
+    """A tube along the bones (Z), each vertex weighted to the bones nearest it."""
+    verts = [(radius * math.cos(2 * math.pi * s / sides), radius * math.sin(2 * math.pi * s / sides),
+              length * r / (rings - 1)) for r in range(rings) for s in range(sides)]
+    faces = [(r * sides + s, r * sides + (s + 1) % sides, (r + 1) * sides + (s + 1) % sides, (r + 1) * sides + s)
+             for r in range(rings - 1) for s in range(sides)]
+    mesh = bpy.data.meshes.new("Body")
+    mesh.from_pydata(verts, [], faces)
+    mesh.materials.append(bpy.data.materials.new("Skin"))
+    body = bpy.data.objects.new("Body", mesh)
+    scene.collection.objects.link(body)
+    body.parent = obj
+    body.modifiers.new("Armature", "ARMATURE").object = obj
+    span = length / len(bone_names)
+    groups = [body.vertex_groups.new(name=n) for n in bone_names]
+    for i, (_, _, z) in enumerate(verts):
+        weights = [max(0.0, 1.0 - abs(z - span * (b + 0.5)) / span) for b in range(len(bone_names))]
+        total = sum(weights)
+        for group, w in zip(groups, weights):
+            if w > 0.0:
+                group.add([i], w / total, "REPLACE")
+
+
+if skinned:
+    add_skinned_tube(["Hips", "Spine", "Arm"])
 make_action("Walk", 1, 21, 0.6)
 make_action("Wave", 10, 45, 1.2)
 bpy.ops.object.mode_set(mode="OBJECT")

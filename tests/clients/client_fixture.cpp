@@ -51,6 +51,15 @@ nlohmann::json run_blender(const std::string& script, const std::string& args, c
   return nlohmann::json::parse(in);
 }
 
+std::string make_blender_rig(const std::filesystem::path& dir, bool skinned) {
+  const std::string stem = (dir / "rig").string(), log = (dir / "rig.log").string();
+  const std::string make = "blender -b --factory-startup --python '" + std::string(ROTINTERP_SOURCE_DIR) +
+                           "/tests/clients/blender_nla_rig.py' -- '" + stem + "'" + (skinned ? " skinned" : "") + " > '" +
+                           log + "' 2>&1";
+  if (std::system(make.c_str()) != 0) throw std::runtime_error("Blender could not make the rig:\n" + read_text(log));
+  return stem;
+}
+
 std::vector<BlenderImport> blender_imports(const std::vector<std::string>& files, const std::filesystem::path& dir) {
   const nlohmann::json all = run_blender("blender_dump.py", "", files, dir, "blender");
   std::vector<BlenderImport> out;

@@ -45,6 +45,11 @@ BlenderImport playing(const BlenderImport& b, const std::string& action);
 nlohmann::json run_blender(const std::string& script, const std::string& args, const std::vector<std::string>& files,
                            const std::filesystem::path& dir, const std::string& stem);
 
+// Runs tests/clients/blender_nla_rig.py: a Blender-made armature with two takes
+// (Walk, Wave), `skinned` deforming a mesh of its own; returns the stem of the
+// DIR/rig.fbx and DIR/rig.glb it exported. Throws where Blender fails.
+std::string make_blender_rig(const std::filesystem::path& dir, bool skinned);
+
 // Runs Blender once on `files` (a BVH may end in "@SCALE", its global_scale;
 // default 0.01) and returns each import by its entry in `files`.
 std::vector<BlenderImport> blender_imports(const std::vector<std::string>& files, const std::filesystem::path& dir);

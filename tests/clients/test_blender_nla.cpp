@@ -11,7 +11,6 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
-#include <cstdlib>
 
 namespace rotinterp::test {
 namespace {
@@ -29,10 +28,7 @@ std::string action_named(const BlenderImport& b, const std::string& take) {
 
 TEST(BlenderNla, EveryTakeOfABlenderExportComesBackAsOneActionPlayedAsTheSource) {
   const TempDir dir;
-  const std::string stem = (dir / "rig").string();
-  const std::string make = "blender -b --factory-startup --python '" + std::string(ROTINTERP_SOURCE_DIR) +
-                           "/tests/clients/blender_nla_rig.py' -- '" + stem + "' > '" + (dir / "make.log").string() + "' 2>&1";
-  ASSERT_EQ(std::system(make.c_str()), 0) << read_text(dir / "make.log");
+  const std::string stem = make_blender_rig(dir.path(), false);
   std::vector<std::string> files;
   for (const char* ext : {".fbx", ".glb"}) {
     const std::string source = stem + ext, ours = (dir / (std::string("ours") + ext)).string();

@@ -244,6 +244,8 @@ Status reduce_one_file(const std::string& input, const ReduceArgs& a, const Redu
       w.gltf_cubic_rotations = method == "gltf-cubic";
       w.gltf_cubic_translations = opt.translation == TranslationInterp::cubic;
       w.on_warning = warn;
+      w.source = input;
+      w.on_kept = [&file_run](const std::string& kept) { file_run.kept = kept; };
       written = write_clip(first.result.reduced, o.output, w);
     } else if (fbx) {
       written = write_reduced_fbx(o.output, *clip, first, opt, a.quiet || !o.print);
@@ -289,6 +291,7 @@ Status reduce_one_file(const std::string& input, const ReduceArgs& a, const Redu
                r.max_rotation_deg, mm > 0.0 ? fmt::format(", {:.4f} mm shell", r.max_shell_mm) : std::string(), r.seconds);
   }
   if (!a.quiet && first.result.cycle) fmt::print("  {}\n", cycle_text(first.result));
+  if (!a.quiet && !file_run.kept.empty()) fmt::print("  {}\n", file_run.kept);
   return Ok{};
 }
 

@@ -103,6 +103,7 @@ Result<nlohmann::json> animation(Builder& b, const Clip& clip, const GltfKeys& k
   const int input = keys.own_times ? -1 : time_accessor(b, times);
   nlohmann::json samplers = nlohmann::json::array(), channels = nlohmann::json::array();
   for (std::size_t j = 0; j < clip.skeleton.joints.size(); ++j) {
+    if (targets.node[j] == JointTargets::kNone) continue;
     auto channel = [&](int output, const char* path, int in = -1, const char* interpolation = "LINEAR") {
       samplers.push_back({{"input", in < 0 ? input : in}, {"output", output}, {"interpolation", interpolation}});
       channels.push_back({{"sampler", samplers.size() - 1}, {"target", {{"node", targets.node[j]}, {"path", path}}}});

@@ -8,7 +8,9 @@
 #include "rotinterp/io/files/input_file.h"
 #include "rotinterp/io/gltf/gltf_source.h"
 
+#include <algorithm>
 #include <cmath>
+#include <set>
 #include <cstring>
 #include <stdexcept>
 
@@ -22,6 +24,9 @@ using namespace gltf;
 constexpr double kUnitScaleTolerance = 1e-5;
 // Values of a channel within this (relative to max(1, |value|)) hold still: float round-off.
 constexpr double kStill = 1e-5;
+// A rotation key at most this from the rest rotation (sine of half the angle between
+// them: 2e-6 rad) is at rest; float round-off of stored keys is ~1e-7.
+constexpr double kAtRest = 1e-6;
 
 // The uniform scale the reader baked into a node's children's translations: the cube
 // root of its static scale's volume; 1 for none, a non-positive or a near-1 one.
@@ -48,7 +53,30 @@ std::vector<double> ancestor_scales(const json& doc) {
   return out;
 }
 
+// Whether joint j of `clip` leaves its rest: a translation track (the reader makes
+// one only where it moves), or a rotation key off the rest rotation.
+bool leaves_rest(const Clip& clip, std::size_t j) {
+  if (clip.translations[j]) return true;
+  const Quat& rest = clip.skeleton.joints[j].rest_rotation;
+  for (const Quat& q : clip.rotations[j].keys)
+    if ((rest.conjugate() * q).vec().norm() > kAtRest) return true;
+  return false;
+}
+
+// The nodes the source's animation named `name` targets (none where it has no such animation).
+std::set<std::size_t> nodes_animated_by(const json& doc, const std::string& name) {
+  std::set<std::size_t> out;
+  for (const json& animation : doc.value("animations", json::array()))
+    if (animation.value("name", std::string()) == name)
+      for (const json& channel : animation.value("channels", json::array()))
+        if (channel.at("target").contains("node")) out.insert(whole(channel.at("target"), "node"));
+  return out;
+}
+
 // Where each joint's channels go; errors name the joint that has no node of its own.
+// A joint gets channels where the source's animation of the take's name animates
+// its node or where it leaves its rest, so that a take keeps the source's channels
+// (and readers the source's actions); every joint where that leaves none.
 JointTargets joint_targets(const json& doc, const Clip& clip) {
   const std::vector<int> node = gltf_node_of_joints(clip.skeleton, node_names(doc));
   const std::vector<double> scales = ancestor_scales(doc);
@@ -62,6 +90,11 @@ JointTargets joint_targets(const json& doc, const Clip& clip) {
     out.node.push_back(n);
     out.translation_scale.push_back(metres_per_unit(clip) / scales[n]);
   }
+  const std::set<std::size_t> animated = nodes_animated_by(doc, clip.name);
+  std::vector<std::size_t> written = out.node;
+  for (std::size_t j = 0; j < written.size(); ++j)
+    if (!animated.count(written[j]) && !leaves_rest(clip, j)) written[j] = JointTargets::kNone;
+  if (std::any_of(written.begin(), written.end(), [](std::size_t n) { return n != JointTargets::kNone; })) out.node = written;
   return out;
 }
 

@@ -33,9 +33,11 @@ struct Builder {
   int accessor(std::size_t start, std::size_t count, const char* type, nlohmann::json extra = nlohmann::json::object());
 };
 
-// Where each joint's channels go: its node, and its translations' factor from clip
-// units to the file's numbers (metres, divided by any scale of its ancestors).
+// Where each joint's channels go: its node (kNone: the joint gets no channel), and
+// its translations' factor from clip units to the file's numbers (metres, divided by
+// any scale of its ancestors).
 struct JointTargets {
+  static constexpr std::size_t kNone = static_cast<std::size_t>(-1);
   std::vector<std::size_t> node;
   std::vector<double> translation_scale;
 };

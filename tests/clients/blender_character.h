@@ -1,5 +1,5 @@
-// Shared by the character tests: Blender imports a source FBX character and what
-// rotinterp wrote from it (tests/clients/blender_character.py), and the two are
+// Shared by the character tests: Blender imports a source FBX or GLB character and
+// what rotinterp wrote from it (tests/clients/blender_character.py), and the two are
 // compared as a user sees them, with nothing fitted: the meshes, the takes, and the
 // deformed meshes at the same three times.
 #pragma once
@@ -33,6 +33,7 @@ struct BlenderPose {
 struct BlenderCharacter {
   std::vector<BlenderMesh> meshes;
   std::set<std::string> takes;  // the take of each action ("OBJECT|TAKE|LAYER")
+  std::size_t actions = 0;      // every action Blender made (one per take and object it moves)
   std::vector<BlenderPose> poses;  // first, middle, last
 };
 
@@ -48,5 +49,19 @@ struct PoseDeviation {
   std::size_t times = 0;
 };
 PoseDeviation pose_deviation(const BlenderCharacter& ours, const BlenderCharacter& source);
+
+struct CharacterCase {
+  std::string source;   // under kData, or an absolute path
+  std::string command;  // "resample … --fps 30" or "reduce …"; IN and -o OUT put after the verb
+};
+
+// Runs each case's command to DIR/N`extension`, which must print what it kept and
+// warn of no lost mesh, and which assimp's command line must read; then Blender
+// imports each source and output (blender_characters, `step`), and the two must
+// show the same meshes and takes, and deformed meshes within 0.1 % of the figure's
+// height at the three times. Returns the imports (source, ours, per case; none where
+// a command failed).
+std::vector<BlenderCharacter> expect_same_character(const std::vector<CharacterCase>& cases, double step,
+                                                   const std::filesystem::path& dir, const std::string& extension);
 
 }  // namespace rotinterp::test

@@ -1,7 +1,7 @@
 # Run by the character tests:
 #   blender -b --factory-startup --python blender_character.py -- OUT.json STEP SOURCE OURS [SOURCE OURS]...
-# Imports each FBX file into an empty scene with Blender's own importer, default
-# options, and dumps the character as a user sees it: every mesh (vertex and face
+# Imports each FBX or GLB file into an empty scene with Blender's own importer for
+# it, default options, and dumps the character as a user sees it: every mesh (vertex and face
 # counts, vertex-group names, material count), every action, and the DEFORMED
 # meshes (every vertex as the armature poses it, world space, metres): their
 # bounding box and centroid at three times of the active action, a SOURCE's first
@@ -12,7 +12,13 @@ import json
 import sys
 
 import bpy
+import numpy
 from mathutils import Vector
+
+# Debian's Blender 3.4 glTF importer still calls numpy.bool, which Debian 12's numpy
+# (1.24) removed: every glTF mesh import fails without the alias (bool, as it was).
+if not hasattr(numpy, "bool"):
+    numpy.bool = bool
 
 args = sys.argv[sys.argv.index("--") + 1:]
 out_path, step, files = args[0], float(args[1]), args[2:]
@@ -20,7 +26,10 @@ results = {}
 times = []
 for index, path in enumerate(files):
     bpy.ops.wm.read_factory_settings(use_empty=True)
-    bpy.ops.import_scene.fbx(filepath=path)
+    if path.lower().endswith((".glb", ".gltf")):
+        bpy.ops.import_scene.gltf(filepath=path)
+    else:
+        bpy.ops.import_scene.fbx(filepath=path)
     scene = bpy.context.scene
     fps = scene.render.fps / scene.render.fps_base
     meshes = sorted((o for o in scene.objects if o.type == "MESH"), key=lambda o: o.name)
@@ -34,7 +43,8 @@ for index, path in enumerate(files):
         "poses": [],
     }
     if action:
-        # The importer puts FBX time 0 at frame 1 (its anim_offset).
+        # The FBX importer puts FBX time 0 at frame 1 (its anim_offset); a source and
+        # ours go through the same importer, so the glTF one's offset cancels too.
         r["range"] = [(f - 1) / fps for f in action.frame_range]
         if index % 2 == 0:  # a source: its times
             first, last = r["range"]

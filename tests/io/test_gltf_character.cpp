@@ -241,6 +241,25 @@ TEST(GltfCharacter, TheWrittenAnimationsReadBackAsTheTakesUnderTheScaledArmature
   }
 }
 
+TEST(GltfCharacter, AGltfOutputKeepsTheCharacterWithItsOneBufferBesideIt) {
+  const test::TempDir dir;
+  write_character(dir);
+  std::filesystem::create_directory(dir / "out");
+  const Written w = write_from({read_take(dir / "character.gltf", "Idle")}, dir / "character.gltf", dir / "out" / "idle.gltf");
+  ASSERT_TRUE(w.status) << w.status.error();
+  ASSERT_EQ(w.kept.size(), 1u);
+  const json doc = json::parse(test::read_text(dir / "out" / "idle.gltf"));
+  ASSERT_EQ(doc["buffers"].size(), 1u);
+  const std::string bin = test::read_text(dir / "out" / doc["buffers"][0]["uri"].get<std::string>());
+  EXPECT_EQ(bin.size(), doc["buffers"][0]["byteLength"].get<std::size_t>());
+  EXPECT_EQ(doc["meshes"].size(), 1u);
+  ASSERT_EQ(doc["animations"].size(), 1u);
+  EXPECT_EQ(doc["animations"][0]["name"], "Idle");
+  // The image, a file beside the source and not beside the output, is in the buffer.
+  EXPECT_FALSE(doc["images"][0].contains("uri"));
+  EXPECT_EQ(view_bytes(doc, bin, doc["skins"][0]["inverseBindMatrices"]).size(), 3u * 64u);
+}
+
 TEST(GltfCharacter, AJointWithNoNodeOfItsNameWritesTheSkeletonAloneAndSaysWhy) {
   const test::TempDir dir;
   write_character(dir);

@@ -11,7 +11,9 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstring>
+#include <functional>
 #include <set>
 
 namespace rotinterp {
@@ -273,6 +275,35 @@ TEST(GltfCharacter, AJointWithNoNodeOfItsNameWritesTheSkeletonAloneAndSaysWhy) {
   EXPECT_NE(w.warnings[0].find("joint 'Neck' has no node of its name"), std::string::npos) << w.warnings[0];
   EXPECT_NE(w.warnings[1].find("are not written"), std::string::npos) << w.warnings[1];
   EXPECT_FALSE(read_glb(dir / "out.glb").first.contains("meshes"));
+}
+
+TEST(GltfCharacter, WhatCannotBeKeptIsSaidInOneLineAndTheSkeletonIsWritten) {
+  // A joint node stored as a matrix (no animation may target it); a buffer view with
+  // an extension (it would point into the buffers we rewrite).
+  const std::vector<std::pair<std::function<void(json&)>, std::string>> cases = {
+      {[](json& doc) {
+         doc["nodes"][3].erase("translation");
+         doc["nodes"][3]["matrix"] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 50, 0, 1};
+       },
+       "joint 'Spine' is a node stored as a matrix"},
+      {[](json& doc) { doc["bufferViews"][0]["extensions"] = {{"EXT_meshopt_compression", {{"buffer", 0}}}}; },
+       "buffer view 0 has extensions"}};
+  for (const auto& [edit, why] : cases) {
+    const test::TempDir dir;
+    write_character(dir);
+    const Clip walk = read_take(dir / "character.gltf", "Walk");
+    json doc = json::parse(test::read_text(dir / "character.gltf"));
+    edit(doc);
+    test::write_text(dir / "character.gltf", doc.dump());
+    const Written w = write_from({walk}, dir / "character.gltf", dir / "out.glb");
+    ASSERT_TRUE(w.status) << w.status.error();
+    EXPECT_TRUE(w.kept.empty()) << why;
+    ASSERT_FALSE(w.warnings.empty()) << why;
+    EXPECT_NE(w.warnings[0].find("the character is not kept: "), std::string::npos) << w.warnings[0];
+    EXPECT_NE(w.warnings[0].find(why), std::string::npos) << w.warnings[0];
+    EXPECT_EQ(std::count(w.warnings[0].begin(), w.warnings[0].end(), '\n'), 0) << w.warnings[0];
+    EXPECT_FALSE(read_glb(dir / "out.glb").first.contains("meshes")) << why;
+  }
 }
 
 }  // namespace

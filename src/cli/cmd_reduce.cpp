@@ -169,7 +169,8 @@ void add_reduce_command(CLI::App& app, int& exit_code) {
       ->required();
   add_output_option(*sub, a->output,
                     "Output: .json (per joint the kept key frames, times and values), .glb/.gltf (sparse keys, "
-                    "LINEAR for slerp, CUBICSPLINE for gltf-cubic) or .fbx (sparse Euler curves replaying the method: "
+                    "LINEAR for slerp, CUBICSPLINE for gltf-cubic; from a glTF character, the source with only its "
+                    "animation replaced) or .fbx (sparse Euler curves replaying the method: "
                     "linear keys for slerp/nlerp, cubic keys with user tangents for the others, keys added where our "
                     "reader's replay would miss the budget; no --loop); default none: print the table. For several inputs "
                     "or a folder: the output directory, the inputs' layout mirrored under it");

@@ -59,6 +59,7 @@ struct ReduceFileRun {
   std::size_t frames = 0, joints = 0, source_keys = 0, kept_keys = 0;
   double max_rotation_deg = 0.0, max_shell_mm = 0.0, seconds = 0.0;
   bool usage_error = false;  // a --tolerance-for joint the clip does not have
+  std::string kept;          // a character kept (.fbx, .glb/.gltf): "OUT: what passed through kept"
 };
 
 // How one file is reduced: where its output and report go (either may be empty),

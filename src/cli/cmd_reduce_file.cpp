@@ -120,7 +120,7 @@ std::string cycle_text(const ReduceResult& r) {
 // The kept keys as FBX curves replaying the method (io/fbx/fbx_reduced.h), refused
 // unless our reader's replay of the file is within the budget at every frame.
 Status write_reduced_fbx(const std::string& path, const Clip& source, const std::string& input, const MethodRun& run,
-                         const ReduceOptions& opt, bool quiet) {
+                         const ReduceOptions& opt, bool quiet, std::string& kept) {
   FbxReducedOptions o;
   // A character's file with its reduced curves (io/fbx/fbx_character.h), else the skeleton alone.
   std::optional<FbxCharacter> character;
@@ -149,7 +149,7 @@ Status write_reduced_fbx(const std::string& path, const Clip& source, const std:
                "translation\n",
                fbx->rotation_keys, fbx->translation_keys, run.result.kept_keys, fbx->added_keys, fbx->corrected_keys,
                fbx->max_rotation_error_deg, fbx->max_shell_error * mm, fbx->max_translation_error * mm);
-  if (!quiet && fbx->kept) fmt::print("  {}: {}\n", path, fbx->kept->text());
+  if (fbx->kept) kept = path + ": " + fbx->kept->text();
   return write_file_atomically(path, [&](std::ostream& out) -> Status {
     out.write(fbx->bytes.data(), static_cast<std::streamsize>(fbx->bytes.size()));
     return Ok{};
@@ -254,9 +254,11 @@ Status reduce_one_file(const std::string& input, const ReduceArgs& a, const Redu
       w.gltf_cubic_rotations = method == "gltf-cubic";
       w.gltf_cubic_translations = opt.translation == TranslationInterp::cubic;
       w.on_warning = warn;
+      w.source = input;
+      w.on_kept = [&file_run](const std::string& kept) { file_run.kept = kept; };
       written = write_clip(first.result.reduced, o.output, w);
     } else if (fbx) {
-      written = write_reduced_fbx(o.output, *clip, input, first, opt, a.quiet || !o.print);
+      written = write_reduced_fbx(o.output, *clip, input, first, opt, a.quiet || !o.print, file_run.kept);
     } else {
       opt.method = first.method;
       written = write_keys_json(o.output, *clip, first, opt, metres_per_unit, budgets);
@@ -299,6 +301,7 @@ Status reduce_one_file(const std::string& input, const ReduceArgs& a, const Redu
                r.max_rotation_deg, mm > 0.0 ? fmt::format(", {:.4f} mm shell", r.max_shell_mm) : std::string(), r.seconds);
   }
   if (!a.quiet && first.result.cycle) fmt::print("  {}\n", cycle_text(first.result));
+  if (!a.quiet && !file_run.kept.empty()) fmt::print("  {}\n", file_run.kept);
   return Ok{};
 }
 

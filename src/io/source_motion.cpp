@@ -29,22 +29,6 @@ FileSource frames_source(Clip clip) {
   return out;
 }
 
-// The glTF node of each joint, matched by the name assimp gives it; -1 where no node,
-// or more than one, carries the joint's name (the clip's `#` suffixes do not say which).
-std::vector<int> gltf_node_of_joints(const Clip& clip, const std::vector<std::string>& node_names) {
-  std::map<std::string, int> node;
-  for (std::size_t i = 0; i < node_names.size(); ++i) {
-    auto [it, fresh] = node.emplace(node_names[i], static_cast<int>(i));
-    if (!fresh) it->second = -1;
-  }
-  std::vector<int> out;
-  for (const Joint& joint : clip.skeleton.joints) {
-    const auto it = node.find(joint.name);
-    out.push_back(it == node.end() ? -1 : it->second);
-  }
-  return out;
-}
-
 // assimp reads a glTF key time t (float seconds) as the float nearest t·1000 ticks, so
 // the clip's key lies within |t|·2⁻²⁴ of the sampler's (one float rounding). A clip time
 // within four times that of a sampler key is taken as that key: a STEP sampler then
@@ -69,7 +53,7 @@ Result<FileSource> gltf_source(const std::filesystem::path& path, ClipFileInfo&&
   if (info.selected >= file->animations.size() || file->animations[info.selected].name != info.animations[info.selected].name)
     return make_error(label + ": --method source: the file's animations read otherwise than assimp's");
   auto animation = std::make_shared<const GltfAnimation>(std::move(file->animations[info.selected]));
-  const std::vector<int> node = gltf_node_of_joints(info.clip, file->node_names);
+  const std::vector<int> node = gltf_node_of_joints(info.clip.skeleton, file->node_names);
   FileSource out;
   out.clip = std::move(info.clip);
   out.replays = "the file's animation samplers";

@@ -8,6 +8,7 @@
 #include "rotinterp/io/import/import.h"
 #include "rotinterp/io/fbx/fbx_character.h"
 #include "rotinterp/io/fbx/fbx_write.h"
+#include "rotinterp/io/gltf/gltf_character.h"
 #include "rotinterp/io/gltf/gltf_write.h"
 #include "rotinterp/io/files/key_times.h"
 
@@ -79,21 +80,47 @@ std::vector<std::string> unique_take_names(const std::vector<Clip>& takes) {
   return names;
 }
 
-// FBX from an FBX character: the source's tree with our animation (io/fbx/fbx_character.h);
-// nullopt where it is no such source or the character cannot be kept (a warning says why).
+bool is_gltf(const FormatInfo* format) { return format && (format->id == FormatId::glb || format->id == FormatId::gltf); }
+
+GltfKeys gltf_keys(const WriteOptions& options) {
+  return {options.gltf_own_key_times, options.gltf_cubic_rotations, options.gltf_cubic_translations};
+}
+
+// The character of the source kept: an FBX from an FBX 7 file (io/fbx/fbx_character.h),
+// a .glb/.gltf from a glTF file (io/gltf/gltf_character.h), on_kept told what passed
+// through; nullopt where the source is no such file or the character cannot be kept
+// (a warning says why), and the caller writes the skeleton alone.
 std::optional<Status> write_character(const std::vector<Clip>& takes, const std::filesystem::path& path,
                                       const WriteOptions& options) {
-  if (!keeps_fbx_character(takes.front(), options.source)) return std::nullopt;
-  auto file = fbx_character_file(takes, options.source, options.fbx_ascii);
-  if (!file) {
-    if (options.on_warning) options.on_warning(path.string() + ": the character is not kept: " + file.error());
+  const FormatInfo* source = options.source.empty() ? nullptr : format_of(options.source);
+  const FormatInfo* output = format_of(path);
+  if (takes.front().source_meshes == 0 || !source || !output) return std::nullopt;
+  auto not_kept = [&](const std::string& why) -> std::optional<Status> {
+    if (options.on_warning) options.on_warning(path.string() + ": the character is not kept: " + why);
     return std::nullopt;
+  };
+  auto kept = [&](const std::string& what) {
+    if (options.on_kept) options.on_kept(path.string() + ": " + what);
+  };
+  if (output->id == FormatId::fbx && keeps_fbx_character(takes.front(), options.source)) {
+    auto file = fbx_character_file(takes, options.source, options.fbx_ascii);
+    if (!file) return not_kept(file.error());
+    kept(file->kept.text());
+    return write_file_atomically(path, [&](std::ostream& out) -> Status {
+      out.write(file->bytes.data(), static_cast<std::streamsize>(file->bytes.size()));
+      return Ok{};
+    });
   }
-  if (options.on_kept) options.on_kept(path.string() + ": " + file->kept.text());
-  return write_file_atomically(path, [&](std::ostream& out) -> Status {
-    out.write(file->bytes.data(), static_cast<std::streamsize>(file->bytes.size()));
-    return Ok{};
-  });
+  if (is_gltf(source) && is_gltf(output)) {
+    std::vector<const Clip*> pointers;
+    for (const Clip& c : takes) pointers.push_back(&c);
+    auto written = write_gltf_character(pointers, options.source, path, output->id == FormatId::glb, gltf_keys(options));
+    if (!written && written.error_kind() != ErrorKind::cannot_write) return not_kept(written.error());
+    if (!written) return Status(written.failure());
+    kept(written->text());
+    return Status(Ok{});
+  }
+  return std::nullopt;
 }
 
 void warn_meshes_lost(const Clip& clip, const std::string& label, const WriteOptions& options) {
@@ -123,7 +150,7 @@ Status write_clip(const Clip& clip, const std::filesystem::path& path, const Wri
   const std::string ext = lower_extension(path);
   const FormatInfo* known = format_of(path);
   const FormatId id = known && known->writes ? known->id : FormatId::dae;  // dae: assimp's exporters below
-  if (id == FormatId::fbx)
+  if (id == FormatId::fbx || id == FormatId::glb || id == FormatId::gltf)
     if (std::optional<Status> written = write_character({clip}, path, options)) return *written;
   if (can_write_format(path)) warn_meshes_lost(clip, label, options);
   if (id == FormatId::bvh) {
@@ -138,8 +165,7 @@ Status write_clip(const Clip& clip, const std::filesystem::path& path, const Wri
     });
   }
   if (id == FormatId::glb || id == FormatId::gltf)
-    return write_gltf(clip, path, id == FormatId::glb,
-                      GltfKeys{options.gltf_own_key_times, options.gltf_cubic_rotations, options.gltf_cubic_translations});
+    return write_gltf(clip, path, id == FormatId::glb, gltf_keys(options));
   const std::optional<std::string> format = assimp_export_format(ext);
   if (!format)
     return make_error(label + ": cannot write '" + (ext.empty() ? std::string("(no extension)") : ext) +
@@ -165,6 +191,16 @@ Status write_clips(const std::vector<Clip>& takes, const std::filesystem::path& 
   }
   if (takes.empty()) return make_error(label + ": no takes to write");
   const std::vector<std::string> names = unique_take_names(takes);
+  // A character keeps the source's own time axis, not from t = 0. A glTF one needs
+  // no common skeleton: each take's joints are the source's nodes of their names.
+  auto character = [&]() -> std::optional<Status> {
+    if (takes.front().source_meshes == 0 || options.source.empty()) return std::nullopt;
+    std::vector<Clip> renamed = takes;
+    for (std::size_t i = 0; i < takes.size(); ++i) renamed[i].name = names[i];
+    return write_character(renamed, path, options);
+  };
+  if (!fbx)
+    if (std::optional<Status> written = character()) return *written;
   std::vector<Clip> named;
   named.reserve(takes.size());
   for (std::size_t i = 0; i < takes.size(); ++i) {
@@ -174,18 +210,14 @@ Status write_clips(const std::vector<Clip>& takes, const std::filesystem::path& 
     named.push_back(from_time_zero(takes[i]));
     named.back().name = names[i];
   }
-  if (fbx) {  // on the source's own time axis, not from t = 0
-    std::vector<Clip> renamed = takes;
-    for (std::size_t i = 0; i < takes.size(); ++i) renamed[i].name = names[i];
-    if (std::optional<Status> written = write_character(renamed, path, options)) return *written;
-  }
+  if (fbx)
+    if (std::optional<Status> written = character()) return *written;
   const auto with_meshes = std::find_if(takes.begin(), takes.end(), [](const Clip& c) { return c.source_meshes > 0; });
   if (with_meshes != takes.end()) warn_meshes_lost(*with_meshes, label, options);
   if (!fbx) {  // glTF or GLB
     std::vector<const Clip*> pointers;
     for (const Clip& c : named) pointers.push_back(&c);
-    return write_gltf(pointers, path, known->id == FormatId::glb,
-                      GltfKeys{options.gltf_own_key_times, options.gltf_cubic_rotations, options.gltf_cubic_translations});
+    return write_gltf(pointers, path, known->id == FormatId::glb, gltf_keys(options));
   }
   Result<std::string> bytes = encode_fbx_clips(named, options.fbx_ascii ? FbxEncoding::ascii : FbxEncoding::binary);
   if (!bytes) return bytes.failure(label + ": ");

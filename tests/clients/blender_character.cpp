@@ -1,10 +1,15 @@
 #include "blender_character.h"
 
 #include "client_fixture.h"
+#include "support/run_cli.h"
+
+#include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 
 namespace rotinterp::test {
 
@@ -28,6 +33,7 @@ std::vector<BlenderCharacter> blender_characters(const std::vector<std::pair<std
                           m.at("faces").get<std::size_t>(), m.at("materials").get<std::size_t>(),
                           m.at("groups").get<std::vector<std::string>>()});
     for (const auto& take : r.at("takes")) c.takes.insert(take.get<std::string>());
+    c.actions = r.at("actions").get<std::size_t>();
     for (const auto& [take, poses] : r.at("poses").items())
       for (const auto& p : poses)
         c.poses[take].push_back({p.at("time").get<double>(), point(p.at("min")), point(p.at("max")), point(p.at("centroid"))});
@@ -53,6 +59,49 @@ PoseDeviation pose_deviation(const BlenderCharacter& ours, const BlenderCharacte
     }
   }
   return d;
+}
+
+void expect_assimp_reads(const std::string& path) {
+  const std::string log = path + ".assimp";
+  EXPECT_EQ(std::system(("assimp info '" + path + "' >'" + log + "' 2>&1").c_str()), 0) << path << ": " << read_text(log);
+}
+
+std::vector<BlenderCharacter> expect_same_character(const std::vector<CharacterCase>& cases, double step,
+                                                   const std::filesystem::path& dir, const std::string& extension) {
+  std::vector<std::pair<std::string, std::string>> pairs;
+  for (const CharacterCase& c : cases) {
+    const std::string in = (kData / c.source).string();
+    const std::string out = (dir / (std::to_string(pairs.size()) + extension)).string();
+    const std::string verb = c.command.substr(0, c.command.find(' '));
+    const auto r = run_cli(verb + " '" + in + "' -o '" + out + "'" + c.command.substr(verb.size()));
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    if (r.exit_code != 0) return {};
+    EXPECT_NE(r.out.find(" kept"), std::string::npos) << c.source << ": " << r.out;
+    EXPECT_EQ(r.err.find("are not written"), std::string::npos) << c.source << ": " << r.err;
+    EXPECT_EQ(r.err.find("not kept"), std::string::npos) << c.source << ": " << r.err;
+    expect_assimp_reads(out);
+    pairs.emplace_back(in, out);
+  }
+  const std::vector<BlenderCharacter> imports = blender_characters(pairs, step, dir);
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    const BlenderCharacter &source = imports[2 * i], &ours = imports[2 * i + 1];
+    const std::string what = cases[i].source + " (" + cases[i].command + ")";
+    EXPECT_FALSE(source.meshes.empty()) << what;
+    EXPECT_EQ(ours.meshes, source.meshes) << what;
+    const std::set<std::string> takes = cases[i].take.empty() ? source.takes : std::set<std::string>{cases[i].take};
+    EXPECT_EQ(ours.takes, takes) << what;
+    const PoseDeviation d = pose_deviation(ours, source);
+    // Every take that moves bones (a glTF import makes an action per take and object;
+    // those of objects other than the armature move none) is compared at three times.
+    const auto posed = static_cast<std::size_t>(std::count_if(takes.begin(), takes.end(), [&](const std::string& t) { return source.poses.count(t) > 0; }));
+    EXPECT_GE(posed, 1u) << what;
+    EXPECT_EQ(d.times, 3 * posed) << what;
+    EXPECT_LE(d.distance, 1e-3 * d.height) << what;
+    std::printf("[ blender ] %s: %zu vertices, %zu take(s), worst %.4g mm of %.4g m at %zu times\n", what.c_str(),
+                ours.meshes.empty() ? 0 : ours.meshes.front().vertices, ours.takes.size(), d.distance * 1000, d.height,
+                d.times);
+  }
+  return imports;
 }
 
 }  // namespace rotinterp::test

@@ -1,5 +1,5 @@
-// Shared by the character tests: Blender imports a source FBX character and what
-// rotinterp wrote from it (tests/clients/blender_character.py), and the two are
+// Shared by the character tests: Blender imports a source FBX or GLB character and
+// what rotinterp wrote from it (tests/clients/blender_character.py), and the two are
 // compared as a user sees them, with nothing fitted: the meshes, the takes, and the
 // deformed meshes at the same three times of each take.
 #pragma once
@@ -34,6 +34,7 @@ struct BlenderPose {
 struct BlenderCharacter {
   std::vector<BlenderMesh> meshes;
   std::set<std::string> takes;  // the take of each action (blender_character.py: its name without "OBJECT|")
+  std::size_t actions = 0;  // every action Blender made (one per take and object it moves)
   std::map<std::string, std::vector<BlenderPose>> poses;  // per take: first, middle, last
 };
 
@@ -51,5 +52,23 @@ struct PoseDeviation {
   std::size_t times = 0;
 };
 PoseDeviation pose_deviation(const BlenderCharacter& ours, const BlenderCharacter& source);
+
+// assimp's command line reads `path` (its output beside it, `path`.assimp).
+void expect_assimp_reads(const std::string& path);
+
+struct CharacterCase {
+  std::string source;   // under kData, or an absolute path
+  std::string command;  // "resample … --fps 30" or "reduce …"; IN and -o OUT put after the verb
+  std::string take;     // the one take the command writes, "" where it writes every take of the source
+};
+
+// Runs each case's command to DIR/N`extension`, which must print what it kept, warn
+// of no lost mesh, and be read by assimp's command line; then Blender imports each
+// source and output (blender_characters, `step`), and the two must show the same
+// meshes and takes, and deformed meshes within 0.1 % of the figure's height at the
+// three times of each take. Returns the imports (source, ours, per case; none where a
+// command failed).
+std::vector<BlenderCharacter> expect_same_character(const std::vector<CharacterCase>& cases, double step,
+                                                   const std::filesystem::path& dir, const std::string& extension);
 
 }  // namespace rotinterp::test

@@ -1,7 +1,7 @@
 # Run by the character tests:
 #   blender -b --factory-startup --python blender_character.py -- OUT.json STEP SOURCE OURS [SOURCE OURS]...
-# Imports each FBX file into an empty scene with Blender's own importer, default
-# options, and dumps the character as a user sees it: every mesh (vertex and face
+# Imports each FBX or GLB file into an empty scene with Blender's own importer for
+# it, default options, and dumps the character as a user sees it: every mesh (vertex and face
 # counts, vertex-group names, material count), every action, and per take the
 # DEFORMED meshes (every vertex as the armature poses it playing that take's
 # action, world space, metres): their bounding box and centroid at three times, a
@@ -14,7 +14,13 @@ import json
 import sys
 
 import bpy
+import numpy
 from mathutils import Vector
+
+# Debian's Blender 3.4 glTF importer still calls numpy.bool, which Debian 12's numpy
+# (1.24) removed: every glTF mesh import fails without the alias (bool, as it was).
+if not hasattr(numpy, "bool"):
+    numpy.bool = bool
 
 
 def take_of(action_name):
@@ -26,7 +32,9 @@ def moves_bones(action):
 
 
 def deformed_box(scene, meshes, t, fps):
-    frame = 1 + t * fps  # the importer puts FBX time 0 at frame 1 (its anim_offset)
+    # The FBX importer puts FBX time 0 at frame 1 (its anim_offset); a source and ours
+    # go through the same importer, so the glTF one's offset cancels too.
+    frame = 1 + t * fps
     scene.frame_set(int(frame // 1), subframe=frame % 1)
     graph = bpy.context.evaluated_depsgraph_get()
     points = []
@@ -47,7 +55,10 @@ results = {}
 times = {}  # take → the source's three times
 for index, path in enumerate(files):
     bpy.ops.wm.read_factory_settings(use_empty=True)
-    bpy.ops.import_scene.fbx(filepath=path)
+    if path.lower().endswith((".glb", ".gltf")):
+        bpy.ops.import_scene.gltf(filepath=path)
+    else:
+        bpy.ops.import_scene.fbx(filepath=path)
     scene = bpy.context.scene
     fps = scene.render.fps / scene.render.fps_base
     meshes = sorted((o for o in scene.objects if o.type == "MESH"), key=lambda o: o.name)
@@ -55,6 +66,7 @@ for index, path in enumerate(files):
     r = {
         "fps": fps,
         "takes": sorted({take_of(a.name) for a in bpy.data.actions}),
+        "actions": len(bpy.data.actions),
         "meshes": [{"name": o.data.name, "vertices": len(o.data.vertices), "faces": len(o.data.polygons),
                     "groups": [g.name for g in o.vertex_groups], "materials": len(o.data.materials)} for o in meshes],
         "poses": {},

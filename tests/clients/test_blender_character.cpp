@@ -7,58 +7,15 @@
 #include "client_fixture.h"
 #include "rotinterp/io/fbx/fbx_character.h"
 #include "rotinterp/io/read.h"
-#include "support/run_cli.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstdio>
-#include <cstdlib>
 #include <fstream>
 
 namespace rotinterp::test {
 namespace {
-
-struct Case {
-  std::string source;   // under the shared data, or a path of its own
-  std::string command;  // "resample … --fps 30" or "reduce …"; IN and OUT inserted after the verb
-  std::string take;     // the one take the command writes, "" where it writes every take of the source
-};
-
-// assimp's command line reads `path` (its output beside it, `path`.assimp).
-void expect_assimp_reads(const std::string& path) {
-  const std::string log = path + ".assimp";
-  EXPECT_EQ(std::system(("assimp info '" + path + "' >'" + log + "' 2>&1").c_str()), 0) << path << ": " << read_text(log);
-}
-
-void expect_same_character(const std::vector<Case>& cases, double step, const std::filesystem::path& dir) {
-  std::vector<std::pair<std::string, std::string>> pairs;
-  for (const Case& c : cases) {
-    const std::string in = (kData / c.source).string();
-    const std::string out = (dir / (std::to_string(pairs.size()) + ".fbx")).string();
-    const std::string verb = c.command.substr(0, c.command.find(' '));
-    const auto r = run_cli(verb + " '" + in + "' -o '" + out + "'" + c.command.substr(verb.size()));
-    ASSERT_EQ(r.exit_code, 0) << r.err;
-    EXPECT_NE(r.out.find(" kept"), std::string::npos) << c.source << ": " << r.out;
-    EXPECT_EQ(r.err.find("are not written"), std::string::npos) << c.source << ": " << r.err;
-    expect_assimp_reads(out);
-    pairs.emplace_back(in, out);
-  }
-  const std::vector<BlenderCharacter> imports = blender_characters(pairs, step, dir);
-  for (std::size_t i = 0; i < pairs.size(); ++i) {
-    const BlenderCharacter &source = imports[2 * i], &ours = imports[2 * i + 1];
-    const std::string what = cases[i].source + " (" + cases[i].command + ")";
-    ASSERT_FALSE(source.meshes.empty()) << what;
-    EXPECT_EQ(ours.meshes, source.meshes) << what;
-    const std::set<std::string> takes = cases[i].take.empty() ? source.takes : std::set<std::string>{cases[i].take};
-    EXPECT_EQ(ours.takes, takes) << what;
-    const PoseDeviation d = pose_deviation(ours, source);
-    EXPECT_EQ(d.times, 3 * takes.size()) << what;
-    EXPECT_LE(d.distance, 1e-3 * d.height) << what;
-    std::printf("[ blender ] %s: %zu vertices, %zu take(s), worst %.4g mm of %.4g m at %zu times\n", what.c_str(),
-                ours.meshes.front().vertices, ours.takes.size(), d.distance * 1000, d.height, d.times);
-  }
-}
 
 TEST(BlenderCharacter, ResampledFbxCharactersDeformAsTheirSources) {
   // 24 Hz and 30 Hz sources at 30 Hz: every 1/6 s is a key of both.
@@ -66,7 +23,7 @@ TEST(BlenderCharacter, ResampledFbxCharactersDeformAsTheirSources) {
   expect_same_character({{"fbx/ufbx_maya_kenney_character_7700_binary.fbx", "resample --fps 30", ""},
                          {"fbx/digitalrune_Dude.fbx", "resample --fps 30", ""},
                          {"fbx/digitalrune_Marine_Run.fbx", "resample --fps 30", ""}},
-                        1.0 / 6.0, dir.path());
+                        1.0 / 6.0, dir.path(), ".fbx");
 }
 
 TEST(BlenderCharacter, ReducedFbxCharactersDeformAsTheirSources) {
@@ -76,7 +33,7 @@ TEST(BlenderCharacter, ReducedFbxCharactersDeformAsTheirSources) {
   expect_same_character({{"fbx/ufbx_maya_kenney_character_7700_binary.fbx", reduce, ""},
                          {"fbx/digitalrune_Dude.fbx", reduce, ""},
                          {"fbx/digitalrune_Marine_Run.fbx", reduce, ""}},
-                        1.0 / 6.0, dir.path());
+                        1.0 / 6.0, dir.path(), ".fbx");
 }
 
 // A character Blender makes itself (blender_nla_rig.py, skinned): two takes. Every
@@ -91,7 +48,7 @@ TEST(BlenderCharacter, EveryTakeOfABlenderMadeCharacterDeformsAsItsSource) {
                          {rig, "resample --anim 1 --fps 30", "Rig|Wave"},
                          {rig, reduce + "0", "Rig|Walk"},
                          {rig, reduce + "1", "Rig|Wave"}},
-                        1.0 / 6.0, dir.path());
+                        1.0 / 6.0, dir.path(), ".fbx");
 }
 
 // An inconsistent source, made from Marine_Run in memory: one with no bind pose, one

@@ -31,7 +31,8 @@ Status write_clip(const Clip& clip, const std::filesystem::path& path, const Wri
 // Names: an empty name becomes "Take N" (N its place, from 1); a name already used
 // gets " 2", " 3", … Every take must have the first's skeleton (joint names,
 // parents, offsets and rest rotations within 1e-9, and its unit), else a one-line
-// error naming the take that differs. Single-take formats (BVH, CSV, Collada) are
+// error naming the take that differs; a glTF character (WriteOptions::source) needs
+// none, each take driving the source's nodes of its joints' names. Single-take formats (BVH, CSV, Collada) are
 // refused ("FILE: a .bvh file holds one take; put {anim} in the output name to write
 // one file per take"). Atomic like write_clip: the previous file stays whole on error.
 // write_clip of one clip writes the same bytes as before (take name "clip" if empty).

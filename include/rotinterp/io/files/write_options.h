@@ -28,8 +28,9 @@ struct WriteOptions {
   std::function<void(const std::string&)> on_warning;
   // The file the clip was read from, empty if none. An FBX written from an FBX 7
   // file with meshes is that file with only its animation replaced
-  // (io/fbx/fbx_character.h); on_kept then receives what passed through, one line
-  // ("<file>: 1 mesh, 1 skin (32 bones), 1 material kept").
+  // (io/fbx/fbx_character.h), and so is a .glb/.gltf written from a glTF file with
+  // meshes (io/gltf/gltf_character.h); on_kept then receives what passed through,
+  // one line ("<file>: 1 mesh, 1 skin (32 bones), 1 material kept").
   std::string source;
   std::function<void(const std::string&)> on_kept;
   // Threads for a long BVH's text (core/work_queue.h thread_count: 0 = as many as the

@@ -22,6 +22,7 @@
 // times, which read_file_source (io/source_motion.h) takes as the sampler's keys.
 #pragma once
 
+#include "rotinterp/clip/clip.h"
 #include "rotinterp/core/result.h"
 #include "rotinterp/core/rotation.h"
 
@@ -72,6 +73,11 @@ struct GltfAnimations {
   // One warning per sampler whose keys the reader repaired (io/files/key_checks.h K3).
   std::vector<std::string> repairs;
 };
+
+// The glTF node of each joint, matched by the name the reader gives it (node_names
+// above); -1 where no node, or more than one, carries the joint's name (the clip's
+// `#` suffixes do not say which).
+std::vector<int> gltf_node_of_joints(const Skeleton& skeleton, const std::vector<std::string>& node_names);
 
 // Reads a .glb or .gltf file's nodes and animations. Buffers come from the GLB's
 // binary chunk, data: URIs (base64) or files beside the .gltf given by a relative URI

@@ -131,5 +131,26 @@ TEST(MetricChoice, TheCommandWritesOnlyTheChosenColumnsAndRefusesUnknownNames) {
   EXPECT_NE(bad.err.find("valid: all, " + metric_names()), std::string::npos) << bad.err;
 }
 
+TEST(MetricChoice, ShardsOfOneChoiceMergeAsASingleRunAndOtherChoicesAreRefused) {
+  const fs::path in = test::clip_dir("metrics_shards", false);
+  const fs::path single = test::fresh_dir("metrics_single"), a = test::fresh_dir("metrics_a"),
+                 b = test::fresh_dir("metrics_b"), all = test::fresh_dir("metrics_all"),
+                 merged = test::fresh_dir("metrics_merged");
+  const std::string common = "eval " + in.string() + " -m slerp,c2 --keep-every 2,8 -q --no-plots -j 1 ";
+  ASSERT_EQ(test::run_cli(common + "--metrics smoothness,fk -o " + single.string()).exit_code, 0);
+  ASSERT_EQ(test::run_cli(common + "--metrics fk,smoothness --shard 1/2 -o " + a.string()).exit_code, 0);
+  ASSERT_EQ(test::run_cli(common + "--metrics fk,smoothness --shard 2/2 -o " + b.string()).exit_code, 0);
+  const auto r = test::run_cli("eval --merge " + a.string() + " " + b.string() + " -q -o " + merged.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(test::slurp(merged / "errors.csv"), test::slurp(single / "errors.csv"));
+  EXPECT_EQ(test::slurp(merged / "clips.csv"), test::slurp(single / "clips.csv"));
+
+  ASSERT_EQ(test::run_cli(common + "--shard 2/2 -o " + all.string()).exit_code, 0);
+  const auto mixed = test::run_cli("eval --merge " + a.string() + " " + all.string() + " -q -o " +
+                                   test::fresh_dir("metrics_mixed").string());
+  EXPECT_EQ(mixed.exit_code, 1);
+  EXPECT_NE(mixed.err.find("other options"), std::string::npos) << mixed.err;
+}
+
 }  // namespace
 }  // namespace rotinterp

@@ -197,7 +197,10 @@ int run(const EvalArgs& a) {
                                                     : "each synth clip's analytic motion (--truth)");
     if (table == TableFormat::text)
       fmt::print("wrote {}/{}, {}/{}, {}/{}{}\n", a.output, kErrorsCsvName, a.output, kClipsCsvName, a.output,
-                 kSummaryJsonName, a.no_plots || report->summary.clips == 0 ? "" : ", and plots (PNG, SVG)");
+                 kSummaryJsonName,
+                 a.no_plots || report->summary.clips == 0 || !report->summary.metrics.has(Metric::angle)
+                     ? ""
+                     : ", and plots (PNG, SVG)");
   }
   if (!report->failures.empty()) {
     std::vector<std::string> bad;

@@ -33,7 +33,7 @@ std::optional<Metric> summary_metric(std::string_view name) {
   static const std::map<std::string_view, Metric> of = {
       {"mean_deg", Metric::angle},           {"rms_deg", Metric::angle},
       {"p95_deg", Metric::angle},            {"max_deg", Metric::angle},
-      {"max_joint", Metric::angle},          {"worst", Metric::angle},
+      {"max_joint", Metric::angle},          {"worst", Metric::angle}, {"worst_clip", Metric::angle},
       {"clip_rms_median_deg", Metric::angle}, {"clip_p95_median_deg", Metric::angle},
       {"clip_max_median_deg", Metric::angle}, {"swing_rms_deg", Metric::swing_twist},
       {"twist_rms_deg", Metric::swing_twist}, {"pos_rms_pct", Metric::fk},

@@ -139,7 +139,8 @@ std::string summary_json(const RunRecord& r, const Summary& summary) {
   for (const SummaryEntry& e : summary.entries) results.push_back(chosen_only(entry_json(e, summary.seam), summary.metrics));
   j["clips_evaluated"] = summary.clips;
   j["results"] = std::move(results);
-  j["worst_clip"] = {{"clip", summary.worst_clip}, {"keep_every", summary.worst_keep_every}};
+  if (summary.metrics.has(*summary_metric("worst_clip")))
+    j["worst_clip"] = {{"clip", summary.worst_clip}, {"keep_every", summary.worst_keep_every}};
   j["weighting"] =
       "mean_deg, rms_deg, swing/twist, pos/shell RMS and smoothness weight every joint sample alike, so a clip "
       "counts by its samples x joints; p95_deg is the 95th percentile of the per-joint p95; clip_*_median_deg "

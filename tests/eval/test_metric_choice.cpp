@@ -126,6 +126,14 @@ TEST(MetricChoice, TheCommandWritesOnlyTheChosenColumnsAndRefusesUnknownNames) {
   EXPECT_TRUE(j["results"][0].contains("rms_deg"));
   EXPECT_TRUE(fs::exists(out / "error_vs_spacing.png"));
 
+  // Without angle: no plots, and no worst clip (it is the worst by angle).
+  const fs::path fk = test::fresh_dir("metrics_fk");
+  const auto f = test::run_cli(std::string("eval ") + kWalk + " -m slerp --keep-every 4 --metrics fk -o " + fk.string());
+  ASSERT_EQ(f.exit_code, 0) << f.err;
+  EXPECT_FALSE(fs::exists(fk / "error_vs_spacing.png"));
+  EXPECT_EQ(f.out.find("plots"), std::string::npos) << f.out;
+  EXPECT_FALSE(nlohmann::json::parse(test::slurp(fk / "summary.json")).contains("worst_clip"));
+
   const auto bad = test::run_cli(std::string("eval ") + kWalk + " --metrics angle,speed -o " + out.string());
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.err.find("valid: all, " + metric_names()), std::string::npos) << bad.err;

@@ -1,6 +1,6 @@
 // bench_eval: the cost of `rotinterp eval` against assimp importing the same files.
 //
-//   bench_eval [--repeat R] [--metrics [--method M]] [PATH...]      (default PATH: the shared real clips)
+//   bench_eval [--repeat R] [--metrics [--method M] | --angle-only] [PATH...]   (default PATH: the shared real clips)
 //
 // In one run, for the same files: (1) assimp alone — Assimp::Importer::ReadFile
 // with the flags read_clip uses, one file after another; (2) the whole evaluation
@@ -16,6 +16,9 @@
 // last, eval's own cost per joint-frame: each method's evaluate_method over the
 // clips' references prepared beforehand (curves and every metric; no reading, no files).
 // --metrics: that last part alone (--method: for that method only).
+// --angle-only: each method alone with eval --metrics angle (read_clip, the curves, the
+// angle error, the files), each run paired with an import run just before it: the
+// median of the pairs' CPU ratios against the import (goal ≤ 1.5, ≤ 3 for bf).
 #include "rotinterp/eval/batch.h"
 #include "rotinterp/eval/evaluate_clip.h"
 #include "rotinterp/batch/dataset.h"
@@ -67,8 +70,10 @@ const std::vector<std::string> kSeedMethods = {"slerp", "squad", "expmap", "nler
 
 // `only`: these methods; empty: all of them.
 double eval_all(const std::vector<fs::path>& inputs, int jobs, const fs::path& out, std::size_t& frames, double& cpu,
-                const std::vector<std::string>& only = {}) {
+                const std::vector<std::string>& only = {},
+                rotinterp::MetricSet metrics = rotinterp::MetricSet::all()) {
   rotinterp::EvalOptions o;
+  o.clip.metrics = metrics;
   o.inputs = inputs;
   o.output_dir = out;
   for (const rotinterp::MethodInfo& m : rotinterp::methods())
@@ -159,11 +164,36 @@ void print_metrics_alone(const std::vector<rotinterp::ClipReference>& refs, int 
   }
 }
 
+// --angle-only: per method, import then eval --metrics angle, `repeat` pairs in turn.
+void print_angle_only(const std::vector<std::string>& files, const std::vector<fs::path>& inputs, int repeat,
+                      const fs::path& out) {
+  rotinterp::MetricSet angle = rotinterp::MetricSet::none();
+  angle.add(rotinterp::Metric::angle);
+  std::printf("each method alone, eval --metrics angle -j 1 (read_clip included) / assimp import, CPU, median of %d "
+              "pairs run in turn:\n", repeat);
+  for (const rotinterp::MethodInfo& m : rotinterp::methods()) {
+    std::vector<double> ratios;
+    double best_eval = 1e300, best_import = 1e300, c_import, c_eval;
+    std::size_t frames = 0;
+    for (int r = 0; r < repeat; ++r) {
+      import_all(files, c_import);
+      eval_all(inputs, 1, out, frames, c_eval, {m.name}, angle);
+      ratios.push_back(c_eval / c_import);
+      best_eval = std::min(best_eval, c_eval), best_import = std::min(best_import, c_import);
+    }
+    std::sort(ratios.begin(), ratios.end());
+    const double median = ratios[ratios.size() / 2], goal = m.name == "bf" ? 3.0 : 1.5;
+    std::printf("  %-10s %.3f s / %.3f s (best)   ratio %.2f (pairs %.2f-%.2f; goal <= %.1f: %s)\n", m.name.c_str(),
+                best_eval, best_import, median, ratios.front(), ratios.back(), goal, median <= goal ? "met" : "not met");
+  }
+  fs::remove_all(out);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   int repeat = 3;
-  bool metrics_only = false;
+  bool metrics_only = false, angle_only = false;
   std::string method;
   std::vector<fs::path> inputs;
   for (int i = 1; i < argc; ++i) {
@@ -172,6 +202,8 @@ int main(int argc, char** argv) {
       repeat = std::max(1, std::atoi(argv[++i]));
     else if (a == "--metrics")
       metrics_only = true;
+    else if (a == "--angle-only")
+      angle_only = true;
     else if (a == "--method" && i + 1 < argc)
       method = argv[++i];
     else
@@ -188,12 +220,16 @@ int main(int argc, char** argv) {
     print_metrics_alone(references(*files), repeat, method);
     return 0;
   }
+  const fs::path out = fs::temp_directory_path() / ("rotinterp_bench_eval_" + std::to_string(::getpid()));
+  if (angle_only) {
+    print_angle_only(*files, inputs, repeat, out);
+    return 0;
+  }
   // Clip-frames: frames of every clip that loads.
   std::size_t clip_frames = 0, clips = 0;
   for (const std::string& f : *files)
     if (auto c = rotinterp::read_clip(f)) clip_frames += c->frame_count(), ++clips;
 
-  const fs::path out = fs::temp_directory_path() / ("rotinterp_bench_eval_" + std::to_string(::getpid()));
   double t_import = 1e300, t_j1 = 1e300, t_j2 = 1e300, c_import = 1e300, c_j1 = 1e300, c_seed = 1e300, c;
   std::size_t joint_frames = 0;
   for (int r = 0; r < repeat; ++r) {

@@ -113,8 +113,21 @@ Clip resample(const Clip& clip, const py::object& fps, const py::object& keep_ev
 // ---- evaluate --------------------------------------------------------------------------
 
 py::dict evaluate(const py::object& inputs, const std::optional<std::vector<std::string>>& method_names_in,
-                  const py::object& keep_every, int subframe, const py::object& shell_distance) {
+                  const py::object& keep_every, int subframe, const py::object& shell_distance,
+                  const py::object& metrics) {
   ClipEvalOptions o;
+  // As eval --metrics takes them: "angle,fk", or a list of names; None is all.
+  if (!metrics.is_none()) {
+    std::string list;
+    if (py::isinstance<py::str>(metrics)) {
+      list = metrics.cast<std::string>();
+    } else {
+      for (const py::handle name : metrics) list += (list.empty() ? "" : ",") + py::str(name).cast<std::string>();
+    }
+    const Result<MetricSet> chosen = parse_metrics(list);
+    if (!chosen) value_error("metrics: " + chosen.error());
+    o.metrics = *chosen;
+  }
   if (method_names_in) {
     o.methods = *method_names_in;
   } else {
@@ -191,7 +204,8 @@ py::dict evaluate(const py::object& inputs, const std::optional<std::vector<std:
       {"kind", np.attr("array")(kind, "str")},     {"unit", np.attr("array")(unit, "str")}};
   for (std::size_t c = 0; c < measured.size(); ++c) by_name.emplace(measured[c].name, values[c]);
   py::dict out;
-  for (const std::string& name : error_csv_schema().columns()) out[py::str(name)] = by_name.at(name);
+  for (const std::string& name : error_csv_schema(csv_metrics(o.metrics, false)).columns())
+    out[py::str(name)] = by_name.at(name);
   return out;
 }
 
@@ -259,7 +273,7 @@ void bind_commands(py::module_& m) {
         py::arg("range") = py::none(), py::arg("loop") = py::none());
   m.def("evaluate", &evaluate, py::arg("inputs"), py::arg("methods") = py::none(),
         py::arg("keep_every") = py::make_tuple(2, 4, 8, 16), py::arg("subframe") = 0,
-        py::arg("shell_distance") = py::float_(kDefaultShellDistanceMetres));
+        py::arg("shell_distance") = py::float_(kDefaultShellDistanceMetres), py::arg("metrics") = py::none());
 }
 
 }  // namespace rotinterp::python

@@ -171,16 +171,18 @@ def resample(clip, fps=None, keep_every=None, method=default_method, method_for=
     return _rotinterp.resample(clip, fps, keep_every, method, method_for or {}, translation, range, loop)
 
 
-def evaluate(inputs, methods=None, keep_every=(2, 4, 8, 16), subframe=0, shell_distance=0.03):
+def evaluate(inputs, methods=None, keep_every=(2, 4, 8, 16), subframe=0, shell_distance=0.03, metrics=None):
     """Evaluate interpolators on clips as ``rotinterp eval`` does, and return the rows of
     ``errors.csv`` as columns: a dict of numpy arrays that ``pandas.DataFrame`` takes as
     it is. inputs: a path, a Clip, or a list of them (a path's text is its clip id, as in
     the CSV; a Clip's id is its name). methods: names (default all). End Site rows have
     NaN in the rotation-only columns (empty cells in the CSV), rows of joints that are not
     feet NaN in the foot-contact columns; spacings N a clip has fewer than 2N + 1 frames for
-    give no rows. Releases the GIL."""
+    give no rows. metrics: as eval --metrics, names ("angle", "fk", …) or one comma list
+    (default all); only those are computed, and only their columns returned (no End Site
+    rows without "fk"). Releases the GIL."""
     return _rotinterp.evaluate(inputs, None if methods is None else list(methods), list(keep_every), subframe,
-                               shell_distance)
+                               shell_distance, metrics)
 
 
 def angle(a, b, scalar_first=False):

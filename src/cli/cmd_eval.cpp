@@ -6,6 +6,7 @@
 #include "progress_line.h"
 #include "rotinterp/clip/units.h"
 #include "rotinterp/eval/batch.h"
+#include "rotinterp/eval/metric_set.h"
 #include "rotinterp/batch/dataset.h"
 #include "rotinterp/eval/plots.h"
 #include "rotinterp/eval/source_truth.h"
@@ -55,6 +56,7 @@ struct EvalArgs {
   std::string per_frame;
   std::string table = "text";
   std::string loop = "off";  // --loop as written
+  std::string metrics = "all";
 };
 
 // --per-frame CLIP,METHOD,N (the clip id may itself hold commas: the last two fields are split off).
@@ -116,6 +118,9 @@ int run(const EvalArgs& a) {
     std::sort(o.clip.keep_every.begin(), o.clip.keep_every.end());
     o.clip.keep_every.erase(std::unique(o.clip.keep_every.begin(), o.clip.keep_every.end()), o.clip.keep_every.end());
     if (o.clip.keep_every.empty()) return fail_usage("--keep-every needs at least one value");
+    auto metrics = parse_metrics(a.metrics);
+    if (!metrics) return fail_usage("--metrics: " + metrics.error());
+    o.clip.metrics = *metrics;
     o.clip.subframe = a.subframe;
     auto shell = parse_length(a.shell_distance);
     if (!shell) return fail_usage("--shell-distance: " + shell.error());
@@ -192,7 +197,10 @@ int run(const EvalArgs& a) {
                                                     : "each synth clip's analytic motion (--truth)");
     if (table == TableFormat::text)
       fmt::print("wrote {}/{}, {}/{}, {}/{}{}\n", a.output, kErrorsCsvName, a.output, kClipsCsvName, a.output,
-                 kSummaryJsonName, a.no_plots || report->summary.clips == 0 ? "" : ", and plots (PNG, SVG)");
+                 kSummaryJsonName,
+                 a.no_plots || report->summary.clips == 0 || !report->summary.metrics.has(Metric::angle)
+                     ? ""
+                     : ", and plots (PNG, SVG)");
   }
   if (!report->failures.empty()) {
     std::vector<std::string> bad;
@@ -220,6 +228,10 @@ void add_eval_command(CLI::App& app, int& exit_code) {
   sub->add_option("--shard", args->shard,
                   "Evaluate shard I of N (I/N) of the sorted inputs, for a cluster (default: all)");
   sub->add_option("--merge", args->merge, "Combine the output directories of shard runs into -o DIR (default: off)");
+  sub->add_option("--metrics", args->metrics,
+                  "Comma list of the metrics to compute and report: " + metric_names() +
+                      " (seam with --loop); the others are neither computed nor written, and the plots need angle")
+      ->capture_default_str();
   sub->add_option("--subframe", args->subframe,
                   "Also measure K evenly spaced times between frames, against the original's slerp")
       ->capture_default_str()->check(CLI::Range(0, 1000));

@@ -50,7 +50,7 @@ double RunningError::rms() const { return count ? std::sqrt(sum_sq / static_cast
 // ---- rotation error -------------------------------------------------------------------
 
 RotationError rotation_error(const Quat* ref, const Quat* test, std::size_t n, const Vec3& bone_axis_in,
-                             std::vector<double>& scratch) {
+                             std::vector<double>& scratch, bool swing_twist) {
   RotationError out;
   scratch.resize(n);
   double* angle = scratch.data();
@@ -70,14 +70,14 @@ RotationError rotation_error(const Quat* ref, const Quat* test, std::size_t n, c
     const double en2 = e.coeffs().squaredNorm();
     if (ref[i].coeffs() == test[i].coeffs() || !(en2 > 0.0) || !std::isfinite(en2)) {
       angle[i] = 0.0;
-      out.swing.add(0.0);
-      out.twist.add(0.0);
+      if (swing_twist) out.swing.add(0.0), out.twist.add(0.0);
       continue;
     }
     double w = e.w();
     Vec3 v = e.vec();
     if (w < 0.0) w = -w, v = -v;
     angle[i] = 2.0 * half_angle(v.norm(), w);
+    if (!swing_twist) continue;
     const double p = v.dot(axis);
     const double tw2 = w * w + p * p;
     if (!has_axis || tw2 < kSwingTwistDegenerate * kSwingTwistDegenerate * en2) {

@@ -34,7 +34,8 @@ RunOptions run_options(const EvalOptions& e) {
           o.shell_distance_m, e.truth.name, e.animation,
           o.min_frames,       o.feet.feet,            o.feet.contact_height_m,
           o.feet.contact_speed_mps, o.feet.floor_m, e.unit,
-          o.loop ? (o.loop_form ? loop_form_name(*o.loop_form) : "auto") : "off"};
+          o.loop ? (o.loop_form ? loop_form_name(*o.loop_form) : "auto") : "off",
+          metrics_text(o.metrics)};
 }
 
 
@@ -231,7 +232,8 @@ Result<EvalReport> run_eval(const EvalOptions& opt) {
 
   EvalReport report;
   report.files = files.size();
-  ErrorsCsv csv(opt.output_dir / kErrorsCsvName, opt.clip.loop);
+  const MetricSet columns = csv_metrics(opt.clip.metrics, opt.clip.loop);
+  ErrorsCsv csv(opt.output_dir / kErrorsCsvName, columns);
   if (!csv.good()) return make_error(csv.failure());
   SummaryBuilder builder;
   const std::size_t jobs = worker_count(opt.jobs);
@@ -258,7 +260,8 @@ Result<EvalReport> run_eval(const EvalOptions& opt) {
                       "the file's path as found, file#take for a take of a file of several)");
 
   report.summary = builder.finish();
-  report.summary.seam = opt.clip.loop;
+  report.summary.seam = columns.has(Metric::seam);
+  report.summary.metrics = columns;
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   RunRecord record;
   record.version = ROTINTERP_VERSION;

@@ -33,7 +33,7 @@ class ShardReader {
     return r;
   }
   bool at_end() const { return !lookahead_; }
-  bool has_seam_columns() const { return parser_->has_seam_columns(); }
+  MetricSet columns() const { return parser_->metrics(); }
   const std::string& clip() const { return lookahead_->clip; }
   // The rows of the next clip.
   Result<std::vector<ErrorRow>> next_clip() {
@@ -109,11 +109,18 @@ Result<EvalReport> merge_eval(const std::vector<fs::path>& dirs, const fs::path&
   auto lock = DirectoryLock::acquire(out_dir);
   if (!lock) return lock.failure();
   const bool seam = merged.options.loop != "off";
-  for (const auto& r : readers)
-    if (r->has_seam_columns() != seam)
-      return make_error(std::string("a shard's errors.csv ") + (seam ? "lacks" : "has") +
-                        " the seam columns (seam_angle_deg … looped) its summary.json's loop option says");
-  ErrorsCsv csv(out_dir / kErrorsCsvName, seam);
+  auto chosen = parse_metrics(merged.options.metrics);
+  if (!chosen) return chosen.failure((dirs.front() / kSummaryJsonName).string() + ": ");
+  const MetricSet columns = csv_metrics(*chosen, seam);
+  for (const auto& r : readers) {
+    if (r->columns().has(Metric::seam) != columns.has(Metric::seam))
+      return make_error(std::string("a shard's errors.csv ") + (columns.has(Metric::seam) ? "lacks" : "has") +
+                        " the seam columns (seam_angle_deg … looped) its summary.json's loop and metrics options say");
+    if (r->columns() != columns)
+      return make_error("a shard's errors.csv has the columns of metrics " + metrics_text(r->columns()) +
+                        ", not those its summary.json's metrics option says (" + merged.options.metrics + ")");
+  }
+  ErrorsCsv csv(out_dir / kErrorsCsvName, columns);
   if (!csv.good()) return make_error(csv.failure());
   SummaryBuilder builder;
   std::string last_clip;
@@ -131,7 +138,8 @@ Result<EvalReport> merge_eval(const std::vector<fs::path>& dirs, const fs::path&
     ++report.clips_evaluated;
   }
   report.summary = builder.finish();
-  report.summary.seam = seam;
+  report.summary.seam = columns.has(Metric::seam);
+  report.summary.metrics = columns;
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (merged.version.empty()) merged.version = ROTINTERP_VERSION;
   merged.files = report.files;

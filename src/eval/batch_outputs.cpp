@@ -24,14 +24,14 @@ std::string utc_now() {
   return buf;
 }
 
-ErrorsCsv::ErrorsCsv(const fs::path& target, bool seam) : out_(target, TempKind::unnamed), seam_(seam) {
-  const std::string header = error_csv_schema(seam).header();
+ErrorsCsv::ErrorsCsv(const fs::path& target, MetricSet columns) : out_(target, TempKind::unnamed), columns_(columns) {
+  const std::string header = error_csv_schema(columns).header();
   (void)out_.write(header.data(), header.size());
 }
 
 void ErrorsCsv::add_clip(const std::vector<ErrorRow>& rows, SummaryBuilder& summary) {
   std::string text;
-  for (const ErrorRow& r : rows) text += format_error_row(r, seam_);
+  for (const ErrorRow& r : rows) text += format_error_row(r, columns_);
   (void)out_.write(text.data(), text.size());
   summary.add_clip(rows);
 }
@@ -56,7 +56,7 @@ Status write_outputs(const fs::path& dir, const RunRecord& record, const Summary
   if (!per_frame.empty())
     if (Status s = text_file(kPerFrameCsvName, per_frame); !s) return s;
   std::vector<std::unique_ptr<AtomicOutput>> plot_outputs;
-  const bool draw = plots && summary.clips > 0;
+  const bool draw = plots && summary.clips > 0 && summary.metrics.has(Metric::angle);  // the plots show angles
   if (draw)
     if (Status s = draw_plots(summary, dir, plot_outputs); !s) return s;
   std::vector<AtomicOutput*> all = {&csv.output()};

@@ -22,8 +22,8 @@ std::string utc_now();
 // the other outputs by write_outputs.
 class ErrorsCsv {
  public:
-  // `seam`: the seam columns of eval --loop.
-  ErrorsCsv(const std::filesystem::path& target, bool seam);
+  // `columns`: the metrics whose columns the file has (csv_metrics).
+  ErrorsCsv(const std::filesystem::path& target, MetricSet columns);
   bool good() const { return out_.status().ok(); }
   // Writes the rows of one clip and adds them to the summary.
   void add_clip(const std::vector<ErrorRow>& rows, SummaryBuilder& summary);
@@ -32,7 +32,7 @@ class ErrorsCsv {
 
  private:
   AtomicOutput out_;
-  bool seam_;
+  MetricSet columns_;
 };
 
 // Writes summary.json (the run record and the results) and the plots, then commits them with

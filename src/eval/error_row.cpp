@@ -8,6 +8,7 @@
 #include <iterator>
 #include <cmath>
 #include <cstdlib>
+#include <optional>
 
 namespace rotinterp {
 
@@ -34,6 +35,20 @@ bool is_joint_only(int c) {
 }
 // Foot-contact columns: filled on the rows of foot joints only.
 bool is_foot_only(int c) { return c >= kContactFrames && c <= kSkateSpeedRef; }
+// The metric that fills column `c`; none for the columns every file has.
+std::optional<Metric> metric_of(int c) {
+  if (c >= kMeanDeg && c <= kMaxDeg) return Metric::angle;
+  if (c == kSwingRmsDeg || c == kTwistRmsDeg) return Metric::swing_twist;
+  if (c >= kPosRms && c <= kPosMaxPct) return Metric::fk;
+  if (c == kShellRms || c == kShellMax) return Metric::shell;
+  if (c >= kAccRms && c <= kAccJumpMax) return Metric::smoothness;
+  if (is_foot_only(c)) return Metric::foot_skating;
+  return std::nullopt;
+}
+bool has_column(MetricSet columns, int c) {
+  const std::optional<Metric> m = metric_of(c);
+  return !m || columns.has(*m);
+}
 // Whether row `r` leaves column `c` empty.
 bool is_empty_for(const ErrorRow& r, int c) { return (r.end_site && is_joint_only(c)) || (!r.foot && is_foot_only(c)); }
 
@@ -87,35 +102,49 @@ const std::vector<ErrorValueColumn>& error_value_columns() {
   static const std::vector<ErrorValueColumn> columns = [] {
     std::vector<ErrorValueColumn> v;
     for (const Measured& m : kMeasured)
-      v.push_back({kColumnNames[m.col], m.field, is_joint_only(m.col), is_foot_only(m.col)});
+      v.push_back({kColumnNames[m.col], m.field, is_joint_only(m.col), is_foot_only(m.col), metric_of(m.col)});
     return v;
   }();
   return columns;
 }
 
-const CsvSchema& error_csv_schema(bool seam_columns) {
-  static const CsvSchema plain = [] {
-    std::vector<std::string> names(std::begin(kColumnNames), std::end(kColumnNames));
-    return CsvSchema(std::move(names));
-  }();
-  static const CsvSchema with_seam = [] {
-    std::vector<std::string> names;
-    for (const SeamColumn& c : kSeamColumns) names.emplace_back(c.name);
-    return plain + CsvSchema(std::move(names));
-  }();
-  return seam_columns ? with_seam : plain;
+MetricSet csv_metrics(MetricSet chosen, bool loop) {
+  MetricSet out = MetricSet::none();
+  for (int m = 0; m < kMetricCount; ++m)
+    if (chosen.has(static_cast<Metric>(m)) && (loop || static_cast<Metric>(m) != Metric::seam))
+      out.add(static_cast<Metric>(m));
+  return out;
 }
 
-std::string format_error_row(const ErrorRow& r, bool seam_columns) {
+const CsvSchema& error_csv_schema(MetricSet columns) {
+  // One schema per set of metrics, built once (2⁷ small schemas).
+  static const std::vector<CsvSchema> schemas = [] {
+    std::vector<CsvSchema> v;
+    for (unsigned bits = 0; bits < (1u << kMetricCount); ++bits) {
+      std::vector<std::string> names;
+      for (int c = 0; c < kColumnCount; ++c)
+        if (has_column(MetricSet::of_bits(bits), c)) names.emplace_back(kColumnNames[c]);
+      if (MetricSet::of_bits(bits).has(Metric::seam))
+        for (const SeamColumn& c : kSeamColumns) names.emplace_back(c.name);
+      v.emplace_back(std::move(names));
+    }
+    return v;
+  }();
+  return schemas[columns.bits()];
+}
+
+std::string format_error_row(const ErrorRow& r, MetricSet columns) {
   double values[kColumnCount] = {};
   for (const Measured& m : kMeasured) values[m.col] = r.*m.field;
-  CsvRow row(error_csv_schema(seam_columns));
+  CsvRow row(error_csv_schema(columns));
   row << r.clip << r.method << std::to_string(r.keep_every) << r.joint << std::to_string(r.frames);
-  for (int c = kMeanDeg; c < kSamples; ++c) row << (is_empty_for(r, c) ? "" : number(values[c]));
+  for (int c = kMeanDeg; c < kSamples; ++c)
+    if (has_column(columns, c)) row << (is_empty_for(r, c) ? "" : number(values[c]));
   row << std::to_string(r.samples) << number(r.height) << (r.end_site ? "end_site" : "joint");
-  for (int c = kKind + 1; c < kUnit; ++c) row << (is_empty_for(r, c) ? "" : number(values[c]));
+  for (int c = kKind + 1; c < kUnit; ++c)
+    if (has_column(columns, c)) row << (is_empty_for(r, c) ? "" : number(values[c]));
   row << r.unit;
-  if (seam_columns)
+  if (columns.has(Metric::seam))
     for (const SeamColumn& c : kSeamColumns) row << (r.seam && !r.end_site ? number(r.*c.field) : "");
   return row.line();
 }
@@ -128,14 +157,22 @@ Result<ErrorRowParser> ErrorRowParser::from_header(std::string_view header) {
   for (std::size_t i = 0; i < fields->size(); ++i)
     for (int c = 0; c < kColumnCount; ++c)
       if ((*fields)[i] == kColumnNames[c]) p.column_[c] = static_cast<int>(i);
+  // Each metric's columns all or none; the others always.
+  for (int c = 0; c < kColumnCount; ++c) {
+    const std::optional<Metric> m = metric_of(c);
+    if (p.column_[c] >= 0 && m) p.metrics_.add(*m);
+  }
   for (int c = 0; c < kColumnCount; ++c)
-    if (p.column_[c] < 0) return make_error(std::string("header has no column '") + kColumnNames[c] + "'");
+    if (p.column_[c] < 0 && has_column(p.metrics_, c))
+      return make_error(std::string("header has no column '") + kColumnNames[c] + "'" +
+                        (metric_of(c) ? std::string(" (metric ") + metric_name(*metric_of(c)) + ")" : ""));
   for (const SeamColumn& c : kSeamColumns) {
     const auto at = std::find(fields->begin(), fields->end(), c.name);
     if (at != fields->end()) p.seam_column_.push_back(static_cast<int>(at - fields->begin()));
   }
   if (!p.seam_column_.empty() && p.seam_column_.size() != std::size(kSeamColumns))
     return make_error("header has some of the seam columns (seam_angle_deg … looped), not all");
+  if (!p.seam_column_.empty()) p.metrics_.add(Metric::seam);
   return p;
 }
 
@@ -145,7 +182,7 @@ Result<ErrorRow> ErrorRowParser::parse(std::string_view line) const {
   auto field = [&](int c) -> const std::string& {
     static const std::string empty;
     const int i = column_[c];
-    return i < static_cast<int>(fields->size()) ? (*fields)[i] : empty;
+    return i >= 0 && i < static_cast<int>(fields->size()) ? (*fields)[static_cast<std::size_t>(i)] : empty;
   };
   ErrorRow r;
   r.clip = field(kClip);
@@ -158,7 +195,7 @@ Result<ErrorRow> ErrorRowParser::parse(std::string_view line) const {
   r.end_site = kind == "end_site";
   r.foot = !r.end_site && !field(kContactFrames).empty();
   for (const Measured& m : kMeasured) {
-    if (is_empty_for(r, m.col)) continue;
+    if (is_empty_for(r, m.col) || !has_column(metrics_, m.col)) continue;
     auto v = to_double(field(m.col), kColumnNames[m.col]);
     if (!v) return v.failure();
     r.*m.field = *v;

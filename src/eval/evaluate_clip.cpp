@@ -54,7 +54,7 @@ void finish_angles(const ClipReference& R, std::size_t j, const Interpolator& cu
           const std::size_t n = std::min(bs, ns - m0);
           joint_block.fill(R, m0, n, false, j);
           curve.evaluate(joint_block.times().data(), n, out.data());
-          (void)rotation_error(joint_block.rotation(R, j), out.data(), n, R.bone_axis[j], scratch);
+          (void)rotation_error(joint_block.rotation(R, j), out.data(), n, R.bone_axis[j], scratch, false);
           take(scratch.data(), n);  // the angles (in some order)
         }
       },
@@ -73,7 +73,10 @@ void append_rows(const ClipReference& R, const std::string& method, int keep, co
   const double mpu = R.metres_per_unit;  // the rows are in metres
   for (std::size_t j = 0; j < nj; ++j) {
     // With --loop the keys are the period's, not kf: the curve at them is computed again.
-    const KeyJumps jumps = key_jumps(*sums.rebuilt[j].curve, sums.rebuilt[j].jump_times, R.cycle ? nullptr : sums.at_keys[j].data());
+    const KeyJumps jumps = R.metrics.has(Metric::smoothness)
+                               ? key_jumps(*sums.rebuilt[j].curve, sums.rebuilt[j].jump_times,
+                                           R.cycle ? nullptr : sums.at_keys[j].data())
+                               : KeyJumps{};
     const RotationError& e = sums.err[j];
     ErrorRow r;
     r.clip = R.clip_id;
@@ -88,12 +91,14 @@ void append_rows(const ClipReference& R, const std::string& method, int keep, co
     r.max_deg = e.angle.max * kRadToDeg;
     r.swing_rms_deg = e.swing.rms() * kRadToDeg;
     r.twist_rms_deg = e.twist.rms() * kRadToDeg;
-    r.pos_rms = sums.pose.joint_position[j].rms() * mpu;
-    r.pos_max = sums.pose.joint_position[j].max * mpu;
-    r.pos_rms_pct = sums.pose.joint_position[j].rms() * pct;
-    r.pos_max_pct = sums.pose.joint_position[j].max * pct;
-    r.shell_rms = sums.pose.joint_shell[j].rms() * mpu;
-    r.shell_max = sums.pose.joint_shell[j].max * mpu;
+    if (R.metrics.needs_poses()) {
+      r.pos_rms = sums.pose.joint_position[j].rms() * mpu;
+      r.pos_max = sums.pose.joint_position[j].max * mpu;
+      r.pos_rms_pct = sums.pose.joint_position[j].rms() * pct;
+      r.pos_max_pct = sums.pose.joint_position[j].max * pct;
+      r.shell_rms = sums.pose.joint_shell[j].rms() * mpu;
+      r.shell_max = sums.pose.joint_shell[j].max * mpu;
+    }
     r.acc_rms = sums.smooth[j].rms() * kRadToDeg;
     r.acc_rms_ref = R.reference_acc_rms[j] * kRadToDeg;
     r.vel_jump_max = jumps.velocity * kRadToDeg;
@@ -103,7 +108,7 @@ void append_rows(const ClipReference& R, const std::string& method, int keep, co
     r.unit = R.unit;
     r.keys = R.keys[j];
     r.motion_deg = R.motion_deg[j];
-    if (R.cycle) fill_seam_columns(r, R, j, sums.rebuilt[j]);
+    if (R.cycle && R.metrics.has(Metric::seam)) fill_seam_columns(r, R, j, sums.rebuilt[j]);
     rows.push_back(std::move(r));
   }
   ErrorRow* const joint_rows = rows.data() + rows.size() - nj;
@@ -119,7 +124,7 @@ void append_rows(const ClipReference& R, const std::string& method, int keep, co
     r.skate_frames_ref = static_cast<double>(ref.skating);
     r.skate_speed_ref = ref.mean_speed();
   }
-  for (std::size_t e = 0; e < ne; ++e) {
+  for (std::size_t e = 0; e < (R.metrics.has(Metric::fk) ? ne : 0); ++e) {  // End Site rows hold fk alone
     ErrorRow r;
     r.clip = R.clip_id;
     r.method = method;
@@ -159,6 +164,11 @@ Result<std::vector<ErrorRow>> evaluate_method(const ClipReference& R, const std:
 
   const std::size_t bs = block_samples(R);
   const bool one_block = ns <= bs;
+  // What R.metrics asks for: the rotation error (its swing and twist apart), the
+  // smoothness sums with the curve at its keys, the pose pass.
+  const bool swing_twist = R.metrics.has(Metric::swing_twist);
+  const bool rotations = swing_twist || R.metrics.has(Metric::angle);
+  const bool smoothness = R.metrics.has(Metric::smoothness), poses_needed = R.metrics.needs_poses();
   std::vector<ErrorRow> rows;
   rows.reserve(options.keep_every.size() * (nj + ne));
   // test[j]: two samples carried from the previous block (for smoothness), then the block.
@@ -184,44 +194,48 @@ Result<std::vector<ErrorRow>> evaluate_method(const ClipReference& R, const std:
       sums.rebuilt[j] = std::move(*joint);
       curves[j] = sums.rebuilt[j].curve.get();
     }
-    sums.at_keys.assign(nj, std::vector<Quat>(kf.size()));
+    sums.at_keys.assign(smoothness ? nj : 0, std::vector<Quat>(kf.size()));
     sums.smooth.resize(nj);
     sums.err.resize(nj);
-    sums.pose = make_pose_error(skel);
+    if (poses_needed) sums.pose = make_pose_error(skel);
     for (std::size_t m0 = 0; m0 < ns; m0 += bs) {
       const std::size_t n = std::min(bs, ns - m0);
-      block.fill(R, m0, n, true);
+      block.fill(R, m0, n, poses_needed);
       const std::size_t carry = m0 == 0 ? 0 : 2;
       for (std::size_t j = 0; j < nj; ++j) {
         Quat* out = test[j].data() + 2;
         curves[j]->evaluate(block.times().data(), n, out);
-        // The curve at its keys is among the samples (frame kf[i] is sample kf[i]·per_frame).
-        for (std::size_t i = 0; i < kf.size(); ++i)
-          if (const std::size_t s = kf[i] * R.per_frame; s >= m0 && s < m0 + n) sums.at_keys[j][i] = out[s - m0];
-        sums.smooth[j].add(out - carry, n + carry, R.sample_dt);
-        const RotationError e = rotation_error(block.rotation(R, j), out, n, R.bone_axis[j], scratch);
-        if (one_block) {
-          sums.err[j] = e;
-        } else {
-          ErrorStats& a = sums.err[j].angle;
-          const double c = static_cast<double>(e.angle.count);
-          a.mean += e.angle.mean * c;  // sums until the end
-          a.rms += e.angle.rms * e.angle.rms * c;
-          a.max = std::max(a.max, e.angle.max);
-          a.count += e.angle.count;
-          for (auto [sum, part] : {std::pair{&sums.err[j].swing, &e.swing}, {&sums.err[j].twist, &e.twist}}) {
-            sum->count += part->count;
-            sum->sum += part->sum;
-            sum->sum_sq += part->sum_sq;
-            sum->max = std::max(sum->max, part->max);
+        if (smoothness) {
+          // The curve at its keys is among the samples (frame kf[i] is sample kf[i]·per_frame).
+          for (std::size_t i = 0; i < kf.size(); ++i)
+            if (const std::size_t s = kf[i] * R.per_frame; s >= m0 && s < m0 + n) sums.at_keys[j][i] = out[s - m0];
+          sums.smooth[j].add(out - carry, n + carry, R.sample_dt);
+        }
+        if (rotations) {
+          const RotationError e = rotation_error(block.rotation(R, j), out, n, R.bone_axis[j], scratch, swing_twist);
+          if (one_block) {
+            sums.err[j] = e;
+          } else {
+            ErrorStats& a = sums.err[j].angle;
+            const double c = static_cast<double>(e.angle.count);
+            a.mean += e.angle.mean * c;  // sums until the end
+            a.rms += e.angle.rms * e.angle.rms * c;
+            a.max = std::max(a.max, e.angle.max);
+            a.count += e.angle.count;
+            for (auto [sum, part] : {std::pair{&sums.err[j].swing, &e.swing}, {&sums.err[j].twist, &e.twist}}) {
+              sum->count += part->count;
+              sum->sum += part->sum;
+              sum->sum_sq += part->sum_sq;
+              sum->max = std::max(sum->max, part->max);
+            }
           }
         }
         test[j][0] = n >= 2 ? out[n - 2] : test[j][1];
         test[j][1] = out[n - 1];
       }
-      poses.add(R, block, m0, n, test_at.data(), sums.pose, feet_at);
+      if (poses_needed) poses.add(R, block, m0, n, test_at.data(), sums.pose, feet_at);
     }
-    if (!one_block)
+    if (!one_block && R.metrics.has(Metric::angle))
       for (std::size_t j = 0; j < nj; ++j) finish_angles(R, j, *curves[j], sums.err[j].angle);
     append_rows(R, method, keep, options, sums, feet_at, rows);
   }

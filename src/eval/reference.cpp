@@ -70,20 +70,27 @@ Result<ClipReference> prepare_reference(const Clip& clip, const std::string& cli
     if (per > 1) R.translation_tracks = clip.translations;
   }
 
-  // ---- reference world poses at the frames, computed once ----
-  R.world.resize(nf);
+  // ---- reference world poses at the frames, computed once (when a metric needs them) ----
+  R.metrics = options.metrics;
+  const bool poses = options.metrics.needs_poses();
   std::vector<Quat> local_r(nj);
   std::vector<Vec3> local_t(nj);
-  for (std::size_t k = 0; k < nf; ++k) {
+  auto world_at = [&](std::size_t k, WorldPose& out) {
     for (std::size_t j = 0; j < nj; ++j) {
       local_r[j] = R.reference[j][k];
       local_t[j] = R.translation[j][k];
     }
-    forward_kinematics(skel, local_r, local_t, R.world[k]);
-  }
+    forward_kinematics(skel, local_r, local_t, out);
+  };
+  R.world.resize(poses ? nf : 0);
+  for (std::size_t k = 0; k < R.world.size(); ++k) world_at(k, R.world[k]);
 
   R.height = skeleton_height(rest_pose(skel));
-  if (!(R.height > 0.0) && nf > 0) R.height = skeleton_height(R.world[0]);
+  if (!(R.height > 0.0) && nf > 0) {
+    WorldPose first;
+    world_at(0, first);
+    R.height = skeleton_height(first);
+  }
   if (!(R.height > 0.0)) R.height = 1.0;
   R.shell_distance = in_clip_units(clip, options.shell_distance_m);
   R.bone_axis = bone_axes(skel);
@@ -98,15 +105,14 @@ Result<ClipReference> prepare_reference(const Clip& clip, const std::string& cli
   }
 
   // ---- foot contact of the reference, at its frames ----
-  if (options.feet.feet.empty()) {
-    R.feet = find_feet(skel);
-  } else {
-    auto feet = feet_by_name(skel, options.feet.feet);
+  R.metres_per_unit = clip.unit.metres_per_unit;
+  R.unit = describe_unit(clip.unit);
+  if (options.metrics.has(Metric::foot_skating)) {  // else no feet, no foot rows
+    auto feet = options.feet.feet.empty() ? Result<std::vector<std::size_t>>(find_feet(skel))
+                                          : feet_by_name(skel, options.feet.feet);
     if (!feet) return feet.failure(clip_id + ": ");
     R.feet = std::move(*feet);
   }
-  R.metres_per_unit = clip.unit.metres_per_unit;
-  R.unit = describe_unit(clip.unit);
   if (options.feet.floor_m) {
     R.floor = *options.feet.floor_m / R.metres_per_unit;
   } else if (!R.feet.empty() && nf > 0) {
@@ -122,6 +128,7 @@ Result<ClipReference> prepare_reference(const Clip& clip, const std::string& cli
     }
   }
   R.reference_acc_rms.assign(nj, 0.0);
+  if (!options.metrics.has(Metric::smoothness)) return R;
   if (per == 1) {
     for (std::size_t j = 0; j < nj; ++j)
       R.reference_acc_rms[j] = sampled_smoothness(R.reference[j].data(), nf, R.sample_dt).acceleration_rms;

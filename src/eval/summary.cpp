@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace rotinterp {
 
@@ -26,6 +27,25 @@ void FootSkating::add(const FootSkating& o) {
   intervals += o.intervals;
   contact += o.contact, skating += o.skating, speed_sum += o.speed_sum;
   contact_ref += o.contact_ref, skating_ref += o.skating_ref, speed_sum_ref += o.speed_sum_ref;
+}
+
+std::optional<Metric> summary_metric(std::string_view name) {
+  static const std::map<std::string_view, Metric> of = {
+      {"mean_deg", Metric::angle},           {"rms_deg", Metric::angle},
+      {"p95_deg", Metric::angle},            {"max_deg", Metric::angle},
+      {"max_joint", Metric::angle},          {"worst", Metric::angle}, {"worst_clip", Metric::angle},
+      {"clip_rms_median_deg", Metric::angle}, {"clip_p95_median_deg", Metric::angle},
+      {"clip_max_median_deg", Metric::angle}, {"swing_rms_deg", Metric::swing_twist},
+      {"twist_rms_deg", Metric::swing_twist}, {"pos_rms_pct", Metric::fk},
+      {"pos_max_pct", Metric::fk},           {"shell_rms_pct", Metric::shell},
+      {"shell_max_pct", Metric::shell},      {"acc_rms_dps2", Metric::smoothness},
+      {"acc_rms_ref_dps2", Metric::smoothness}, {"vel_jump_max_dps", Metric::smoothness},
+      {"acc_jump_max_dps2", Metric::smoothness}, {"foot_skating", Metric::foot_skating},
+      {"feet", Metric::foot_skating},        {"seam", Metric::seam}};
+  if (auto it = of.find(name); it != of.end()) return it->second;
+  if (name.find("skate") != std::string_view::npos || name.find("contact_frames") != std::string_view::npos)
+    return Metric::foot_skating;  // contact_frames, skate_ratio, … extra_skate_speed_mps
+  return std::nullopt;
 }
 
 namespace {

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include <fstream>
+#include <iterator>
 
 namespace rotinterp {
 
@@ -54,6 +55,16 @@ json entry_json(const SummaryEntry& e, bool seam) {
   return j;
 }
 
+// Leaves out the values of metrics not chosen (summary_metric).
+json chosen_only(json j, MetricSet metrics) {
+  if (metrics.is_all()) return j;
+  for (auto it = j.begin(); it != j.end();) {
+    const std::optional<Metric> m = summary_metric(it.key());
+    it = m && !metrics.has(*m) ? j.erase(it) : std::next(it);
+  }
+  return j;
+}
+
 // The "clips" section: one object per clip, its results per method × keep_every.
 json clips_json(const Summary& s) {
   json clips = json::array();
@@ -80,6 +91,7 @@ json clips_json(const Summary& s) {
                                        {"shell_max_pct", c.shell_max_pct},
                                        {"foot_skating", skating_json(c.skating)}});
     if (s.seam) clips.back()["results"].back()["seam"] = seam_json(c.seam);
+    clips.back()["results"].back() = chosen_only(clips.back()["results"].back(), s.metrics);
   }
   return clips;
 }
@@ -114,6 +126,8 @@ std::string summary_json(const RunRecord& r, const Summary& summary) {
             {"failed", failed},
             {"skipped", r.skipped},
             {"too_short", too_short}};
+  // The metrics a run chose, when not all (so the file of a default run is as before --metrics).
+  if (r.options.metrics != "all") j["options"]["metrics"] = r.options.metrics;
   if (r.merged_from.empty()) {
     j["shard"] = {{"index", r.shard_index}, {"count", r.shard_count}};
     j["jobs"] = r.jobs;
@@ -122,10 +136,11 @@ std::string summary_json(const RunRecord& r, const Summary& summary) {
     j["merge_seconds"] = r.merge_seconds;
   }
   json results = json::array();
-  for (const SummaryEntry& e : summary.entries) results.push_back(entry_json(e, summary.seam));
+  for (const SummaryEntry& e : summary.entries) results.push_back(chosen_only(entry_json(e, summary.seam), summary.metrics));
   j["clips_evaluated"] = summary.clips;
   j["results"] = std::move(results);
-  j["worst_clip"] = {{"clip", summary.worst_clip}, {"keep_every", summary.worst_keep_every}};
+  if (summary.metrics.has(*summary_metric("worst_clip")))
+    j["worst_clip"] = {{"clip", summary.worst_clip}, {"keep_every", summary.worst_keep_every}};
   j["weighting"] =
       "mean_deg, rms_deg, swing/twist, pos/shell RMS and smoothness weight every joint sample alike, so a clip "
       "counts by its samples x joints; p95_deg is the 95th percentile of the per-joint p95; clip_*_median_deg "
@@ -164,6 +179,7 @@ Result<RunRecord> read_summary_json(const std::filesystem::path& file) {
     r.options.truth = truth.is_boolean() ? (truth.get<bool>() ? "synth" : "frames") : truth.get<std::string>();
     r.options.animation = o.value("anim", "");
     r.options.loop = o.value("loop", "off");
+    r.options.metrics = o.value("metrics", "all");
     r.options.min_frames = o.value("min_frames", std::size_t{0});
     r.options.feet = o.value("feet", std::vector<std::string>{});
     r.options.contact_height_m = o.value("contact_height_m", 0.0);

@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <utility>
 
 namespace rotinterp {
 
@@ -23,14 +25,28 @@ std::string sig4(double v) {
 }  // namespace
 
 std::string format_summary_table(const Summary& s, TableFormat format) {
-  const std::vector<std::string> head = {"method", "N", "clips", "mean°", "RMS°", "p95°", "max°",
-                                         "median clip RMS°", "pos max %", "extra skate %"};
+  // Each column with the summary value it shows (summary_metric), empty for method, N, clips.
+  const std::vector<std::pair<std::string, const char*>> columns = {
+      {"method", ""}, {"N", ""}, {"clips", ""}, {"mean°", "mean_deg"}, {"RMS°", "rms_deg"}, {"p95°", "p95_deg"},
+      {"max°", "max_deg"}, {"median clip RMS°", "clip_rms_median_deg"}, {"pos max %", "pos_max_pct"},
+      {"extra skate %", "extra_skate_ratio"}};
+  std::vector<bool> shown;
+  std::vector<std::string> head;
+  for (const auto& [title, value] : columns) {
+    const std::optional<Metric> m = summary_metric(value);
+    shown.push_back(!m || s.metrics.has(*m));
+    if (shown.back()) head.push_back(title);
+  }
   std::vector<std::vector<std::string>> body;
-  for (const SummaryEntry& e : s.entries)
-    body.push_back({e.method, std::to_string(e.keep_every), std::to_string(e.clips), sig4(e.mean_deg),
-                    sig4(e.rms_deg), sig4(e.p95_deg), sig4(e.max_deg), sig4(e.clip_rms_median_deg),
-                    sig4(e.pos_max_pct),
-                    e.skating.feet ? sig4(100.0 * (e.skating.ratio() - e.skating.ratio_ref())) : "–"});
+  for (const SummaryEntry& e : s.entries) {
+    const std::vector<std::string> all = {
+        e.method, std::to_string(e.keep_every), std::to_string(e.clips), sig4(e.mean_deg), sig4(e.rms_deg),
+        sig4(e.p95_deg), sig4(e.max_deg), sig4(e.clip_rms_median_deg), sig4(e.pos_max_pct),
+        e.skating.feet ? sig4(100.0 * (e.skating.ratio() - e.skating.ratio_ref())) : "–"};
+    body.emplace_back();
+    for (std::size_t i = 0; i < all.size(); ++i)
+      if (shown[i]) body.back().push_back(all[i]);
+  }
   std::string out;
   if (format == TableFormat::markdown) {
     auto line = [](const std::vector<std::string>& cells) {
@@ -98,31 +114,42 @@ std::string format_summary_table(const Summary& s, TableFormat format) {
     last = s.entries[k].method;
     out += line(body[k]);
   }
-  if (!s.worst_clip.empty()) out += fmt::format("worst clip (RMS at keep {}): {}\n", s.worst_keep_every, s.worst_clip);
+  if (!s.worst_clip.empty() && s.metrics.has(Metric::angle))
+    out += fmt::format("worst clip (RMS at keep {}): {}\n", s.worst_keep_every, s.worst_clip);
   return out;
 }
 
 std::string clips_csv(const Summary& s) {
-  static const CsvSchema plain = {
+  static const std::vector<std::string> plain = {
       "clip", "method", "keep_every", "frames", "joints", "keys", "motion_deg", "samples", "mean_deg", "rms_deg",
       "p95_deg", "max_deg", "max_joint", "pos_rms_pct", "pos_max_pct", "shell_rms_pct", "shell_max_pct", "feet",
       "contact_frames", "skate_ratio", "skate_speed_mps", "contact_frames_ref", "skate_ratio_ref",
       "skate_speed_ref_mps", "extra_skate_ratio", "extra_skate_speed_mps"};
-  static const CsvSchema with_seam = plain + seam_csv_schema();
-  const CsvSchema& schema = s.seam ? with_seam : plain;
+  // The columns of the summary's metrics (summary_metric), then the seam's.
+  std::vector<bool> shown;
+  std::vector<std::string> names;
+  for (const std::string& name : plain) {
+    const std::optional<Metric> m = summary_metric(name);
+    shown.push_back(!m || s.metrics.has(*m));
+    if (shown.back()) names.push_back(name);
+  }
+  const CsvSchema schema = s.seam ? CsvSchema(names) + seam_csv_schema() : CsvSchema(names);
   const auto n = [](auto v) { return fmt::format("{}", v); };
   std::string out = schema.header();
   for (const ClipResult& c : s.clip_results) {
-    CsvRow row(schema);
-    row << c.clip << c.method << n(c.keep_every) << n(c.frames) << n(c.joints) << n(c.keys) << n(c.motion_deg)
-        << n(c.samples) << n(c.mean_deg) << n(c.rms_deg) << n(c.p95_deg) << n(c.max_deg) << c.max_joint
-        << n(c.pos_rms_pct) << n(c.pos_max_pct) << n(c.shell_rms_pct) << n(c.shell_max_pct) << n(c.skating.feet);
+    std::vector<std::string> fields = {c.clip, c.method, n(c.keep_every), n(c.frames), n(c.joints), n(c.keys),
+                                       n(c.motion_deg), n(c.samples), n(c.mean_deg), n(c.rms_deg), n(c.p95_deg),
+                                       n(c.max_deg), c.max_joint, n(c.pos_rms_pct), n(c.pos_max_pct),
+                                       n(c.shell_rms_pct), n(c.shell_max_pct), n(c.skating.feet)};
     const FootSkating& f = c.skating;
     if (f.feet)
-      row << n(f.contact) << n(f.ratio()) << n(f.speed()) << n(f.contact_ref) << n(f.ratio_ref())
-          << n(f.speed_ref()) << n(f.ratio() - f.ratio_ref()) << n(f.speed() - f.speed_ref());
+      fields.insert(fields.end(), {n(f.contact), n(f.ratio()), n(f.speed()), n(f.contact_ref), n(f.ratio_ref()),
+                                   n(f.speed_ref()), n(f.ratio() - f.ratio_ref()), n(f.speed() - f.speed_ref())});
     else
-      row.skip(8);
+      fields.resize(plain.size());  // no feet: the eight contact fields empty
+    CsvRow row(schema);
+    for (std::size_t i = 0; i < fields.size(); ++i)
+      if (shown[i]) row << fields[i];
     if (s.seam) add_seam_fields(row, c.seam);
     out += row.line();
   }

@@ -145,8 +145,8 @@ TEST(EvalSeam, SeamColumnsRoundTripAndAreAbsentWithoutTheLoop) {
   r.seam = true, r.seam_angle_deg = 1.5, r.inner_angle_deg = 2.25, r.seam_vel_jump = 3.0625, r.seam_acc_jump = 4.5;
   r.looped = 1;
   EXPECT_EQ(error_csv_schema().header().find("seam"), std::string::npos);
-  EXPECT_EQ(format_error_row(r), format_error_row(ErrorRow(r), false));
-  const std::string header = error_csv_schema(true).header(), line = format_error_row(r, true);
+  EXPECT_EQ(format_error_row(r), format_error_row(ErrorRow(r), csv_metrics(MetricSet::all(), false)));
+  const std::string header = error_csv_schema(csv_metrics(MetricSet::all(), true)).header(), line = format_error_row(r, csv_metrics(MetricSet::all(), true));
   EXPECT_NE(header.find(",seam_angle_deg,inner_angle_deg,seam_vel_jump_dps,seam_acc_jump_dps2,looped"),
             std::string::npos);
   auto parser = ErrorRowParser::from_header(header);
@@ -157,7 +157,7 @@ TEST(EvalSeam, SeamColumnsRoundTripAndAreAbsentWithoutTheLoop) {
   EXPECT_TRUE(back->seam);
   EXPECT_EQ(back->inner_angle_deg, 2.25);
   EXPECT_EQ(back->seam_vel_jump, 3.0625);
-  EXPECT_EQ(format_error_row(*back, true), line);
+  EXPECT_EQ(format_error_row(*back, csv_metrics(MetricSet::all(), true)), line);
   EXPECT_FALSE(ErrorRowParser::from_header(error_csv_schema().header())->has_seam_columns());
 }
 

@@ -99,3 +99,8 @@ def test_requests_past_the_key_limit_are_refused_before_allocating():
     huge = 400_000_000
     with pytest.raises(ValueError, match="^times would give 400000000 frames"):
         rotinterp.make_interpolator(np.broadcast_to(0.0, (huge,)), np.broadcast_to(Q[0], (huge, 4)))
+
+
+def test_evaluate_refuses_an_unknown_metric_listing_the_valid_ones():
+    with pytest.raises(ValueError, match="unknown metric 'speed'; valid: all, angle, swing-twist"):
+        rotinterp.evaluate(two_joint_clip(frame_time=1.0), methods=["slerp"], keep_every=[2], metrics=["angle", "speed"])

@@ -65,12 +65,14 @@ def test_sparse_keys_and_fbx_sources_give_the_cli_bytes(tmp_path):
         assert ours.read_bytes() == theirs.read_bytes(), source.name
 
 
-def test_evaluate_equals_errors_csv_to_the_last_digit(tmp_path):
+@pytest.mark.parametrize("metrics", [None, "angle", ["fk", "smoothness"]])
+def test_evaluate_equals_errors_csv_to_the_last_digit(tmp_path, metrics):
     paths = [str(BVH_CLIPS[0]), str(DATA / "bvh" / "assimp_Boxing_Toes.bvh")]
     methods, spacings = ["slerp", "clamped", "bf"], [2, 8]
-    cols = rotinterp.evaluate(paths, methods=methods, keep_every=spacings)
-    cli("eval", *paths, "--methods", ",".join(methods), "--keep-every", "2,8", "-j", "1", "--no-plots", "-q",
-        "-o", tmp_path / "e")
+    cols = rotinterp.evaluate(paths, methods=methods, keep_every=spacings, metrics=metrics)
+    chosen = "all" if metrics is None else metrics if isinstance(metrics, str) else ",".join(metrics)
+    cli("eval", *paths, "--methods", ",".join(methods), "--keep-every", "2,8", "--metrics", chosen, "-j", "1",
+        "--no-plots", "-q", "-o", tmp_path / "e")
     with open(tmp_path / "e" / "errors.csv", newline="") as f:
         rows = list(csv.DictReader(f))
     assert len(rows) == len(cols["clip"]) > 0

@@ -81,9 +81,10 @@ struct RotationError {
 };
 
 // Compares ref[i] with test[i] for i < n. `bone_axis` is in the joint's frame (see
-// bone_axes()). `scratch` is reused between calls to avoid allocation.
+// bone_axes()). `scratch` is reused between calls to avoid allocation. Without
+// `swing_twist` only the angle is measured (swing and twist stay empty).
 RotationError rotation_error(const Quat* ref, const Quat* test, std::size_t n, const Vec3& bone_axis,
-                             std::vector<double>& scratch);
+                             std::vector<double>& scratch, bool swing_twist = true);
 
 // ---- position and shell error ----------------------------------------------------------
 

@@ -121,11 +121,17 @@ inline Mat3 so3_right_jacobian(const Vec3& v) {
 // J_l⁻¹(v)·x: the rate v̇ of a rotation vector whose quaternion turns at the
 // fixed-frame angular velocity x. Zero when v or x is not finite (or the result
 // overflows), as the rotation core answers non-finite input.
+// With c = so3_jacobian_c(|v|) given, for a finite v (callers that apply one v to
+// many x compute c once).
+inline Vec3 so3_left_jacobian_inverse_times_with(const Vec3& v, const Vec3& x, double c) {
+  if (!x.allFinite()) return Vec3::Zero();
+  const Vec3 r = x - 0.5 * v.cross(x) + c * v.cross(v.cross(x));
+  return r.allFinite() ? r : Vec3::Zero();
+}
 inline Vec3 so3_left_jacobian_inverse_times(const Vec3& v, const Vec3& x) {
   const double theta = v.norm();
-  if (!std::isfinite(theta) || !x.allFinite()) return Vec3::Zero();
-  const Vec3 r = x - 0.5 * v.cross(x) + so3_jacobian_c(theta) * v.cross(v.cross(x));
-  return r.allFinite() ? r : Vec3::Zero();
+  if (!std::isfinite(theta)) return Vec3::Zero();
+  return so3_left_jacobian_inverse_times_with(v, x, so3_jacobian_c(theta));
 }
 // J_r⁻¹(v)·x = J_l⁻¹(−v)·x: the rate of v for the body angular velocity x.
 inline Vec3 so3_right_jacobian_inverse_times(const Vec3& v, const Vec3& x) {
@@ -147,10 +153,15 @@ inline Mat3 so3_left_jacobian_inverse_with(const Vec3& v, double c) {
 inline Mat3 so3_left_jacobian_inverse(const Vec3& v) {
   return so3_left_jacobian_inverse_with(v, so3_jacobian_c(v.norm()));
 }
-// J_r⁻¹(v) = J_l⁻¹(−v), column by column from the product (zero for non-finite v).
+// J_r⁻¹(v) = J_l⁻¹(−v), column by column from the product (zero for non-finite v);
+// c once for the three columns.
 inline Mat3 so3_right_jacobian_inverse(const Vec3& v) {
+  const Vec3 minus_v = -v;
+  const double theta = minus_v.norm();
+  if (!std::isfinite(theta)) return Mat3::Zero();
+  const double c = so3_jacobian_c(theta);
   Mat3 m;
-  for (int c = 0; c < 3; ++c) m.col(c) = so3_right_jacobian_inverse_times(v, Vec3::Unit(c));
+  for (int col = 0; col < 3; ++col) m.col(col) = so3_left_jacobian_inverse_times_with(minus_v, Vec3::Unit(col), c);
   return m;
 }
 
@@ -159,12 +170,22 @@ inline Mat3 so3_right_jacobian_inverse(const Vec3& v) {
 // exp(r(t)) that is not J(r)·r̈ — body frame for J_r, fixed frame for J_l:
 //   d/dt (J_r(r)·ṙ) = J_r(r)·r̈ + so3_right_jacobian_rate(r, ṙ).
 
-inline Vec3 so3_right_jacobian_rate(const Vec3& r, const Vec3& u) {
-  const double theta = r.norm();
+// The coefficients of the J_r rate at one r, for callers that apply one r to many u
+// (c2's fixed-point passes): no trigonometry per product.
+struct So3RateCoefficients {
+  double da, db, b;  // so3_jacobian_da, _db, _b at |r|
+  explicit So3RateCoefficients(const Vec3& r) {
+    const double theta = r.norm();
+    da = so3_jacobian_da(theta), db = so3_jacobian_db(theta), b = so3_jacobian_b(theta);
+  }
+};
+inline Vec3 so3_right_jacobian_rate_with(const Vec3& r, const Vec3& u, const So3RateCoefficients& k) {
   const double ru = r.dot(u);
   const Vec3 rxu = r.cross(u);
-  return -so3_jacobian_da(theta) * ru * rxu + so3_jacobian_db(theta) * ru * r.cross(rxu) +
-         so3_jacobian_b(theta) * u.cross(rxu);
+  return -k.da * ru * rxu + k.db * ru * r.cross(rxu) + k.b * u.cross(rxu);
+}
+inline Vec3 so3_right_jacobian_rate(const Vec3& r, const Vec3& u) {
+  return so3_right_jacobian_rate_with(r, u, So3RateCoefficients(r));
 }
 // J_l(r) = J_r(−r), and −r moves at −u: the rate is −(the J_r rate at −r along u).
 inline Vec3 so3_left_jacobian_rate(const Vec3& r, const Vec3& u) { return -so3_right_jacobian_rate(-r, u); }

@@ -5,9 +5,11 @@
 #pragma once
 
 #include "rotinterp/core/result.h"
+#include "rotinterp/eval/metric_set.h"
 #include "rotinterp/io/files/csv.h"
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -55,37 +57,48 @@ struct ErrorRow {
 };
 
 // A measured (floating-point) column of errors.csv: its name, the ErrorRow field
-// it holds, whether End Site rows leave it empty, and whether rows of joints that
-// are not feet leave it empty.
+// it holds, whether End Site rows leave it empty, whether rows of joints that
+// are not feet leave it empty, and the metric that fills it (none: always there).
 struct ErrorValueColumn {
   const char* name;
   double ErrorRow::*field;
   bool joint_only;
   bool foot_only;
+  std::optional<Metric> metric;
 };
 // mean_deg … acc_jump_max_dps2, height_m, keys … skate_speed_ref_mps, metres_per_unit, in file order.
 const std::vector<ErrorValueColumn>& error_value_columns();
 
-// errors.csv's columns: clip,method,keep_every,joint,frames,mean_deg,…, with
-// `seam_columns` (eval --loop) then seam_angle_deg … looped.
-const CsvSchema& error_csv_schema(bool seam_columns = false);
+// The metrics whose columns errors.csv carries: those chosen, and seam only with
+// eval --loop (a run without it has no seam to measure).
+MetricSet csv_metrics(MetricSet chosen, bool loop);
+
+// errors.csv's columns for `columns` (from csv_metrics): clip,method,keep_every,joint,
+// frames, then each measured column of a metric in the set (angle: mean_deg … max_deg,
+// swing-twist, fk: pos_*, shell, smoothness: acc_* and the jumps), samples,height_m,
+// kind,keys,motion_deg, foot-skating's columns, metres_per_unit,unit, then seam's
+// seam_angle_deg … looped. With every metric but seam: the file as before --metrics.
+const CsvSchema& error_csv_schema(MetricSet columns = csv_metrics(MetricSet::all(), false));
 // One CSV line, with its '\n'. Text fields are quoted when they hold a comma, quote or
 // line break; End Site rows leave the joint-only columns empty, and the seam columns
-// (written with `seam_columns` only) are empty where the row has none.
-std::string format_error_row(const ErrorRow& row, bool seam_columns = false);
+// are empty where the row has none.
+std::string format_error_row(const ErrorRow& row, MetricSet columns = csv_metrics(MetricSet::all(), false));
 
 // Reads CSV lines back. Construct from the header line; columns are found by name.
 class ErrorRowParser {
  public:
-  // The seam columns are read when the header has them (an eval --loop run).
+  // The metrics' columns are read when the header has them (each metric's all or
+  // none), the seam columns too (an eval --loop run).
   static Result<ErrorRowParser> from_header(std::string_view header);
   bool has_seam_columns() const { return !seam_column_.empty(); }
+  MetricSet metrics() const { return metrics_; }  // as csv_metrics gives them
   // `line` is one data line; the error names the problem (the caller adds file:line).
   Result<ErrorRow> parse(std::string_view line) const;
 
  private:
   std::vector<int> column_;       // field index per known column, −1 when absent
   std::vector<int> seam_column_;  // field index per seam column; empty when the file has none
+  MetricSet metrics_ = MetricSet::none();
 };
 
 }  // namespace rotinterp

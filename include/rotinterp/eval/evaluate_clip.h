@@ -14,6 +14,7 @@
 #include "rotinterp/core/result.h"
 #include "rotinterp/eval/error_row.h"
 #include "rotinterp/eval/foot_skating.h"
+#include "rotinterp/eval/metric_set.h"
 #include "rotinterp/eval/seam.h"
 
 #include <functional>
@@ -30,6 +31,7 @@ using TruthFn = std::function<void(double t, std::vector<Quat>& rotation, std::v
 struct ClipEvalOptions {
   std::vector<std::string> methods;  // registry names, evaluated in this order
   std::vector<int> keep_every;       // each ≥ 1, in this order
+  MetricSet metrics = MetricSet::all();  // computed and reported; the others are not computed
   int subframe = 0;                  // extra samples between consecutive frames (0 … 1000)
   double shell_distance_m = kDefaultShellDistanceMetres;  // metres, converted by Clip::unit
   TruthFn truth;                     // optional reference instead of the clip's frames
@@ -61,9 +63,10 @@ struct ClipReference {
   std::vector<std::vector<Quat>> original;    // [joint][frame]: where keys are taken
   std::vector<std::vector<Quat>> reference;   // [joint][frame]
   std::vector<std::vector<Vec3>> translation; // [joint][frame]: used for both sides
-  std::vector<WorldPose> world;               // [frame]: forward kinematics of the reference
+  MetricSet metrics = MetricSet::all();       // what is prepared (and measured): options.metrics
+  std::vector<WorldPose> world;               // [frame]: forward kinematics of the reference (metrics.needs_poses())
   std::vector<Vec3> bone_axis;                // [joint], see bone_axes()
-  std::vector<double> reference_acc_rms;      // [joint], rad/s²
+  std::vector<double> reference_acc_rms;      // [joint], rad/s² (0 without smoothness)
   double height = 1;                          // clip units
   double shell_distance = 0;                  // clip units
   // Where subframe samples come from (per_frame > 1): the analytic truth when
@@ -94,8 +97,8 @@ Result<ClipReference> prepare_reference(const Clip& clip, const std::string& cli
 // spacing and the worker threads running them; tests hold it to that.
 std::size_t references_prepared();
 
-// Rows of one method for every keep_every × joint, then End Site; none for the
-// spacings skipped_spacings() names. Errors name the clip, the joint and the method.
+// Rows of one method for every keep_every × joint, then End Site (with fk only); none
+// for the spacings skipped_spacings() names. Only the reference's metrics are computed. Errors name the clip, the joint and the method.
 Result<std::vector<ErrorRow>> evaluate_method(const ClipReference& reference, const std::string& method,
                                               const ClipEvalOptions& options);
 

@@ -13,6 +13,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -101,6 +102,9 @@ struct Summary {
   int worst_keep_every = 0;
   std::vector<ErrorRow> worst_clip_rows;
   bool seam = false;  // the rows carry seam columns (eval --loop): clips.csv and summary.json report them
+  // The metrics the rows carry (csv_metrics): the table, clips.csv, summary.json and
+  // the plots report only these.
+  MetricSet metrics = MetricSet::all();
 };
 
 // Feed the rows of one clip at a time, in file order; then finish().
@@ -127,8 +131,14 @@ class SummaryBuilder {
   double worst_score_ = -1.0;
 };
 
+// The metric a value of the summary belongs to, by its name in summary.json and
+// clips.csv (mean_deg and worst: angle, pos_max_pct: fk, foot_skating and skate_*:
+// foot-skating, …); none for names and counts. Values of metrics not chosen are left out.
+std::optional<Metric> summary_metric(std::string_view name);
+
 // The results table: one line per method × keep_every — clips, mean, RMS, p95 and
-// max angle, the median clip RMS, position max and the extra skating — as plain
+// max angle, the median clip RMS, position max and the extra skating, those of the
+// summary's metrics — as plain
 // text (stdout), Markdown or LaTeX. Values to 4 significant figures in fixed
 // notation; below 0.001 "< 0.001", exact zeros "0".
 enum class TableFormat { text, markdown, latex };
@@ -162,8 +172,9 @@ struct RunOptions {
   std::optional<double> floor_m;
   std::optional<double> unit;       // --unit, metres per unit of files that state none
   std::string loop = "off";         // --loop: off, auto, closed or open
+  std::string metrics = "all";      // --metrics as metrics_text() writes it
   friend bool operator==(const RunOptions& a, const RunOptions& b) {
-    return a.methods == b.methods && a.keep_every == b.keep_every && a.subframe == b.subframe && a.loop == b.loop &&
+    return a.methods == b.methods && a.metrics == b.metrics && a.keep_every == b.keep_every && a.subframe == b.subframe && a.loop == b.loop &&
            a.shell_distance_m == b.shell_distance_m && a.truth == b.truth && a.animation == b.animation &&
            a.min_frames == b.min_frames && a.feet == b.feet && a.contact_height_m == b.contact_height_m &&
            a.contact_speed_mps == b.contact_speed_mps && a.floor_m == b.floor_m && a.unit == b.unit;

@@ -8,6 +8,7 @@
 #include "progress_line.h"
 #include "info_curves.h"
 #include "rotinterp/io/files/file_record.h"
+#include "rotinterp/io/files/json_text.h"
 #include "rotinterp/clip/frames.h"
 #include "rotinterp/clip/loop.h"
 #include "rotinterp/core/work_queue.h"
@@ -173,7 +174,7 @@ int run_summary(const InfoArgs& args) {
     out["duplicates"] = copies;
     out["unreadable"] = unreadable;
     out["flagged"] = flagged;
-    fmt::print("{}\n", out.dump(2));
+    fmt::print("{}\n", json_text(out, 2));
   } else {
     std::size_t width = 4;
     for (const FileSummary& s : rows) width = std::max(width, s.file.size());
@@ -209,7 +210,7 @@ int describe_static(const std::string& path, const std::string& holds, bool json
     const nlohmann::json out = {{"file", path},           {"format", format},
                                 {"animations", nlohmann::json::array()}, {"holds", holds},
                                 {"no_animation", true}};
-    fmt::print("{}\n", out.dump(2));
+    fmt::print("{}\n", json_text(out, 2));
   } else {
     fmt::print("file:        {}\n", path);
     fmt::print("format:      {}\n", format);

@@ -9,6 +9,8 @@
 #include "rotinterp/interp/gltf_cubic.h"
 #include "rotinterp/io/files/atomic_file.h"
 #include "rotinterp/io/files/key_times.h"
+#include "rotinterp/io/files/json_text.h"
+#include "rotinterp/io/files/written_names.h"
 #include "rotinterp/track/sample.h"
 
 #include <nlohmann/json.hpp>
@@ -183,7 +185,7 @@ Result<nlohmann::json> animation(Builder& b, const Clip& clip, const GltfKeys& k
       channel(b.accessor(start, times.size(), "VEC3"), "translation");
     }
   }
-  return nlohmann::json{{"name", clip.name.empty() ? std::string("clip") : clip.name}, {"samplers", samplers}, {"channels", channels}};
+  return nlohmann::json{{"name", clip.name.empty() ? std::string("clip") : readable_text(clip.name)}, {"samplers", samplers}, {"channels", channels}};
 }
 
 // The document of the takes' skeleton (the first's: every take has it) with one
@@ -207,10 +209,11 @@ Result<Document> build(const std::vector<const Clip*>& takes, const GltfKeys& ke
     if (p < 0) roots.push_back(j);
     else children[static_cast<std::size_t>(p)].push_back(j);
   }
+  const std::vector<std::string> names = written_joint_names(sk, NameForm::text);
   for (std::size_t j = 0; j < n; ++j) {
     const Joint& joint = sk.joints[j];
     const Quat r = joint.rest_rotation.normalized();
-    nlohmann::json node = {{"name", joint.name},
+    nlohmann::json node = {{"name", names[j]},
                            {"translation", {joint.offset.x() * metres, joint.offset.y() * metres, joint.offset.z() * metres}},
                            {"rotation", {r.x(), r.y(), r.z(), r.w()}}};
     if (!children[j].empty()) node["children"] = children[j];
@@ -277,7 +280,7 @@ Status write_gltf(const std::vector<const Clip*>& takes, const std::filesystem::
   Result<Document> doc = build(takes, keys);
   if (!doc) return doc.failure(label + ": ");
   if (binary) {
-    std::string json = doc->json.dump();
+    std::string json = json_text(doc->json);
     std::string& bin = doc->buffer;
     json.append((4 - json.size() % 4) % 4, ' ');
     bin.append((4 - bin.size() % 4) % 4, '\0');
@@ -305,8 +308,12 @@ Status write_gltf(const std::vector<const Clip*>& takes, const std::filesystem::
   char hash[17];
   std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(fnv1a(doc->buffer)));
   const std::filesystem::path bin_path = std::filesystem::path(path).replace_filename(path.stem().string() + "-" + hash + ".bin");
+  // The uri is JSON text: a file name it cannot hold is refused here, not by nlohmann.
+  if (readable_text(bin_path.filename().string()) != bin_path.filename().string())
+    return make_error(label + ": a .gltf names its buffer after itself, and this name is not valid UTF-8 free of "
+                      "control characters; write .glb or choose another name");
   doc->json["buffers"][0]["uri"] = bin_path.filename().string();
-  const std::string json = doc->json.dump();
+  const std::string json = json_text(doc->json);
   // Named temporaries, removed by the interrupt handler (as assimp-era .gltf writes were).
   // Their errors name their own file (the .bin beside the .gltf, or the folder).
   AtomicOutput bin_out(bin_path), gltf_out(path);

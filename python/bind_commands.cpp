@@ -198,16 +198,18 @@ py::dict evaluate(const py::object& inputs, const std::optional<std::vector<std:
 }  // namespace
 
 // The reading options of read_clip and info: the animation and the unit, in the
-// forms --anim and --unit take (a number is metres per unit).
-ReadOptions read_options(const py::object& anim, const py::object& unit) {
+// forms --anim and --unit take (a number is metres per unit), and
+// --allow-external-files.
+ReadOptions read_options(const py::object& anim, const py::object& unit, bool allow_external_files = false) {
   ReadOptions o;
+  o.allow_external_files = allow_external_files;
   if (!anim.is_none()) o.animation = py::str(anim).cast<std::string>();
   if (!unit.is_none()) o.unit = metres_per_unit_arg(unit, "unit");
   return o;
 }
 
-Clip read_path(const std::string& path, const py::object& anim, const py::object& unit) {
-  const ReadOptions o = read_options(anim, unit);
+Clip read_path(const std::string& path, const py::object& anim, const py::object& unit, bool allow_external_files) {
+  const ReadOptions o = read_options(anim, unit, allow_external_files);
   Result<Clip> c = make_error("");
   {
     py::gil_scoped_release release;
@@ -219,8 +221,8 @@ Clip read_path(const std::string& path, const py::object& anim, const py::object
 
 // rotinterp.info: the document `rotinterp info --json` prints (clip_info_json), as
 // Python data. Warnings go into its "warnings", not to stderr.
-py::object info(const std::string& path, const py::object& anim, const py::object& unit) {
-  ReadOptions o = read_options(anim, unit);
+py::object info(const std::string& path, const py::object& anim, const py::object& unit, bool allow_external_files) {
+  ReadOptions o = read_options(anim, unit, allow_external_files);
   o.on_warning = [](const std::string&) {};
   std::string text;
   Result<ClipFileInfo> r = make_error("");
@@ -250,8 +252,10 @@ Clip clip_or_path(const py::object& input) {
 }
 
 void bind_commands(py::module_& m) {
-  m.def("read_clip", &read_path, py::arg("path"), py::arg("anim") = py::none(), py::arg("unit") = py::none());
-  m.def("info", &info, py::arg("path"), py::arg("anim") = py::none(), py::arg("unit") = py::none());
+  m.def("read_clip", &read_path, py::arg("path"), py::arg("anim") = py::none(), py::arg("unit") = py::none(),
+        py::kw_only(), py::arg("allow_external_files") = false);
+  m.def("info", &info, py::arg("path"), py::arg("anim") = py::none(), py::arg("unit") = py::none(), py::kw_only(),
+        py::arg("allow_external_files") = false);
   m.def("write_clip", &write_path, py::arg("clip"), py::arg("path"), py::arg("bvh_order") = "ZXY");
   m.def("resample", &resample, py::arg("clip"), py::arg("fps") = py::none(), py::arg("keep_every") = py::none(),
         py::arg("method") = std::string(kDefaultResampleMethod),

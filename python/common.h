@@ -250,7 +250,8 @@ inline RotationTrack track_of(const double* times, const double* quats, std::siz
 // read_clip's reading (bind_commands.cpp): the clip at `path`, its animation `anim`
 // (None, a name or an index) and its unit (None: the file's or inferred; "cm", …, or
 // metres per unit as a number); raises OSError subclasses or ValueError.
-Clip read_path(const std::string& path, const py::object& anim, const py::object& unit = py::none());
+Clip read_path(const std::string& path, const py::object& anim, const py::object& unit = py::none(),
+               bool allow_external_files = false);
 // read_path's reading of an FBX file, and its own motion (its curves) into `motion`:
 // render(methods=["source", ...]).
 Clip read_path_with_source_motion(const std::string& path, SourceMotion& motion);

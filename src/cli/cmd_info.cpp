@@ -41,6 +41,7 @@ namespace {
 struct InfoArgs {
   std::vector<std::string> paths;
   std::string anim, unit;
+  bool allow_external_files = false;
   bool json = false;
   bool summary = false;
   bool curves = false;
@@ -60,10 +61,11 @@ struct FileSummary {
   ClipUnit unit;
 };
 
-// The reading options of both forms of info: --anim and --unit.
+// The reading options of both forms of info: --anim, --unit, --allow-external-files.
 Result<ReadOptions> info_read_options(const InfoArgs& args) {
   ReadOptions options;
   options.animation = args.anim;
+  options.allow_external_files = args.allow_external_files;
   auto unit = parse_unit_option(args.unit);
   if (!unit) return unit.failure();
   options.unit = *unit;
@@ -341,6 +343,7 @@ void add_info_command(CLI::App& app, int& exit_code) {
       ->required();
   add_anim_option(*sub, args->anim, nullptr);
   add_unit_option(*sub, args->unit);
+  add_external_files_option(*sub, args->allow_external_files);
   add_json_option(*sub, args->json);
   sub->add_flag("--summary", args->summary,
                 "One row per file (format, rate as read and as written, frames, duration, joints, notes), then the "

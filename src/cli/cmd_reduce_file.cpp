@@ -165,6 +165,7 @@ Status reduce_one_file(const std::string& input, const ReduceArgs& a, const Redu
   ReadOptions read_options;
   read_options.animation = a.anim;
   read_options.unit = s.unit_m;
+  read_options.allow_external_files = a.allow_external_files;
   read_options.on_warning = warn;
   auto clip = read_clip(input, read_options);
   if (!clip) return clip.failure();

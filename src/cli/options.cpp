@@ -63,6 +63,12 @@ void add_unit_option(CLI::App& sub, std::string& unit) {
                  "from the figure's size (info shows it); a file that declares its unit (FBX, glTF) keeps it");
 }
 
+void add_external_files_option(CLI::App& sub, bool& allow) {
+  sub.add_flag("--allow-external-files", allow,
+               "glTF: also read buffer files outside the file's folder (a uri with '..', an absolute path, a link "
+               "leading out). Default: refused, so that a file from elsewhere cannot make rotinterp read /etc");
+}
+
 Result<std::optional<double>> parse_unit_option(const std::string& text) {
   if (text.empty()) return std::optional<double>();
   auto v = parse_unit(text);

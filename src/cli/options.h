@@ -34,6 +34,9 @@ Result<long long> parse_whole_option(const std::string& option, const std::strin
 // --unit, on every command that reads clips: the unit of a file that states none
 // (m, cm, mm, in, ft or metres per unit; clip/units.h). One declaration, one help text.
 void add_unit_option(CLI::App& sub, std::string& unit);
+// --allow-external-files, on every command that reads clips: a glTF may read buffer
+// files outside its folder (ReadOptions::allow_external_files; docs/limits.md).
+void add_external_files_option(CLI::App& sub, bool& allow);
 // --unit's text as metres per unit; empty text (not given) is none.
 Result<std::optional<double>> parse_unit_option(const std::string& text);
 

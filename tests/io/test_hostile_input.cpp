@@ -152,6 +152,17 @@ TEST(HostileInput, UrisLeavingTheFilesFolderAreRefusedUnlessAllowed) {
       EXPECT_TRUE(read_clip(file, allow).ok()) << uri;
     }
   }
+  // The command names the option that allows it, and takes it.
+  const fs::path out = dir / "sub" / "out.gltf";
+  const test::CliResult refused = test::run_cli("info " + out.string());
+  EXPECT_EQ(refused.exit_code, 1);
+  EXPECT_NE(refused.err.find("refused unless --allow-external-files"), std::string::npos) << refused.err;
+  g.write(dir / "sub", "out.gltf", "../beside.gltf.bin");
+  for (const char* command : {"info", "resample"}) {
+    const std::string output = std::string(command) == "resample" ? " -q -o " + (dir / "out.bvh").string() : "";
+    const test::CliResult allowed = test::run_cli(std::string(command) + " " + out.string() + output + " --allow-external-files");
+    EXPECT_EQ(allowed.exit_code, 0) << command << ": " << allowed.err;
+  }
   // A link in the folder that points out of it is refused the same way.
   fs::create_symlink(dir / "beside.gltf.bin", dir / "sub" / "link.bin");
   EXPECT_NE(refusal(g.write(dir / "sub", "link.gltf", "link.bin")).find("leads out"), std::string::npos);

@@ -1,5 +1,7 @@
 """The Python entry points refuse what the command refuses, with its one-line
 message (issue 47, class 5), and read no memory an array does not hold."""
+import json
+
 import numpy as np
 import pytest
 
@@ -99,3 +101,18 @@ def test_requests_past_the_key_limit_are_refused_before_allocating():
     huge = 400_000_000
     with pytest.raises(ValueError, match="^times would give 400000000 frames"):
         rotinterp.make_interpolator(np.broadcast_to(0.0, (huge,)), np.broadcast_to(Q[0], (huge, 4)))
+
+
+def test_a_gltf_buffer_outside_the_folder_is_read_only_with_allow_external_files(tmp_path):
+    (tmp_path / "sub").mkdir()
+    rotinterp.write_clip(two_joint_clip(frame_time=1.0), str(tmp_path / "clip.gltf"))
+    doc = json.loads((tmp_path / "clip.gltf").read_text())
+    doc["buffers"][0]["uri"] = "../" + doc["buffers"][0]["uri"]
+    outside = tmp_path / "sub" / "outside.gltf"
+    outside.write_text(json.dumps(doc))
+    for read in (rotinterp.read_clip, rotinterp.info):
+        with pytest.raises(ValueError, match=r"leads out of the file's folder \(refused unless --allow-external-files, "
+                                             r"in Python allow_external_files=True\)$"):
+            read(str(outside))
+    assert rotinterp.read_clip(str(outside), allow_external_files=True).names == ["a", "b"]
+    assert len(rotinterp.info(str(outside), allow_external_files=True)["joints"]) == 2

@@ -13,6 +13,7 @@
 #include <sys/resource.h>
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <chrono>
 #include <string>
 #include <vector>
@@ -198,13 +199,24 @@ TEST(HostileInput, BadFbxKeysAreRefusedOnTheDefaultPathAsOnTheCurveReader) {
   }
 }
 
-TEST(HostileInput, AnExactlyRepeatedFbxKeyIsDroppedWithAWarning) {
+TEST(HostileInput, AnExactlyRepeatedFbx7KeyIsDroppedByOurReaderAndRefusedWhereAssimpMakesTheClip) {
   test::TempDir dir;
   const fs::path file = dir / "repeat.fbx";
   // Key 2 becomes key 1 again, time and value.
   test::write_text(file, test::edit_ascii_array(test::fbx_ascii_with("KeyTime", [](auto& t) { t[2] = t[1]; }),
                                                 "KeyValueFloat", [](auto& v) { v[2] = v[1]; }));
-  // Our curve reader repairs it (assimp, which the default path still runs, drops the curve).
+  // Our curve reader repairs it; assimp, which makes the clip on the default path,
+  // drops the whole curve, so there the file is refused rather than left at rest.
+  ReadOptions with_curves;
+  with_curves.read_curves = true;
+  for (const ReadOptions& options : {ReadOptions{}, with_curves}) {
+    const std::string error = refusal(file, options);
+    EXPECT_NE(error.find("Lcl Translation/X: 1 key at a time already keyed with the same values dropped by our reader, "
+                         "but assimp"),
+              std::string::npos)
+        << error;
+    EXPECT_NE(error.find("would leave its joint at rest: refused"), std::string::npos) << error;
+  }
   Result<FbxAnimation> curves = read_fbx_curves_file(file.string(), file.string());
   ASSERT_TRUE(curves.ok()) << curves.error();
   ASSERT_EQ(curves->repairs.size(), 1u);

@@ -199,6 +199,26 @@ TEST(HostileInput, BadFbxKeysAreRefusedOnTheDefaultPathAsOnTheCurveReader) {
   }
 }
 
+TEST(HostileInput, ANonFiniteBvhValueIsRefusedNamingItsFrameLineAndJoint) {
+  test::TempDir dir;
+  const std::string text = test::read_text(kData / "bvh/NC_bandai2_raise-up-both-hands_active_031.bvh");
+  std::size_t row = text.find('\n', text.find("Frame Time:")) + 1;  // frame 0
+  for (int frame = 0; frame < 2; ++frame) row = text.find('\n', row) + 1;
+  row = text.find_first_not_of(" \t", row);  // frame 2's first value: joint_Root's Xposition
+  const long line = std::count(text.begin(), text.begin() + static_cast<long>(row), '\n') + 1;
+  for (const char* bad : {"nan", "-inf"}) {
+    std::string mutated = text;
+    mutated.replace(row, mutated.find_first_of(" \t", row) - row, bad);
+    const fs::path file = dir / (std::string(bad) + ".bvh");
+    test::write_text(file, mutated);
+    const std::string error = refusal(file);
+    EXPECT_NE(error.find("frame 2 (line " + std::to_string(line) + "), joint 'joint_Root' Xposition: value is " + bad +
+                         " (not finite)"),
+              std::string::npos)
+        << error;
+  }
+}
+
 TEST(HostileInput, AnExactlyRepeatedFbx7KeyIsDroppedByOurReaderAndRefusedWhereAssimpMakesTheClip) {
   test::TempDir dir;
   const fs::path file = dir / "repeat.fbx";

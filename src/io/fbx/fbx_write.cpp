@@ -172,7 +172,6 @@ Result<std::string> encode_fbx_takes(const Clip& clip, const std::vector<FbxOutT
     e.end();
   }
   for (std::size_t j = 0; j < n; ++j) {
-    const Joint& joint = sk.joints[j];
     e.begin("Model");
     e.i64(model_id[j]).str(e.object_name(names[j], "Model")).str("LimbNode");
     doc.leaf_i32("Version", 232);

@@ -27,6 +27,7 @@
 #include <cmath>
 #include <cstring>
 #include <cstddef>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -99,9 +100,10 @@ inline Integers integer_array(const py::handle& h, const char* what) {
   return Integers::ensure(a);
 }
 
-// A whole number given as a Python or numpy integer, at least `min`: a float (2.5) or
-// a bool is refused (TypeError), never truncated, and one past int64 is too large.
-inline long long whole_number(const py::handle& h, const std::string& what, long long min) {
+// A whole number given as a Python or numpy integer, from `min` to `max`: a float (2.5)
+// or a bool is refused (TypeError), never truncated, and one past int64 is too large.
+inline long long whole_number(const py::handle& h, const std::string& what, long long min,
+                              long long max = std::numeric_limits<long long>::max()) {
   const std::string text = py::repr(h).cast<std::string>();
   if (py::isinstance<py::bool_>(h) || !PyIndex_Check(h.ptr()))
     throw py::type_error(what + " must be a whole number, got " + text);
@@ -110,6 +112,7 @@ inline long long whole_number(const py::handle& h, const std::string& what, long
   int overflow = 0;
   const long long v = PyLong_AsLongLongAndOverflow(index.ptr(), &overflow);
   if (overflow || v < min) value_error(what + " must be a whole number >= " + std::to_string(min) + ", got " + text);
+  if (v > max) value_error(what + " must be a whole number <= " + std::to_string(max) + ", got " + text);
   return v;
 }
 

@@ -44,7 +44,7 @@ Result<ResampleOptions> resample_options(const ResampleArgs& a) {
   ResampleOptions opt;
   if (!a.fps.empty() && !a.keep_every.empty()) return make_error("give either --fps or --keep-every, not both");
   if (!a.fps.empty()) {
-    auto r = parse_rate_option("--fps", a.fps);
+    auto r = parse_rate_value("--fps", a.fps);
     if (!r) return r.failure();
     opt.fps = *r;
   }

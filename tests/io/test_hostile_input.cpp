@@ -159,10 +159,14 @@ TEST(HostileInput, UrisLeavingTheFilesFolderAreRefusedUnlessAllowed) {
   EXPECT_EQ(refused.exit_code, 1);
   EXPECT_NE(refused.err.find("refused unless --allow-external-files"), std::string::npos) << refused.err;
   g.write(dir / "sub", "out.gltf", "../beside.gltf.bin");
-  for (const char* command : {"info", "resample"}) {
-    const std::string output = std::string(command) == "resample" ? " -q -o " + (dir / "out.bvh").string() : "";
-    const test::CliResult allowed = test::run_cli(std::string(command) + " " + out.string() + output + " --allow-external-files");
+  const std::string in = out.string() + " -q";
+  for (const std::string& command :
+       {"info " + out.string(), "resample " + in + " -o " + (dir / "out.bvh").string(),
+        "reduce " + in + " -o " + (dir / "keys.json").string(),
+        "eval " + in + " -m slerp --keep-every 2 --no-plots -o " + (dir / "eval").string()}) {
+    const test::CliResult allowed = test::run_cli(command + " --allow-external-files");
     EXPECT_EQ(allowed.exit_code, 0) << command << ": " << allowed.err;
+    EXPECT_NE(test::run_cli(command).exit_code, 0) << command;
   }
   // A link in the folder that points out of it is refused the same way.
   fs::create_symlink(dir / "beside.gltf.bin", dir / "sub" / "link.bin");

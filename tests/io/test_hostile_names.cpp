@@ -150,6 +150,22 @@ TEST(HostileNames, InfoJsonShowsSuchNamesAsTheWritersDoNotANlohmannError) {
   EXPECT_EQ(doc["joints"][1]["name"], "bad\xEF\xBF\xBD\xEF\xBF\xBD");
 }
 
+TEST(HostileNames, AFileNameThatIsNotUtf8IsShownInJsonWithTheReplacementCharacter) {
+  test::TempDir dir;
+  const fs::path file = dir / "bad\xff.bvh";
+  fs::copy_file(kData / kBandai, file);
+  for (const std::string options : {" --json", " --summary --json"}) {
+    const test::CliResult r = test::run_cli("info '" + file.string() + "'" + options);
+    ASSERT_EQ(r.exit_code, 0) << options << ": " << r.err;
+    EXPECT_NE(nlohmann::json::parse(r.out).dump().find("bad\xEF\xBF\xBD.bvh"), std::string::npos) << options;
+  }
+  // A .gltf names its buffer after itself, in JSON: such a name is refused in one line.
+  const test::CliResult gltf = test::run_cli("resample '" + file.string() + "' -q -o '" + (dir / "out\xfe.gltf").string() + "'");
+  EXPECT_EQ(gltf.exit_code, 1);
+  EXPECT_NE(gltf.err.find("this name is not valid UTF-8"), std::string::npos) << gltf.err;
+  EXPECT_EQ(gltf.err.find("json.exception"), std::string::npos) << gltf.err;
+}
+
 TEST(HostileNames, SpacesBracesTabsAndEmptyNamesInAGltfReadBackFromEveryFormat) {
   test::TempDir dir;
   test::GltfFile g = test::shared_gltf(dir.path());

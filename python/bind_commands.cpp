@@ -3,6 +3,7 @@
 #include "rotinterp/io/files/formats.h"
 #include "rotinterp/clip/frames.h"
 #include "rotinterp/clip/metrics.h"
+#include "rotinterp/clip/rate_value.h"
 #include "rotinterp/clip/resample.h"
 #include "rotinterp/clip/resample_loop.h"
 #include "rotinterp/clip/units.h"
@@ -66,8 +67,8 @@ void write_path(const Clip& clip, const fs::path& path, const std::string& bvh_o
 // ---- resample ------------------------------------------------------------------------
 
 Rate rate_of(const py::handle& fps) {
-  // Fractions print as "30000/1001", numbers and strings as themselves.
-  return checked(parse_rate(py::str(fps).cast<std::string>()));
+  // Fractions print as "30000/1001", numbers and strings as themselves; read as --fps reads them.
+  return checked(parse_rate_value("fps", py::str(fps).cast<std::string>()));
 }
 
 Clip resample(const Clip& clip, const py::object& fps, const py::object& keep_every, const std::string& method,
@@ -76,7 +77,7 @@ Clip resample(const Clip& clip, const py::object& fps, const py::object& keep_ev
   ResampleOptions o;
   if (!fps.is_none()) o.fps = rate_of(fps);
   if (!keep_every.is_none()) {
-    o.keep_every = static_cast<std::size_t>(whole_number(keep_every, "keep_every", 1));
+    o.keep_every = static_cast<std::size_t>(whole_number(keep_every, "keep_every", 1, kMaxKeepEvery));
   }
   o.method = method_of(method).name;
   for (const auto& [joint, m] : method_for) o.method_for.emplace_back(joint, method_of(m).name);
@@ -94,8 +95,10 @@ Clip resample(const Clip& clip, const py::object& fps, const py::object& keep_ev
   std::optional<std::optional<LoopForm>> cycle;
   if (py::isinstance<py::bool_>(loop)) {
     if (loop.cast<bool>()) cycle.emplace();
-  } else if (!loop.is_none()) {
+  } else if (py::isinstance<py::str>(loop)) {
     cycle = checked(parse_loop_form(loop.cast<std::string>()));
+  } else if (!loop.is_none()) {
+    throw py::type_error("loop must be None, a bool, 'auto', 'closed' or 'open', got " + py::repr(loop).cast<std::string>());
   }
   Result<Clip> out = make_error("");
   {
@@ -137,9 +140,7 @@ py::dict evaluate(const py::object& inputs, const std::optional<std::vector<std:
     m = method_of(m).name;  // one spelling in the results ("SLERP" is slerp)
   }
   for (const py::handle n : keep_every) {
-    const long long k = whole_number(n, "keep_every values", 1);
-    if (k > std::numeric_limits<int>::max()) value_error("keep_every value " + std::to_string(k) + " is too large");
-    o.keep_every.push_back(static_cast<int>(k));
+    o.keep_every.push_back(static_cast<int>(whole_number(n, "keep_every values", 1, kMaxKeepEvery)));
   }
   o.subframe = subframe;
   // A length as eval --shell-distance takes it ("3cm"), or a number of metres; its parser's refusals.
@@ -212,16 +213,18 @@ py::dict evaluate(const py::object& inputs, const std::optional<std::vector<std:
 }  // namespace
 
 // The reading options of read_clip and info: the animation and the unit, in the
-// forms --anim and --unit take (a number is metres per unit).
-ReadOptions read_options(const py::object& anim, const py::object& unit) {
+// forms --anim and --unit take (a number is metres per unit), and
+// --allow-external-files.
+ReadOptions read_options(const py::object& anim, const py::object& unit, bool allow_external_files = false) {
   ReadOptions o;
+  o.allow_external_files = allow_external_files;
   if (!anim.is_none()) o.animation = py::str(anim).cast<std::string>();
   if (!unit.is_none()) o.unit = metres_per_unit_arg(unit, "unit");
   return o;
 }
 
-Clip read_path(const std::string& path, const py::object& anim, const py::object& unit) {
-  const ReadOptions o = read_options(anim, unit);
+Clip read_path(const std::string& path, const py::object& anim, const py::object& unit, bool allow_external_files) {
+  const ReadOptions o = read_options(anim, unit, allow_external_files);
   Result<Clip> c = make_error("");
   {
     py::gil_scoped_release release;
@@ -233,8 +236,8 @@ Clip read_path(const std::string& path, const py::object& anim, const py::object
 
 // rotinterp.info: the document `rotinterp info --json` prints (clip_info_json), as
 // Python data. Warnings go into its "warnings", not to stderr.
-py::object info(const std::string& path, const py::object& anim, const py::object& unit) {
-  ReadOptions o = read_options(anim, unit);
+py::object info(const std::string& path, const py::object& anim, const py::object& unit, bool allow_external_files) {
+  ReadOptions o = read_options(anim, unit, allow_external_files);
   o.on_warning = [](const std::string&) {};
   std::string text;
   Result<ClipFileInfo> r = make_error("");
@@ -264,8 +267,10 @@ Clip clip_or_path(const py::object& input) {
 }
 
 void bind_commands(py::module_& m) {
-  m.def("read_clip", &read_path, py::arg("path"), py::arg("anim") = py::none(), py::arg("unit") = py::none());
-  m.def("info", &info, py::arg("path"), py::arg("anim") = py::none(), py::arg("unit") = py::none());
+  m.def("read_clip", &read_path, py::arg("path"), py::arg("anim") = py::none(), py::arg("unit") = py::none(),
+        py::kw_only(), py::arg("allow_external_files") = false);
+  m.def("info", &info, py::arg("path"), py::arg("anim") = py::none(), py::arg("unit") = py::none(), py::kw_only(),
+        py::arg("allow_external_files") = false);
   m.def("write_clip", &write_path, py::arg("clip"), py::arg("path"), py::arg("bvh_order") = "ZXY");
   m.def("resample", &resample, py::arg("clip"), py::arg("fps") = py::none(), py::arg("keep_every") = py::none(),
         py::arg("method") = std::string(kDefaultResampleMethod),

@@ -27,6 +27,7 @@
 #include <cmath>
 #include <cstring>
 #include <cstddef>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -99,9 +100,10 @@ inline Integers integer_array(const py::handle& h, const char* what) {
   return Integers::ensure(a);
 }
 
-// A whole number given as a Python or numpy integer, at least `min`: a float (2.5) or
-// a bool is refused (TypeError), never truncated, and one past int64 is too large.
-inline long long whole_number(const py::handle& h, const std::string& what, long long min) {
+// A whole number given as a Python or numpy integer, from `min` to `max`: a float (2.5)
+// or a bool is refused (TypeError), never truncated, and one past int64 is too large.
+inline long long whole_number(const py::handle& h, const std::string& what, long long min,
+                              long long max = std::numeric_limits<long long>::max()) {
   const std::string text = py::repr(h).cast<std::string>();
   if (py::isinstance<py::bool_>(h) || !PyIndex_Check(h.ptr()))
     throw py::type_error(what + " must be a whole number, got " + text);
@@ -110,6 +112,7 @@ inline long long whole_number(const py::handle& h, const std::string& what, long
   int overflow = 0;
   const long long v = PyLong_AsLongLongAndOverflow(index.ptr(), &overflow);
   if (overflow || v < min) value_error(what + " must be a whole number >= " + std::to_string(min) + ", got " + text);
+  if (v > max) value_error(what + " must be a whole number <= " + std::to_string(max) + ", got " + text);
   return v;
 }
 
@@ -250,7 +253,8 @@ inline RotationTrack track_of(const double* times, const double* quats, std::siz
 // read_clip's reading (bind_commands.cpp): the clip at `path`, its animation `anim`
 // (None, a name or an index) and its unit (None: the file's or inferred; "cm", …, or
 // metres per unit as a number); raises OSError subclasses or ValueError.
-Clip read_path(const std::string& path, const py::object& anim, const py::object& unit = py::none());
+Clip read_path(const std::string& path, const py::object& anim, const py::object& unit = py::none(),
+               bool allow_external_files = false);
 // read_path's reading of an FBX file, and its own motion (its curves) into `motion`:
 // render(methods=["source", ...]).
 Clip read_path_with_source_motion(const std::string& path, SourceMotion& motion);

@@ -88,14 +88,16 @@ def make_interpolator(times, quats, method=default_method, scalar_first=False, e
     return _rotinterp.make_interpolator(times, quats, method, scalar_first, extrapolate)
 
 
-def read_clip(path, anim=None, unit=None):
+def read_clip(path, anim=None, unit=None, *, allow_external_files=False):
     """Read a clip (BVH, FBX, glTF/GLB, Collada, ...). ``anim``: an animation's name or
     index (default: the first). ``unit``: what one clip unit is, as ``--unit`` takes it
     ("m", "cm", "mm", "in", "ft") or metres per unit as a number; default the file's,
-    else inferred from the figure's size (``clip.unit`` says which and why). Raises
-    FileNotFoundError/IsADirectoryError for a path that is not a file, ValueError for a
-    file that is not a clip."""
-    return _rotinterp.read_clip(str(path), anim, unit)
+    else inferred from the figure's size (``clip.unit`` says which and why).
+    ``allow_external_files``: a glTF may read buffer files outside its folder, as
+    ``--allow-external-files`` (refused by default). Raises FileNotFoundError/
+    IsADirectoryError for a path that is not a file, ValueError for a file that is not a
+    clip."""
+    return _rotinterp.read_clip(str(path), anim, unit, allow_external_files=allow_external_files)
 
 
 def write_clip(clip, path, bvh_order="ZXY"):
@@ -106,11 +108,12 @@ def write_clip(clip, path, bvh_order="ZXY"):
     _rotinterp.write_clip(clip, str(path), bvh_order)
 
 
-def info(path, anim=None, unit=None):
+def info(path, anim=None, unit=None, *, allow_external_files=False):
     """What a clip file holds, as a dict: the document ``rotinterp info --json PATH``
     prints (format, animations, frames, rate, duration, unit, joints with their channels
-    and key counts, oddities, warnings). Raises as ``read_clip`` does."""
-    return _rotinterp.info(str(path), anim, unit)
+    and key counts, oddities, warnings). ``allow_external_files`` and errors as
+    ``read_clip``'s."""
+    return _rotinterp.info(str(path), anim, unit, allow_external_files=allow_external_files)
 
 
 def reduce(clip, method="slerp", tolerance=None, shell_distance=None, tolerance_for=None, translation="cubic",

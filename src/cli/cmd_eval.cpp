@@ -53,6 +53,7 @@ struct EvalArgs {
   std::string contact_height = fmt::format("{}cm", kDefaultContactHeightMetres * 100);
   std::string contact_speed = fmt::format("{}m/s", kDefaultContactSpeedMps);
   std::string floor, unit;
+  bool allow_external_files = false;
   std::string per_frame;
   std::string table = "text";
   std::string loop = "off";  // --loop as written
@@ -162,7 +163,11 @@ int run(const EvalArgs& a) {
       o.clip.loop_form = (*loop)->form;
     }
     if (a.truth == "synth") o.truth = {"synth", synth_truth};
-    if (a.truth == "source") o.truth = {"source", source_truth};
+    o.allow_external_files = a.allow_external_files;
+    if (a.truth == "source")
+      o.truth = {"source", [allow = a.allow_external_files](const std::string& file, const Clip& clip) {
+                   return source_truth(file, clip, allow);
+                 }};
     keep_freed_memory_for_reuse();
     o.progress = make_progress("eval", quiet, "clips");
     o.on_failure = print_failure;
@@ -261,6 +266,7 @@ void add_eval_command(CLI::App& app, int& exit_code) {
                   "bare number is m/s")
       ->capture_default_str();
   add_unit_option(*sub, args->unit);
+  add_external_files_option(*sub, args->allow_external_files);
   sub->add_option("--per-frame", args->per_frame,
                   "Also write DIR/per_frame.csv: the angle error of every joint at every sample, for CLIP,METHOD,N "
                   "(CLIP as in errors.csv); default none");

@@ -8,6 +8,7 @@
 #include "progress_line.h"
 #include "info_curves.h"
 #include "rotinterp/io/files/file_record.h"
+#include "rotinterp/io/files/json_text.h"
 #include "rotinterp/clip/frames.h"
 #include "rotinterp/clip/loop.h"
 #include "rotinterp/core/work_queue.h"
@@ -40,6 +41,7 @@ namespace {
 struct InfoArgs {
   std::vector<std::string> paths;
   std::string anim, unit;
+  bool allow_external_files = false;
   bool json = false;
   bool summary = false;
   bool curves = false;
@@ -59,10 +61,11 @@ struct FileSummary {
   ClipUnit unit;
 };
 
-// The reading options of both forms of info: --anim and --unit.
+// The reading options of both forms of info: --anim, --unit, --allow-external-files.
 Result<ReadOptions> info_read_options(const InfoArgs& args) {
   ReadOptions options;
   options.animation = args.anim;
+  options.allow_external_files = args.allow_external_files;
   auto unit = parse_unit_option(args.unit);
   if (!unit) return unit.failure();
   options.unit = *unit;
@@ -173,7 +176,7 @@ int run_summary(const InfoArgs& args) {
     out["duplicates"] = copies;
     out["unreadable"] = unreadable;
     out["flagged"] = flagged;
-    fmt::print("{}\n", out.dump(2));
+    fmt::print("{}\n", json_text(out, 2));
   } else {
     std::size_t width = 4;
     for (const FileSummary& s : rows) width = std::max(width, s.file.size());
@@ -209,7 +212,7 @@ int describe_static(const std::string& path, const std::string& holds, bool json
     const nlohmann::json out = {{"file", path},           {"format", format},
                                 {"animations", nlohmann::json::array()}, {"holds", holds},
                                 {"no_animation", true}};
-    fmt::print("{}\n", out.dump(2));
+    fmt::print("{}\n", json_text(out, 2));
   } else {
     fmt::print("file:        {}\n", path);
     fmt::print("format:      {}\n", format);
@@ -340,6 +343,7 @@ void add_info_command(CLI::App& app, int& exit_code) {
       ->required();
   add_anim_option(*sub, args->anim, nullptr);
   add_unit_option(*sub, args->unit);
+  add_external_files_option(*sub, args->allow_external_files);
   add_json_option(*sub, args->json);
   sub->add_flag("--summary", args->summary,
                 "One row per file (format, rate as read and as written, frames, duration, joints, notes), then the "

@@ -2,6 +2,7 @@
 #include "common.h"
 #include "options.h"
 #include "rotinterp/interp/interpolator.h"
+#include "rotinterp/io/files/json_text.h"
 #include "rotinterp/io/source_motion.h"
 
 #include <CLI/CLI.hpp>
@@ -51,7 +52,7 @@ void add_methods_command(CLI::App& app, int& exit_code) {
                      {"preserves_holds", nullptr},
                      {"replays_file_curves", true},
                      {"runs_in", kSourceRunsIn}});
-      fmt::print("{}\n", out.dump(2));
+      fmt::print("{}\n", json_text(out, 2));
     } else {
       std::size_t width = 6;  // "method"
       for (const MethodInfo& m : methods()) width = std::max(width, m.name.size());

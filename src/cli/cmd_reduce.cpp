@@ -138,6 +138,7 @@ int run_reduce(const ReduceArgs& a) {
   if (several) {
     ReadOptions read_options;
     read_options.unit = setup->unit_m;
+    read_options.allow_external_files = a.allow_external_files;
     read_options.on_warning = warn;
     auto chosen = select_takes(input, a.anim, read_options);
     if (!chosen) return fail(chosen.error());
@@ -193,6 +194,7 @@ void add_reduce_command(CLI::App& app, int& exit_code) {
                   "per-cycle offset) and the seam is one key; the output closes: each looped track's last key is its "
                   "first again, one period on.");
   add_unit_option(*sub, a->unit);
+  add_external_files_option(*sub, a->allow_external_files);
   add_anim_option(*sub, a->anim, "a file per take: {anim} in the output name is the take's name");
   add_quiet_option(*sub, a->quiet);
   add_jobs_option(*sub, a->jobs, "Folder runs: files reduced at once");

@@ -20,6 +20,7 @@ struct ReduceArgs {
   std::string shell_distance, unit, loop = "off";
   std::vector<std::string> tolerance, tolerance_for;
   bool quiet = false;
+  bool allow_external_files = false;
   // Folder runs.
   int jobs = 0;
   std::string shard, format, manifest;

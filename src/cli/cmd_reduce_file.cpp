@@ -7,6 +7,8 @@
 #include "rotinterp/io/files/atomic_file.h"
 #include "rotinterp/io/fbx/fbx_reduced.h"
 #include "rotinterp/io/files/formats.h"
+#include "rotinterp/io/files/json_text.h"
+#include "rotinterp/io/files/written_names.h"
 #include "rotinterp/io/read.h"
 #include "rotinterp/io/write.h"
 #include "rotinterp/reduce/reduce.h"
@@ -51,9 +53,9 @@ nlohmann::json run_json(const MethodRun& r) {
 
 // A cycle as the keys file and the report state it: its form and period, the joints that
 // miss closure (reduced with their ends, as without --loop).
-nlohmann::json loop_json(const LoopCheck& c) {
+nlohmann::json loop_json(const LoopCheck& c, const std::vector<std::string>& names) {
   nlohmann::json misses = nlohmann::json::array();
-  for (const ClosureMiss& m : c.misses) misses.push_back({{"joint", m.name}, {"angle_deg", m.angle * 180.0 / kPi}});
+  for (const ClosureMiss& m : c.misses) misses.push_back({{"joint", names[m.joint]}, {"angle_deg", m.angle * 180.0 / kPi}});
   return {{"form", loop_form_name(c.form)},
           {"period_frames", c.period_frames},
           {"period", c.period},
@@ -65,12 +67,13 @@ Status write_keys_json(const std::filesystem::path& path, const Clip& source, co
                        const ReduceOptions& opt, double metres_per_unit, const nlohmann::json& budgets) {
   const ReduceResult& r = run.result;
   nlohmann::json joints = nlohmann::json::array();
+  const std::vector<std::string> names = written_joint_names(source.skeleton, NameForm::text);
   for (std::size_t j = 0; j < r.joints.size(); ++j) {
     const ReducedJoint& rj = r.joints[j];
     const RotationTrack& rt = r.reduced.rotations[j];
     nlohmann::json rot_keys = nlohmann::json::array();
     for (const Quat& q : rt.keys) rot_keys.push_back({q.x(), q.y(), q.z(), q.w()});
-    nlohmann::json joint = {{"name", source.skeleton.joints[j].name},
+    nlohmann::json joint = {{"name", names[j]},
                             {"parent", source.skeleton.joints[j].parent},
                             {"rotation", {{"frames", rj.rotation_frames}, {"times", rt.times}, {"keys", rot_keys}}},
                             {"max_rotation_error_deg", rj.max_rotation_error * 180.0 / kPi}};
@@ -86,7 +89,7 @@ Status write_keys_json(const std::filesystem::path& path, const Clip& source, co
   }
   nlohmann::json doc = {
       {"generator", std::string("rotinterp ") + ROTINTERP_VERSION + " reduce"},
-      {"source", source.name},
+      {"source", readable_text(source.name)},
       {"method", run.method},
       {"translation", translation_interp_name(opt.translation)},
       {"frames", r.grid.size()},
@@ -99,9 +102,9 @@ Status write_keys_json(const std::filesystem::path& path, const Clip& source, co
       {"kept_keys", r.kept_keys},
       {"source_keys", r.source_keys},
       {"joints", joints}};
-  if (r.cycle) doc["loop"] = loop_json(*r.cycle);
+  if (r.cycle) doc["loop"] = loop_json(*r.cycle, names);
   return write_file_atomically(path, [&](std::ostream& out) -> Status {
-    out << doc.dump(1) << '\n';
+    out << json_text(doc, 1) << '\n';
     return Ok{};
   });
 }
@@ -172,6 +175,7 @@ Status reduce_one_file(const std::string& input, const ReduceArgs& a, const Redu
   ReadOptions read_options;
   read_options.animation = a.anim;
   read_options.unit = s.unit_m;
+  read_options.allow_external_files = a.allow_external_files;
   read_options.on_warning = warn;
   auto clip = read_clip(input, read_options);
   if (!clip) return clip.failure();
@@ -275,9 +279,10 @@ Status reduce_one_file(const std::string& input, const ReduceArgs& a, const Redu
                              {"translation", translation_interp_name(opt.translation)},
                              {"budget", budgets},
                              {"methods", list}};
-    if (first.result.cycle) report["loop"] = loop_json(*first.result.cycle);
+    if (first.result.cycle)
+      report["loop"] = loop_json(*first.result.cycle, written_joint_names(clip->skeleton, NameForm::text));
     const Status written = write_file_atomically(o.report, [&](std::ostream& out) -> Status {
-      out << report.dump(1) << '\n';
+      out << json_text(report, 1) << '\n';
       return Ok{};
     });
     if (!written) return written;

@@ -97,6 +97,7 @@ struct RenderArgs {
   bool sheet = false;
   std::string backend;
   std::string anim, unit;
+  bool allow_external_files = false;
   std::string view = "overlay";
   std::string colour;  // empty: error (side)
   std::string camera;
@@ -203,6 +204,7 @@ int run_render(const RenderArgs& a) {
   auto unit = parse_unit_option(a.unit);
   if (!unit) return fail_usage(unit.error());
   read_options.unit = *unit;
+  read_options.allow_external_files = a.allow_external_files;
   read_options.on_warning = warn;
   auto clip = source ? read_clip_with_source_motion(a.input, read_options, options.source) : read_clip(a.input, read_options);
   if (!clip) return fail(clip.error());
@@ -257,6 +259,7 @@ void add_render_command(CLI::App& app, int& exit_code) {
                 "(default: off)");
   add_anim_option(*sub, args->anim, nullptr);
   add_unit_option(*sub, args->unit);
+  add_external_files_option(*sub, args->allow_external_files);
   sub->add_option("--view", args->view,
                   "overlay: one panel, the truth as a pale ghost and each method over it in its own colour, named "
                   "in a legend (a 2° difference shows as a gap between bones); side: a panel per method, side by side")

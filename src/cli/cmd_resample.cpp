@@ -44,7 +44,7 @@ Result<ResampleOptions> resample_options(const ResampleArgs& a) {
   ResampleOptions opt;
   if (!a.fps.empty() && !a.keep_every.empty()) return make_error("give either --fps or --keep-every, not both");
   if (!a.fps.empty()) {
-    auto r = parse_rate_option("--fps", a.fps);
+    auto r = parse_rate_value("--fps", a.fps);
     if (!r) return r.failure();
     opt.fps = *r;
   }
@@ -144,6 +144,7 @@ int run_takes(const ResampleArgs& a, ResampleOptions opt) {
                       " in the output name to write one file per take (or write .fbx, .glb or .gltf)");
   ReadOptions read_options;
   read_options.unit = a.unit_m;
+  read_options.allow_external_files = a.allow_external_files;
   read_options.on_warning = warn;
   auto takes = select_takes(input, a.anim, read_options);
   if (!takes) return fail(takes.error());
@@ -263,6 +264,7 @@ void add_resample_command(CLI::App& app, int& exit_code) {
                   "so); --keep-every takes the wrap-around neighbours.");
   add_anim_option(*sub, a->anim, "each resampled on its own clock; written into one .fbx, .glb or .gltf, a take each, or one file per take with {anim} in the output name");
   add_unit_option(*sub, a->unit);
+  add_external_files_option(*sub, a->allow_external_files);
   sub->add_option("--out-unit", a->out_unit,
                   "Unit of the written file: m, cm, mm, in, ft or metres per unit (default: the input's; glTF is "
                   "always metres)");

@@ -32,6 +32,7 @@ struct ResampleArgs {
   int jobs = 0;
   std::string shard, format, manifest;
   bool skip_existing = false;
+  bool allow_external_files = false;
   std::string unit, out_unit;  // as written; parsed into:
   std::optional<double> unit_m, out_unit_m;  // metres per unit
   std::string loop = "off";                  // --loop as written; parsed into:

@@ -25,6 +25,7 @@ Result<ResampledFile> resample_input(FileRun& run, const ResampleArgs& a, const 
   ReadOptions read_options;
   read_options.animation = a.anim;
   read_options.unit = a.unit_m;
+  read_options.allow_external_files = a.allow_external_files;
   read_options.on_warning = warn;
   read_options.threads = opt.threads;
   stage("reading " + run.input);

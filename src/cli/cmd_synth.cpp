@@ -42,7 +42,7 @@ int run_synth(const SynthArgs& a) {
         o.seconds <= 0.0)
       return fail_usage("--seconds '" + a.seconds + "' must be a number greater than 0");
   }
-  auto fps = parse_rate_option("--fps", a.fps);
+  auto fps = parse_rate_value("--fps", a.fps);
   if (!fps) return fail_usage(fps.error());
   o.fps = *fps;
   {

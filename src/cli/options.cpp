@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
-#include <charconv>
 #include <cmath>
 #include <cstdlib>
 
@@ -29,23 +28,6 @@ bool whole_text_number(const std::string& text, double& value) {
 
 }  // namespace
 
-Result<Rate> parse_rate_option(const std::string& option, const std::string& text) {
-  auto rate = parse_rate(text);
-  if (rate) return rate;
-  double v = 0;
-  if (!whole_text_number(text, v)) return rate.failure(option + ": ");
-  const std::string quoted = "'" + text + "'";
-  if (v <= 0) return make_error(option + " " + quoted + " must be greater than 0");
-  // In range but in a form parse_rate does not read (1e3): the same value as the
-  // shortest decimal that reads back as it. Any number ≥ 1 so written reads unless
-  // it is above parse_rate's limit.
-  char buf[400];
-  const auto printed = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed);
-  if (auto again = parse_rate(std::string_view(buf, static_cast<std::size_t>(printed.ptr - buf)))) return again;
-  if (v >= 1) return make_error(option + " " + quoted + " is out of range (at most 1e9 Hz)");
-  return make_error(option + " " + quoted + " is too small or too precise for an exact rate; use a ratio such as 1/3600");
-}
-
 Result<long long> parse_whole_option(const std::string& option, const std::string& text, long long min, long long max) {
   const std::string quoted = "'" + text + "'";
   const std::string range = "from " + std::to_string(min) + " to " + std::to_string(max);
@@ -61,6 +43,12 @@ void add_unit_option(CLI::App& sub, std::string& unit) {
   sub.add_option("--unit", unit,
                  "Unit of a file that states none (BVH): m, cm, mm, in, ft or metres per unit. Default: inferred "
                  "from the figure's size (info shows it); a file that declares its unit (FBX, glTF) keeps it");
+}
+
+void add_external_files_option(CLI::App& sub, bool& allow) {
+  sub.add_flag("--allow-external-files", allow,
+               "glTF: also read buffer files outside the file's folder (a uri with '..', an absolute path, a link "
+               "leading out). Default: refused, so that a file from elsewhere cannot make rotinterp read /etc");
 }
 
 Result<std::optional<double>> parse_unit_option(const std::string& text) {

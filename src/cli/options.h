@@ -5,6 +5,7 @@
 #pragma once
 
 #include "rotinterp/clip/loop.h"
+#include "rotinterp/clip/rate_value.h"
 #include "rotinterp/clip/sampling.h"
 #include "rotinterp/core/result.h"
 
@@ -20,13 +21,6 @@ class Option;
 
 namespace rotinterp::cli {
 
-// Largest --keep-every (frames between keys): far above any clip's frame count.
-constexpr long long kMaxKeepEvery = 1000000000;
-
-// A frame-rate option (--fps): parse_rate's forms, plus plain numbers it does not
-// take (exponent notation: 1e3); a number out of range is called that, with the
-// range, not "not a number". Errors start with the option name.
-Result<Rate> parse_rate_option(const std::string& option, const std::string& text);
 // A whole-number option value in [min, max] ("12", also "1e3"); errors say which of
 // not a number / not whole / too small / too large it is.
 Result<long long> parse_whole_option(const std::string& option, const std::string& text, long long min, long long max);
@@ -34,6 +28,9 @@ Result<long long> parse_whole_option(const std::string& option, const std::strin
 // --unit, on every command that reads clips: the unit of a file that states none
 // (m, cm, mm, in, ft or metres per unit; clip/units.h). One declaration, one help text.
 void add_unit_option(CLI::App& sub, std::string& unit);
+// --allow-external-files, on every command that reads clips: a glTF may read buffer
+// files outside its folder (ReadOptions::allow_external_files; docs/limits.md).
+void add_external_files_option(CLI::App& sub, bool& allow);
 // --unit's text as metres per unit; empty text (not given) is none.
 Result<std::optional<double>> parse_unit_option(const std::string& text);
 
@@ -56,7 +53,7 @@ extern const char* const kSourceRunsIn;
 // Errors: unknown name (with "did you mean"), `source` (where it runs instead: kSourceRunsIn),
 // an empty list, or several where one is taken.
 Result<std::vector<std::string>> parse_methods(const std::string& text, bool several);
-// --fps HZ: an exact rate (decimal or rational), parsed by parse_rate_option.
+// --fps HZ: an exact rate (decimal or rational), parsed by parse_rate_value (clip/rate_value.h).
 CLI::Option* add_fps_option(CLI::App& sub, std::string& fps, const std::string& what);
 // --keep-every N: keep every Nth frame (and the last) as keys; with `several` a comma list.
 CLI::Option* add_keep_every_option(CLI::App& sub, std::string& keep_every, bool several, const std::string& what);

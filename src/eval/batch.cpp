@@ -76,13 +76,15 @@ Status check_options(const EvalOptions& opt) {
 
 // The takes of `file` that `animation` selects (EvalOptions::animation), each with
 // its clip id, in the order of their ids.
-Result<std::vector<std::pair<std::string, Clip>>> read_takes(const std::string& file, const std::string& animation,
-                                                             std::optional<double> unit, unsigned threads) {
+Result<std::vector<std::pair<std::string, Clip>>> read_takes(const std::string& file, const EvalOptions& opt,
+                                                             unsigned threads) {
+  const std::string& animation = opt.animation;
   ReadOptions ro;
   ro.threads = threads;
   const bool several = names_several_takes(animation);
   ro.animation = several ? "" : animation;
-  ro.unit = unit;
+  ro.unit = opt.unit;
+  ro.allow_external_files = opt.allow_external_files;
   auto info = inspect_clip(file, ro);
   if (!info) return info.failure();
   const std::vector<AnimationSummary>& anims = info->animations;
@@ -113,7 +115,7 @@ Result<std::vector<std::pair<std::string, Clip>>> read_takes(const std::string& 
 
 // Reads a file's takes and prepares their references, into its slot.
 void prepare_clip(const std::string& file, const EvalOptions& opt, unsigned threads, ClipSlot& slot) {
-  auto takes = read_takes(file, opt.animation, opt.unit, threads);
+  auto takes = read_takes(file, opt, threads);
   if (!takes) {
     // A mesh found next to the clips is not an error. The reader's error kind
     // says so: no second look at a file that may crash its importer.

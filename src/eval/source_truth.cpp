@@ -9,9 +9,10 @@
 
 namespace rotinterp {
 
-Result<TruthFn> source_truth(const std::string& clip_file, const Clip& clip) {
+Result<TruthFn> source_truth(const std::string& clip_file, const Clip& clip, bool allow_external_files) {
   ReadOptions options;
   options.animation = clip.name;
+  options.allow_external_files = allow_external_files;
   auto read = read_file_source(clip_file, options);
   if (!read) {
     options.animation.clear();  // a clip named after its file: the first animation

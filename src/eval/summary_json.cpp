@@ -1,6 +1,7 @@
 // summary.json: the run record and the results written, and the record read back (shard merges).
 #include "rotinterp/eval/summary.h"
 #include "seam_summary.h"
+#include "rotinterp/io/files/json_text.h"
 
 #include <nlohmann/json.hpp>
 
@@ -154,7 +155,7 @@ std::string summary_json(const RunRecord& r, const Summary& summary) {
                 {"vel", "deg/s"},
                 {"skate_ratio", "share of foot frame intervals in contact and sliding faster than contact_speed_mps"},
                 {"skate_speed", "m/s, mean horizontal foot speed over the contact intervals"}};
-  return j.dump(2) + "\n";
+  return json_text(j, 2) + "\n";
 }
 
 Result<RunRecord> read_summary_json(const std::filesystem::path& file) {

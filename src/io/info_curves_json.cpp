@@ -1,6 +1,8 @@
 // curves_info_json: `rotinterp info --curves --json`, the FBX curves of the
 // selected take as stored, with their tangents as evaluated and optional samples.
 #include "rotinterp/io/fbx/fbx_curve_eval.h"
+#include "rotinterp/io/files/json_text.h"
+#include "rotinterp/io/files/written_names.h"
 #include "rotinterp/io/info.h"
 
 #include <nlohmann/json.hpp>
@@ -49,7 +51,7 @@ std::string curves_info_json(const ClipFileInfo& info, double sample_hz) {
     for (const FbxCurve& c : take->curves) {
       nlohmann::json keys = nlohmann::json::array();
       for (std::size_t i = 0; i < c.keys.size(); ++i) keys.push_back(key_json(c.keys, i));
-      nlohmann::json entry = {{"node", c.node},
+      nlohmann::json entry = {{"node", readable_text(c.node)},
                               {"property", c.property},
                               {"channel", std::string(1, c.channel)},
                               {"layer", c.layer},
@@ -60,7 +62,7 @@ std::string curves_info_json(const ClipFileInfo& info, double sample_hz) {
       if (sample_hz > 0.0) entry["samples"] = sample_fbx_curve(c, sample_hz, fbx_take_span(*take).stop);
       curves.push_back(std::move(entry));
     }
-  return nlohmann::json{{"curves", curves}}.dump(2);
+  return json_text(nlohmann::json{{"curves", curves}}, 2);
 }
 
 }  // namespace rotinterp

@@ -1,6 +1,8 @@
 // clip_info_json: `rotinterp info --json` for one file, shared by the CLI and the
 // Python module (rotinterp.info), so that both give the same document.
 #include "rotinterp/io/files/file_record.h"
+#include "rotinterp/io/files/json_text.h"
+#include "rotinterp/io/files/written_names.h"
 #include "rotinterp/clip/frames.h"
 #include "rotinterp/clip/loop.h"
 #include "rotinterp/clip/units.h"
@@ -26,7 +28,7 @@ nlohmann::json unit_object(const ClipUnit& u) {
 
 }  // namespace
 
-std::string unit_info_json(const ClipUnit& unit) { return unit_object(unit).dump(); }
+std::string unit_info_json(const ClipUnit& unit) { return json_text(unit_object(unit)); }
 
 std::string clip_info_json(const std::string& path, const ClipFileInfo& info) {
   const Clip& clip = info.clip;
@@ -37,12 +39,12 @@ std::string clip_info_json(const std::string& path, const ClipFileInfo& info) {
   const std::optional<Rate> rate = clip_rate(clip);
   const double size_m = first_pose_size(clip) * clip.unit.metres_per_unit;
   nlohmann::json out;
-  out["file"] = path;
+  out["file"] = path;  // json_text prints a path that is not UTF-8
   out["format"] = info.format;
   out["animations"] = nlohmann::json::array();
   for (std::size_t a = 0; a < info.animations.size(); ++a) {
     const AnimationSummary& s = info.animations[a];
-    out["animations"].push_back({{"index", a}, {"name", s.name}, {"duration_s", s.duration},
+    out["animations"].push_back({{"index", a}, {"name", readable_text(s.name)}, {"duration_s", s.duration},
                                  {"ticks_per_second", s.ticks_per_second}, {"default_rate", s.default_rate},
                                  {"channels", s.channels}, {"selected", a == info.selected},
                                  {"start_s", std::isfinite(s.start) ? nlohmann::json(s.start) : nlohmann::json(nullptr)},
@@ -64,17 +66,18 @@ std::string clip_info_json(const std::string& path, const ClipFileInfo& info) {
   out["folded_helpers"] = info.folded_helpers;
   nlohmann::json joints = nlohmann::json::array();
   nlohmann::json translated = nlohmann::json::array();
+  const std::vector<std::string> names = written_joint_names(sk, NameForm::text);  // as a glTF or FBX writes them
   for (std::size_t j = 0; j < sk.joints.size(); ++j) {
     const Joint& jt = sk.joints[j];
     nlohmann::json channels = nlohmann::json::array();
     for (Channel c : bvh_channels(clip, j)) channels.push_back(channel_name(c));
-    joints.push_back({{"name", jt.name},
-                      {"parent", jt.parent >= 0 ? nlohmann::json(sk.joints[static_cast<std::size_t>(jt.parent)].name)
+    joints.push_back({{"name", names[j]},
+                      {"parent", jt.parent >= 0 ? nlohmann::json(names[static_cast<std::size_t>(jt.parent)])
                                                 : nlohmann::json(nullptr)},
                       {"channels", channels},
                       {"rotation_keys", clip.rotations[j].keys.size()},
                       {"translation_keys", clip.translations[j] ? clip.translations[j]->keys.size() : 0}});
-    if (clip.translations[j]) translated.push_back(jt.name);
+    if (clip.translations[j]) translated.push_back(names[j]);
   }
   out["joints"] = joints;
   out["end_sites"] = sk.end_sites.size();
@@ -82,7 +85,7 @@ std::string clip_info_json(const std::string& path, const ClipFileInfo& info) {
   // The cycle check (clip/loop.h); null where it cannot run (no frame rate, < 3 frames).
   if (const Result<LoopCheck> c = check_loop(clip)) {
     nlohmann::json misses = nlohmann::json::array();
-    for (const ClosureMiss& m : c->misses) misses.push_back({{"joint", m.name}, {"angle_deg", m.angle * 180.0 / kPi}});
+    for (const ClosureMiss& m : c->misses) misses.push_back({{"joint", names[m.joint]}, {"angle_deg", m.angle * 180.0 / kPi}});
     out["cycle"] = {{"looks_like_cycle", c->looks_like_cycle},
                     {"form", loop_form_name(c->form)},
                     {"period_frames", c->period_frames},
@@ -98,7 +101,7 @@ std::string clip_info_json(const std::string& path, const ClipFileInfo& info) {
   }
   out["oddities"] = odd;
   out["warnings"] = info.warnings;
-  return out.dump(2);
+  return json_text(out, 2);
 }
 
 }  // namespace rotinterp

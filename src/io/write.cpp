@@ -11,6 +11,7 @@
 #include "rotinterp/io/gltf/gltf_character.h"
 #include "rotinterp/io/gltf/gltf_write.h"
 #include "rotinterp/io/files/key_times.h"
+#include "rotinterp/io/files/written_names.h"
 
 #include <algorithm>
 #include <cctype>
@@ -66,12 +67,13 @@ Clip from_time_zero(const Clip& take) {
   return out;
 }
 
-// "Take N" for an empty name, " 2", " 3", … after a name already taken.
+// "Take N" for an empty name, " 2", " 3", … after a name already taken; each name
+// readable (written_names.h) before it is compared.
 std::vector<std::string> unique_take_names(const std::vector<Clip>& takes) {
   std::vector<std::string> names;
   std::set<std::string> used;
   for (std::size_t i = 0; i < takes.size(); ++i) {
-    const std::string base = takes[i].name.empty() ? "Take " + std::to_string(i + 1) : takes[i].name;
+    const std::string base = takes[i].name.empty() ? "Take " + std::to_string(i + 1) : readable_text(takes[i].name);
     std::string name = base;
     for (int k = 2; used.count(name); ++k) name = base + " " + std::to_string(k);
     used.insert(name);

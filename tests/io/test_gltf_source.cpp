@@ -217,7 +217,8 @@ TEST(GltfSource, ABufferUriThatLeavesTheFilesFolderIsRefusedInOneLine) {
     const bool scheme = std::string(uri).find(':') != std::string::npos;
     EXPECT_NE(read.error().find("fixture.gltf: glTF animations: buffer 0: uri '" + std::string(uri) + "' " +
                                 (scheme ? "is not a relative file in the file's folder"
-                                        : "leads out of the file's folder (refused unless the read allows external files: docs/limits.md)")),
+                                        : "leads out of the file's folder (refused unless --allow-external-files, in Python "
+                                          "allow_external_files=True)")),
               std::string::npos)
         << read.error();
     EXPECT_EQ(read.error().find('\n'), std::string::npos);

@@ -13,6 +13,7 @@
 #include <sys/resource.h>
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <chrono>
 #include <string>
 #include <vector>
@@ -152,6 +153,21 @@ TEST(HostileInput, UrisLeavingTheFilesFolderAreRefusedUnlessAllowed) {
       EXPECT_TRUE(read_clip(file, allow).ok()) << uri;
     }
   }
+  // The command names the option that allows it, and takes it.
+  const fs::path out = dir / "sub" / "out.gltf";
+  const test::CliResult refused = test::run_cli("info " + out.string());
+  EXPECT_EQ(refused.exit_code, 1);
+  EXPECT_NE(refused.err.find("refused unless --allow-external-files"), std::string::npos) << refused.err;
+  g.write(dir / "sub", "out.gltf", "../beside.gltf.bin");
+  const std::string in = out.string() + " -q";
+  for (const std::string& command :
+       {"info " + out.string(), "resample " + in + " -o " + (dir / "out.bvh").string(),
+        "reduce " + in + " -o " + (dir / "keys.json").string(),
+        "eval " + in + " -m slerp --keep-every 2 --no-plots -o " + (dir / "eval").string()}) {
+    const test::CliResult allowed = test::run_cli(command + " --allow-external-files");
+    EXPECT_EQ(allowed.exit_code, 0) << command << ": " << allowed.err;
+    EXPECT_NE(test::run_cli(command).exit_code, 0) << command;
+  }
   // A link in the folder that points out of it is refused the same way.
   fs::create_symlink(dir / "beside.gltf.bin", dir / "sub" / "link.bin");
   EXPECT_NE(refusal(g.write(dir / "sub", "link.gltf", "link.bin")).find("leads out"), std::string::npos);
@@ -187,13 +203,44 @@ TEST(HostileInput, BadFbxKeysAreRefusedOnTheDefaultPathAsOnTheCurveReader) {
   }
 }
 
-TEST(HostileInput, AnExactlyRepeatedFbxKeyIsDroppedWithAWarning) {
+TEST(HostileInput, ANonFiniteBvhValueIsRefusedNamingItsFrameLineAndJoint) {
+  test::TempDir dir;
+  const std::string text = test::read_text(kData / "bvh/NC_bandai2_raise-up-both-hands_active_031.bvh");
+  std::size_t row = text.find('\n', text.find("Frame Time:")) + 1;  // frame 0
+  for (int frame = 0; frame < 2; ++frame) row = text.find('\n', row) + 1;
+  row = text.find_first_not_of(" \t", row);  // frame 2's first value: joint_Root's Xposition
+  const long line = std::count(text.begin(), text.begin() + static_cast<long>(row), '\n') + 1;
+  for (const char* bad : {"nan", "-inf"}) {
+    std::string mutated = text;
+    mutated.replace(row, mutated.find_first_of(" \t", row) - row, bad);
+    const fs::path file = dir / (std::string(bad) + ".bvh");
+    test::write_text(file, mutated);
+    const std::string error = refusal(file);
+    EXPECT_NE(error.find("frame 2 (line " + std::to_string(line) + "), joint 'joint_Root' Xposition: value is " + bad +
+                         " (not finite)"),
+              std::string::npos)
+        << error;
+  }
+}
+
+TEST(HostileInput, AnExactlyRepeatedFbx7KeyIsDroppedByOurReaderAndRefusedWhereAssimpMakesTheClip) {
   test::TempDir dir;
   const fs::path file = dir / "repeat.fbx";
   // Key 2 becomes key 1 again, time and value.
   test::write_text(file, test::edit_ascii_array(test::fbx_ascii_with("KeyTime", [](auto& t) { t[2] = t[1]; }),
                                                 "KeyValueFloat", [](auto& v) { v[2] = v[1]; }));
-  // Our curve reader repairs it (assimp, which the default path still runs, drops the curve).
+  // Our curve reader repairs it; assimp, which makes the clip on the default path,
+  // drops the whole curve, so there the file is refused rather than left at rest.
+  ReadOptions with_curves;
+  with_curves.read_curves = true;
+  for (const ReadOptions& options : {ReadOptions{}, with_curves}) {
+    const std::string error = refusal(file, options);
+    EXPECT_NE(error.find("Lcl Translation/X: 1 key at a time already keyed with the same values dropped by our reader, "
+                         "but assimp"),
+              std::string::npos)
+        << error;
+    EXPECT_NE(error.find("would leave its joint at rest: refused"), std::string::npos) << error;
+  }
   Result<FbxAnimation> curves = read_fbx_curves_file(file.string(), file.string());
   ASSERT_TRUE(curves.ok()) << curves.error();
   ASSERT_EQ(curves->repairs.size(), 1u);

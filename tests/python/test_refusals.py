@@ -1,9 +1,17 @@
 """The Python entry points refuse what the command refuses, with its one-line
 message (issue 47, class 5), and read no memory an array does not hold."""
+import json
+import os
+import subprocess
+from pathlib import Path
+
 import numpy as np
 import pytest
 
 import rotinterp
+
+CLI = os.environ.get("ROTINTERP_CLI", "build/rotinterp")
+WALK = Path(__file__).resolve().parents[2] / "samples" / "walk.bvh"
 
 
 def test_zero_joints_give_an_empty_result_not_memory_the_array_does_not_hold():
@@ -104,3 +112,59 @@ def test_requests_past_the_key_limit_are_refused_before_allocating():
 def test_evaluate_refuses_an_unknown_metric_listing_the_valid_ones():
     with pytest.raises(ValueError, match="unknown metric 'speed'; valid: all, angle, swing-twist"):
         rotinterp.evaluate(two_joint_clip(frame_time=1.0), methods=["slerp"], keep_every=[2], metrics=["angle", "speed"])
+
+
+def test_a_gltf_buffer_outside_the_folder_is_read_only_with_allow_external_files(tmp_path):
+    (tmp_path / "sub").mkdir()
+    rotinterp.write_clip(two_joint_clip(frame_time=1.0), str(tmp_path / "clip.gltf"))
+    doc = json.loads((tmp_path / "clip.gltf").read_text())
+    doc["buffers"][0]["uri"] = "../" + doc["buffers"][0]["uri"]
+    outside = tmp_path / "sub" / "outside.gltf"
+    outside.write_text(json.dumps(doc))
+    for read in (rotinterp.read_clip, rotinterp.info):
+        with pytest.raises(ValueError, match=r"leads out of the file's folder \(refused unless --allow-external-files, "
+                                             r"in Python allow_external_files=True\)$"):
+            read(str(outside))
+    assert rotinterp.read_clip(str(outside), allow_external_files=True).names == ["a", "b"]
+    assert len(rotinterp.info(str(outside), allow_external_files=True)["joints"]) == 2
+
+
+# The same request as resample's keywords and as the command's options: the two must
+# both refuse it or both take it.
+RESAMPLE_REQUESTS = [
+    ({"fps": "1e3"}, ["--fps", "1e3"]),
+    ({"fps": 1e20}, ["--fps", "1e20"]),
+    ({"fps": -30}, ["--fps", "-30"]),
+    ({"fps": float("nan")}, ["--fps", "nan"]),
+    ({"fps": 0}, ["--fps", "0"]),
+    ({"fps": True}, ["--fps", "True"]),
+    ({"fps": 30, "keep_every": 2}, ["--fps", "30", "--keep-every", "2"]),
+    ({"keep_every": 0}, ["--keep-every", "0"]),
+    ({"keep_every": 3}, ["--keep-every", "3"]),
+    ({"keep_every": 10**9}, ["--keep-every", "1000000000"]),
+    ({"keep_every": 10**12}, ["--keep-every", "1000000000000"]),
+    ({"fps": 30, "range": (2.0, 1.0)}, ["--fps", "30", "--range", "2:1"]),
+    ({"fps": 30, "range": (-1.0, None)}, ["--fps", "30", "--range=-1:"]),
+    ({"fps": 30, "range": (0.5, 1.5)}, ["--fps", "30", "--range", "0.5:1.5"]),
+    ({"fps": 30, "translation": "foo"}, ["--fps", "30", "--translation", "foo"]),
+    ({"fps": 30, "method": "nope"}, ["--fps", "30", "--method", "nope"]),
+    ({"fps": 30, "loop": "maybe"}, ["--fps", "30", "--loop", "maybe"]),
+    ({"fps": 30, "loop": "closed"}, ["--fps", "30", "--loop", "closed"]),
+]
+
+
+@pytest.mark.parametrize("kwargs,options", RESAMPLE_REQUESTS, ids=[" ".join(o) for _, o in RESAMPLE_REQUESTS])
+def test_resample_refuses_and_takes_what_the_command_does(kwargs, options, tmp_path):
+    command = subprocess.run([CLI, "resample", str(WALK), "-o", str(tmp_path / "out.bvh"), "-q", *options],
+                             capture_output=True, text=True)
+    try:
+        rotinterp.resample(rotinterp.read_clip(WALK), **kwargs)
+        refused = ""
+    except (TypeError, ValueError) as e:
+        refused = str(e)
+    assert (refused != "") == (command.returncode != 0), (refused, command.stderr)
+
+
+def test_loop_of_another_type_is_a_type_error_not_a_cast_failure():
+    with pytest.raises(TypeError, match=r"^loop must be None, a bool, 'auto', 'closed' or 'open', got 1$"):
+        rotinterp.resample(two_joint_clip(frame_time=1.0), loop=1)

@@ -48,6 +48,8 @@ struct EvalOptions {
   std::string animation;
   // Metres per unit of files that state no unit (--unit; io/read.h ReadOptions::unit).
   std::optional<double> unit;
+  // glTF buffers outside a file's folder are read (--allow-external-files; ReadOptions).
+  bool allow_external_files = false;
   std::optional<PerFrameRequest> per_frame;   // also write DIR/per_frame.csv
   // What each clip is compared with. `name` is recorded in summary.json (options.truth):
   // "frames", the clip's own frames (`for_clip` unset); "synth", a synth clip's analytic

@@ -15,7 +15,7 @@ namespace rotinterp {
 // from that motion where the file has it, else the clip's own track (sampled as the
 // reference always is); translations are the clip's tracks, or the joints' offsets.
 // Errors (one line, naming the file): as read_file_source, or a second read whose
-// joints differ from the clip's.
-Result<TruthFn> source_truth(const std::string& clip_file, const Clip& clip);
+// joints differ from the clip's. `allow_external_files` as ReadOptions'.
+Result<TruthFn> source_truth(const std::string& clip_file, const Clip& clip, bool allow_external_files = false);
 
 }  // namespace rotinterp

@@ -5,6 +5,7 @@
 #include "rotinterp/io/files/euler.h"
 #include "rotinterp/clip/frames.h"
 #include "rotinterp/io/files/fixed6.h"
+#include "rotinterp/io/files/written_names.h"
 
 #include <algorithm>
 #include <atomic>
@@ -17,6 +18,7 @@
 #include <string>
 #include <system_error>
 #include <thread>
+#include <unordered_set>
 
 namespace rotinterp {
 
@@ -181,12 +183,6 @@ Status joint_values(const Clip& clip, std::size_t j, std::size_t f, const std::v
   return Ok{};
 }
 
-std::string bvh_name(std::string name) {
-  for (char& c : name)
-    if (c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '{' || c == '}') c = '_';
-  return name;
-}
-
 }  // namespace
 
 Status write_bvh(const Clip& clip, std::ostream& out, const WriteOptions& options, const std::string& label) {
@@ -216,8 +212,7 @@ Status write_bvh(const Clip& clip, std::ostream& out, const WriteOptions& option
 
   // Channel layout per joint.
   std::vector<std::vector<Channel>> layout(n);
-  std::vector<std::string> names(n);
-  std::set<std::string> used;
+  const std::vector<std::string> names = written_joint_names(sk, NameForm::bvh_token);
   for (std::size_t j = 0; j < n; ++j) {
     const Joint& joint = sk.joints[j];
     if (Status s = on_grid(clip.rotations[j].times, joint.name); !s) return s;
@@ -235,9 +230,6 @@ Status write_bvh(const Clip& clip, std::ostream& out, const WriteOptions& option
         for (int a = 0; a < 3; ++a) layout[j].push_back(position_channel(a));
       for (int a : *default_axes) layout[j].push_back(rotation_channel(a));
     }
-    std::string name = bvh_name(joint.name);
-    while (!used.insert(name).second) name += "_";
-    names[j] = name;
   }
 
   // Children lists (clip order), End Sites per joint.
@@ -254,8 +246,9 @@ Status write_bvh(const Clip& clip, std::ostream& out, const WriteOptions& option
   // file; the clip's roots become its JOINTs.
   std::string synthetic_root;
   if (roots.size() > 1) {
+    const std::unordered_set<std::string> taken(names.begin(), names.end());
     synthetic_root = "rotinterp_root";
-    while (used.count(synthetic_root)) synthetic_root += "_";
+    for (int k = 2; taken.count(synthetic_root); ++k) synthetic_root = "rotinterp_root#" + std::to_string(k);
   }
   const std::size_t lead_columns = synthetic_root.empty() ? 0 : 6;
 

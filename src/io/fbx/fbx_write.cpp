@@ -3,6 +3,7 @@
 
 #include "rotinterp/io/fbx/fbx_bvh_layout.h"
 #include "rotinterp/io/files/file_record.h"
+#include "rotinterp/io/files/written_names.h"
 #include "fbx_write_takes.h"
 #include "fbx_rest.h"
 #include "rotinterp/clip/frames.h"
@@ -33,7 +34,7 @@ constexpr double kDegrees = 180.0 / kPi;
 }  // namespace
 
 Result<std::string> encode_fbx_curves(const Clip& clip, const std::vector<FbxOutJoint>& curves, FbxEncoding encoding) {
-  return encode_fbx_takes(clip, {FbxOutTake{clip.name.empty() ? std::string("clip") : clip.name, curves}},
+  return encode_fbx_takes(clip, {FbxOutTake{clip.name.empty() ? std::string("clip") : readable_text(clip.name), curves}},
                           clip_rate(clip), encoding);
 }
 
@@ -160,9 +161,10 @@ Result<std::string> encode_fbx_takes(const Clip& clip, const std::vector<FbxOutT
   e.end();
 
   e.begin("Objects");
+  const std::vector<std::string> names = written_joint_names(sk, NameForm::text);
   for (std::size_t j = 0; j < n; ++j) {
     e.begin("NodeAttribute");
-    e.i64(attr_id[j]).str(e.object_name(sk.joints[j].name, "NodeAttribute")).str("LimbNode");
+    e.i64(attr_id[j]).str(e.object_name(names[j], "NodeAttribute")).str("LimbNode");
     e.begin("Properties70");
     doc.p_double("Size", 1.0);
     e.end();
@@ -170,9 +172,8 @@ Result<std::string> encode_fbx_takes(const Clip& clip, const std::vector<FbxOutT
     e.end();
   }
   for (std::size_t j = 0; j < n; ++j) {
-    const Joint& joint = sk.joints[j];
     e.begin("Model");
-    e.i64(model_id[j]).str(e.object_name(joint.name, "Model")).str("LimbNode");
+    e.i64(model_id[j]).str(e.object_name(names[j], "Model")).str("LimbNode");
     doc.leaf_i32("Version", 232);
     e.begin("Properties70");
     doc.p("RotationOrder", "enum", "", "").i32(fbx_rotation_order(curves[j].axes));

@@ -3,6 +3,7 @@
 
 #include "rotinterp/io/files/key_times.h"
 #include "rotinterp/io/files/file_record.h"
+#include "rotinterp/io/files/written_names.h"
 #include "rotinterp/clip/frames.h"
 #include "rotinterp/track/sample.h"
 
@@ -123,7 +124,7 @@ Result<std::string> encode_fbx_clips(const std::vector<Clip>& takes, FbxEncoding
   for (const Clip& take : takes) {
     if (Status s = take.validate(); !s) return s.failure("take '" + take.name + "': cannot write an invalid clip: ");
     if (clip_rate(take) != rate) rate.reset();  // TimeMode then states none: each take keeps its own grid
-    out.push_back({take.name, fbx_frame_curves(take, axes)});
+    out.push_back({readable_text(take.name), fbx_frame_curves(take, axes)});
   }
   // A joint's rest translation is shifted off its parent's axis only where it is keyed
   // in every take (fbx_rest.h): a take without its keys holds the rest value.

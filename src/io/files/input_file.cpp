@@ -80,7 +80,7 @@ Result<fs::path> referenced_file(const fs::path& folder, const std::string& refe
     for (const fs::path& part : inside) leaves = leaves || part == "..";
     for (const fs::path& part : relative) leaves = leaves || part == "..";
     if (leaves)
-      return make_error(what + " leads out of the file's folder (refused unless the read allows external files: docs/limits.md)",
+      return make_error(what + " leads out of the file's folder (refused unless --allow-external-files, in Python allow_external_files=True)",
                         ErrorKind::unreadable);
   }
   if (Status s = check_file(path, what); !s) return s.failure();

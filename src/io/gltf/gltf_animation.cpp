@@ -6,6 +6,7 @@
 #include "rotinterp/interp/gltf_cubic.h"
 #include "rotinterp/io/files/key_times.h"
 #include "rotinterp/io/files/little_endian.h"
+#include "rotinterp/io/files/written_names.h"
 #include "rotinterp/track/sample.h"
 
 #include <cmath>
@@ -133,7 +134,7 @@ Result<nlohmann::json> animation(Builder& b, const Clip& clip, const GltfKeys& k
       channel(b.accessor(start, times.size(), "VEC3"), "translation");
     }
   }
-  return nlohmann::json{{"name", clip.name.empty() ? std::string("clip") : clip.name}, {"samplers", samplers}, {"channels", channels}};
+  return nlohmann::json{{"name", clip.name.empty() ? std::string("clip") : readable_text(clip.name)}, {"samplers", samplers}, {"channels", channels}};
 }
 
 }  // namespace rotinterp::gltf

@@ -3,7 +3,9 @@
 
 #include "gltf_document.h"
 #include "rotinterp/io/files/atomic_file.h"
+#include "rotinterp/io/files/json_text.h"
 #include "rotinterp/io/files/little_endian.h"
+#include "rotinterp/io/files/written_names.h"
 
 #include <nlohmann/json.hpp>
 
@@ -77,10 +79,11 @@ Result<Document> build(const std::vector<const Clip*>& takes, const GltfKeys& ke
     if (p < 0) roots.push_back(j);
     else children[static_cast<std::size_t>(p)].push_back(j);
   }
+  const std::vector<std::string> names = written_joint_names(sk, NameForm::text);
   for (std::size_t j = 0; j < n; ++j) {
     const Joint& joint = sk.joints[j];
     const Quat r = joint.rest_rotation.normalized();
-    nlohmann::json node = {{"name", joint.name},
+    nlohmann::json node = {{"name", names[j]},
                            {"translation", {joint.offset.x() * metres, joint.offset.y() * metres, joint.offset.z() * metres}},
                            {"rotation", {r.x(), r.y(), r.z(), r.w()}}};
     if (!children[j].empty()) node["children"] = children[j];
@@ -138,7 +141,7 @@ Status write_document(nlohmann::json doc, std::string bin, const std::filesystem
   const std::string label = path.string();
   doc["buffers"] = nlohmann::json::array({{{"byteLength", bin.size()}}});
   if (binary) {
-    std::string json = doc.dump();
+    std::string json = json_text(doc);
     json.append((4 - json.size() % 4) % 4, ' ');
     bin.append((4 - bin.size() % 4) % 4, '\0');
     const std::uint64_t total = 12 + 8 + json.size() + 8 + bin.size();
@@ -165,8 +168,12 @@ Status write_document(nlohmann::json doc, std::string bin, const std::filesystem
   char hash[17];
   std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(fnv1a(bin)));
   const std::filesystem::path bin_path = std::filesystem::path(path).replace_filename(path.stem().string() + "-" + hash + ".bin");
+  // The uri is JSON text: a file name it cannot hold is refused here, not by nlohmann.
+  if (readable_text(bin_path.filename().string()) != bin_path.filename().string())
+    return make_error(label + ": a .gltf names its buffer after itself, and this name is not valid UTF-8 free of "
+                      "control characters; write .glb or choose another name");
   doc["buffers"][0]["uri"] = bin_path.filename().string();
-  const std::string json = doc.dump();
+  const std::string json = json_text(doc);
   // Named temporaries, removed by the interrupt handler (as assimp-era .gltf writes were).
   // Their errors name their own file (the .bin beside the .gltf, or the folder).
   AtomicOutput bin_out(bin_path), gltf_out(path);

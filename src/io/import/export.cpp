@@ -8,6 +8,7 @@
 #include "rotinterp/io/files/key_times.h"
 #include "rotinterp/track/sample.h"
 #include "rotinterp/io/files/atomic_file.h"
+#include "rotinterp/io/files/written_names.h"
 
 #include <assimp/Exporter.hpp>
 #include <assimp/scene.h>
@@ -49,8 +50,9 @@ std::unique_ptr<aiScene> build_scene(const Clip& clip) {
   std::vector<aiNode*> nodes(n);
   std::vector<std::vector<aiNode*>> kids(n);
   std::vector<aiNode*> roots;
+  const std::vector<std::string> names = written_joint_names(sk, NameForm::text);
   for (std::size_t j = 0; j < n; ++j) {
-    nodes[j] = new aiNode(sk.joints[j].name);
+    nodes[j] = new aiNode(names[j]);
     nodes[j]->mTransformation = node_matrix(sk.joints[j].offset * metres, sk.joints[j].rest_rotation);
   }
   for (std::size_t j = 0; j < n; ++j) {
@@ -74,7 +76,7 @@ std::unique_ptr<aiScene> build_scene(const Clip& clip) {
   // seconds whatever mTicksPerSecond says (glTF divides by it, so 1 suits all three).
   const double tps = kExportTicksPerSecond;
   auto* anim = new aiAnimation();
-  anim->mName = aiString(clip.name.empty() ? std::string("clip") : clip.name);
+  anim->mName = aiString(clip.name.empty() ? std::string("clip") : readable_text(clip.name));
   anim->mTicksPerSecond = tps;
   // Whole ticks: assimp's exporters truncate the take's end to an integer tick count.
   anim->mDuration = std::ceil(clip.end_time() * tps);
@@ -93,7 +95,7 @@ std::unique_ptr<aiScene> build_scene(const Clip& clip) {
     }
     auto* ch = new aiNodeAnim();
     anim->mChannels[j] = ch;
-    ch->mNodeName = aiString(sk.joints[j].name);
+    ch->mNodeName = aiString(names[j]);
     const auto count = static_cast<unsigned>(times.size());
     ch->mNumRotationKeys = ch->mNumPositionKeys = ch->mNumScalingKeys = count;
     ch->mRotationKeys = new aiQuatKey[count];

@@ -226,7 +226,14 @@ Result<std::optional<FbxAnimation>> read_ahead_of_assimp(const fs::path& path, c
   if (is_format(ext, FormatId::fbx)) {
     Result<FbxAnimation> curves = read_fbx_curves_file(path, label);
     if (!curves) return curves.failure();
-    for (const std::string& w : curves->repairs) warn(w);
+    // Our curves drop an exactly repeated key, but assimp, which makes the clip here,
+    // drops the whole curve: the joint would stay at rest under a warning that says
+    // "repaired". Refused instead (docs/limits.md).
+    if (!curves->repairs.empty())
+      return make_error(curves->repairs.front() +
+                            " by our reader, but assimp, which reads FBX 7 files, drops such a curve and would leave "
+                            "its joint at rest: refused",
+                        ErrorKind::unreadable);
     return std::optional<FbxAnimation>(std::move(*curves));
   }
   if (is_format(ext, FormatId::glb) || is_format(ext, FormatId::gltf)) {

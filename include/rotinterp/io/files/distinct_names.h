@@ -1,6 +1,6 @@
 // Joint names made distinct as a reader takes them (a Clip's names are unique; a
-// file's may repeat or be empty). Readers only: what the writers make of names is
-// their own sanitizer's job.
+// file's may repeat or be empty); the writers' names go through it too, after
+// written_names.h has made them safe to write.
 #pragma once
 
 #include <cstddef>

@@ -14,6 +14,7 @@
 #include "rotinterp/io/info.h"
 #include "rotinterp/io/read.h"
 #include "rotinterp/io/write.h"
+#include "rotinterp/io/files/file_errors.h"
 
 #include <cerrno>
 #include <cmath>
@@ -38,9 +39,9 @@ namespace fs = std::filesystem;
   PyObject* type = PyExc_ValueError;
   int err = 0;
   switch (e.kind) {
-    case ErrorKind::no_file: type = PyExc_FileNotFoundError, err = ENOENT; break;
-    case ErrorKind::directory: type = PyExc_IsADirectoryError, err = EISDIR; break;
-    case ErrorKind::cannot_open: type = PyExc_OSError, err = EIO; break;
+    case file_error::no_file: type = PyExc_FileNotFoundError, err = ENOENT; break;
+    case file_error::directory: type = PyExc_IsADirectoryError, err = EISDIR; break;
+    case file_error::cannot_open: type = PyExc_OSError, err = EIO; break;
     default: value_error(e.message);
   }
   PyErr_SetObject(type, py::make_tuple(err, e.message, path.string()).ptr());

@@ -15,6 +15,7 @@
 #include "rotinterp/batch/folder_run.h"
 #include "rotinterp/io/files/formats.h"
 #include "rotinterp/io/info.h"
+#include "rotinterp/io/files/file_errors.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
@@ -262,7 +263,7 @@ int run_info(const InfoArgs& args) {
   const std::string& path = args.paths.front();
   options.read_curves = args.curves;
   ReadOutcome read = inspect_clip_for_info(path, options);
-  if (read.error && read.kind == ErrorKind::no_animation) return describe_static(path, read.info.holds, args.json);
+  if (read.error && read.kind == file_error::no_animation) return describe_static(path, read.info.holds, args.json);
   Result<ClipFileInfo> info = reading_or_failure(std::move(read));
   if (!info) return fail(info.error());
   if (args.curves) return print_info_curves(path, *info, args.sample_hz, args.json);

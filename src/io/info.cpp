@@ -3,6 +3,7 @@
 #include "rotinterp/io/files/formats.h"
 
 #include "rotinterp/io/record/read_parts.h"
+#include "rotinterp/io/files/file_errors.h"
 
 #include <algorithm>
 #include <cmath>
@@ -43,7 +44,7 @@ ReadOutcome inspect_clip_for_info(const std::filesystem::path& path, ReadOptions
   if (options.read_curves || !is_format(extension_of(path), FormatId::fbx)) return inspect_clip_outcome(path, options);
   options.read_curves = true;
   ReadOutcome with_curves = inspect_clip_outcome(path, options);
-  if (!with_curves.error || with_curves.kind == ErrorKind::no_animation) return with_curves;
+  if (!with_curves.error || with_curves.kind == file_error::no_animation) return with_curves;
   options.read_curves = false;
   return inspect_clip_outcome(path, options);
 }

@@ -8,6 +8,7 @@
 #include "io_test_util.h"
 #include "rotinterp/io/read.h"
 #include "support/hostile_files.h"
+#include "rotinterp/io/process/process_errors.h"
 
 #include <gtest/gtest.h>
 
@@ -88,7 +89,7 @@ TEST(ImporterReuse, ACrashCostsOnlyTheFileThatCausedIt) {
     const pid_t first = detail::importer_of_this_thread();
     const Result<Clip> crash = read_clip(no_keys);
     ASSERT_FALSE(crash);
-    EXPECT_EQ(crash.error_kind(), ErrorKind::crashed);
+    EXPECT_EQ(crash.error_kind(), process_error::crashed);
     EXPECT_EQ(crash.error(), fresh_crash.error());  // the same message as from an importer's first file
     EXPECT_TRUE(reaped(first));
     const Result<Clip> after = read_clip(kGood);
@@ -113,7 +114,7 @@ TEST(ImporterReuse, ATimeoutCostsOnlyTheFileThatTookTooLong) {
     options.import_timeout_seconds = 0.3;
     const Result<Clip> late = read_clip(slow, options);
     ASSERT_FALSE(late);
-    EXPECT_EQ(late.error_kind(), ErrorKind::timed_out);
+    EXPECT_EQ(late.error_kind(), process_error::timed_out);
     EXPECT_NE(late.error().find("took longer than 0.3 s"), std::string::npos) << late.error();
     EXPECT_TRUE(reaped(first));
     EXPECT_EQ(detail::importer_of_this_thread(), -1);
@@ -129,7 +130,7 @@ TEST(ImporterReuse, AReplyPastTheCapCostsOnlyThatFile) {
     options.max_import_bytes = 100;
     const Result<Clip> big = read_clip(kGood, options);
     ASSERT_FALSE(big);
-    EXPECT_EQ(big.error_kind(), ErrorKind::too_large);
+    EXPECT_EQ(big.error_kind(), process_error::too_large);
     EXPECT_NE(big.error().find("passed 100 bytes"), std::string::npos) << big.error();
     EXPECT_TRUE(reaped(first));
     expect_a_new_importer_kept(first);

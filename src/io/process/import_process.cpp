@@ -4,6 +4,7 @@
 #include "rotinterp/io/process/importer.h"
 #include "clip_wire.h"
 #include "import_protocol.h"
+#include "rotinterp/clip/time_range.h"
 #include "rotinterp/io/process/process_errors.h"
 
 #include <dlfcn.h>
@@ -20,7 +21,6 @@
 #include <cerrno>
 #include <chrono>
 #include <climits>
-#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -66,12 +66,6 @@ bool send_all(int fd, std::string_view bytes) {
     bytes.remove_prefix(static_cast<std::size_t>(put));
   }
   return true;
-}
-
-std::string seconds_text(double s) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", s);
-  return buf;
 }
 
 // One running importer, talking through one socket that is both its standard

@@ -7,8 +7,6 @@
 #include "options.h"
 #include "progress_line.h"
 #include "info_curves.h"
-#include "rotinterp/io/files/file_record.h"
-#include "rotinterp/clip/frames.h"
 #include "rotinterp/clip/loop.h"
 #include "rotinterp/core/work_queue.h"
 #include "rotinterp/batch/dataset.h"
@@ -79,18 +77,18 @@ FileSummary summarize(const std::string& file, const ReadOptions& options) {
     s.error_kind = info.error_kind();
     return s;
   }
-  const Clip& clip = info->clip;
+  const ClipFacts facts = clip_facts(*info);
   s.format = info->format;
   s.animations = info->animations.size();
-  s.frames = clip.frame_count();
-  s.joints = clip.skeleton.joints.size();
-  s.frame_time = frame_time_text(clip);
-  s.rate = clip_rate(clip);
-  s.duration = clip.end_time() - clip.start_time();
-  s.unit = clip.unit;
+  s.frames = facts.frames;
+  s.joints = facts.joints.size();
+  s.frame_time = facts.frame_time_written;
+  s.rate = facts.rate;
+  s.duration = facts.duration;
+  s.unit = info->clip.unit;
   if (!(s.duration > 0.0)) s.notes.push_back(fmt::format("zero-length clip ({} frame{})", s.frames, s.frames == 1 ? "" : "s"));
-  if (std::string note = rate_label_note(clip); !note.empty()) s.notes.push_back(note);
-  for (const std::string& o : clip_oddities(clip)) s.notes.push_back(o);
+  if (std::string note = rate_label_note(info->clip); !note.empty()) s.notes.push_back(note);
+  for (const std::string& o : facts.oddities) s.notes.push_back(o);
   return s;
 }
 

@@ -15,6 +15,7 @@
 #include "rotinterp/io/info.h"
 #include "rotinterp/io/read.h"
 #include "rotinterp/io/write.h"
+#include "rotinterp/io/files/file_errors.h"
 
 #include <cerrno>
 #include <cmath>
@@ -38,12 +39,11 @@ namespace fs = std::filesystem;
 [[noreturn]] void raise_read_error(const Error& e, const fs::path& path) {
   PyObject* type = PyExc_ValueError;
   int err = 0;
-  switch (e.kind) {
-    case ErrorKind::no_file: type = PyExc_FileNotFoundError, err = ENOENT; break;
-    case ErrorKind::directory: type = PyExc_IsADirectoryError, err = EISDIR; break;
-    case ErrorKind::cannot_open: type = PyExc_OSError, err = EIO; break;
-    default: value_error(e.message);
-  }
+  // An if chain, not a switch: ErrorKind is open, so its kinds are no enumerators.
+  if (e.kind == file_error::no_file) type = PyExc_FileNotFoundError, err = ENOENT;
+  else if (e.kind == file_error::directory) type = PyExc_IsADirectoryError, err = EISDIR;
+  else if (e.kind == file_error::cannot_open) type = PyExc_OSError, err = EIO;
+  else value_error(e.message);
   PyErr_SetObject(type, py::make_tuple(err, e.message, path.string()).ptr());
   throw py::error_already_set();
 }

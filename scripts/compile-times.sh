@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Compiler and linker launcher that logs each step's CPU and wall seconds, to find what
-# dominates a build's time (docs/development.md, "Per-object compile times"):
+# dominates a build's time (docs/development.md, "Build time"):
 #   cmake -S . -B build-times -DCMAKE_CXX_COMPILER_LAUNCHER=$PWD/scripts/compile-times.sh \
 #         -DCMAKE_CXX_LINKER_LAUNCHER=$PWD/scripts/compile-times.sh ...
 #   ROTINTERP_COMPILE_LOG=$PWD/times.log cmake --build build-times -j2

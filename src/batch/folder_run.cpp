@@ -4,6 +4,7 @@
 #include "rotinterp/io/files/atomic_file.h"
 #include "rotinterp/io/files/csv.h"
 #include "rotinterp/batch/dataset.h"
+#include "rotinterp/io/files/file_errors.h"
 
 #include <atomic>
 #include <system_error>
@@ -58,7 +59,7 @@ FileRunReport run_files(const std::vector<RunFile>& files, const FileRunOptions&
       const unsigned now = ++in_flight;
       const Status s = job(i, std::max(1u, workers / std::max(1u, now)));
       --in_flight;
-      if (!s && s.error_kind() == ErrorKind::no_animation && found_in_directory(f.input, options.named)) {
+      if (!s && s.error_kind() == file_error::no_animation && found_in_directory(f.input, options.named)) {
         o.status = FileStatus::no_animation;
       } else if (!s) {
         o.status = FileStatus::failed;

@@ -13,6 +13,7 @@
 #include "rotinterp/eval/synth_truth.h"
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/io/files/atomic_file.h"
+#include "rotinterp/io/files/file_errors.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
@@ -81,7 +82,7 @@ int run(const EvalArgs& a) {
   // A file without animation is said at the end: alone, it is the one line of a run
   // that had nothing to evaluate (a static mesh), not an empty table.
   auto print_failure = [quiet](const EvalFailure& f) {
-    if (f.kind != ErrorKind::no_animation) print_file_failure(f, quiet);
+    if (f.kind != file_error::no_animation) print_file_failure(f, quiet);
   };
   Result<EvalReport> report = make_error("");
   // No output file may be one of the inputs (a shard merged into itself, -o where a
@@ -176,7 +177,7 @@ int run(const EvalArgs& a) {
   }
   if (!report) return fail(report.error());
   const auto static_files = std::count_if(report->failures.begin(), report->failures.end(),
-                                          [](const EvalFailure& f) { return f.kind == ErrorKind::no_animation; });
+                                          [](const EvalFailure& f) { return f.kind == file_error::no_animation; });
   if (report->clips_evaluated == 0 && static_files > 0 && static_cast<std::size_t>(static_files) == report->failures.size()) {
     std::string files;
     for (const EvalFailure& f : report->failures) files += (files.empty() ? "" : ", ") + f.file;
@@ -184,7 +185,7 @@ int run(const EvalArgs& a) {
                             files, static_files == 1 ? "holds" : "hold"));
   }
   for (const EvalFailure& f : report->failures)
-    if (f.kind == ErrorKind::no_animation) std::fprintf(stderr, "rotinterp: %s\n", f.message.c_str());
+    if (f.kind == file_error::no_animation) std::fprintf(stderr, "rotinterp: %s\n", f.message.c_str());
   for (const ShortClip& c : report->too_short) {
     if (quiet) break;
     std::string ns;

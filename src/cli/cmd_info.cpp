@@ -7,15 +7,14 @@
 #include "options.h"
 #include "progress_line.h"
 #include "info_curves.h"
-#include "rotinterp/io/files/file_record.h"
 #include "rotinterp/io/files/json_text.h"
-#include "rotinterp/clip/frames.h"
 #include "rotinterp/clip/loop.h"
 #include "rotinterp/core/work_queue.h"
 #include "rotinterp/batch/dataset.h"
 #include "rotinterp/batch/folder_run.h"
 #include "rotinterp/io/files/formats.h"
 #include "rotinterp/io/info.h"
+#include "rotinterp/io/files/file_errors.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
@@ -81,18 +80,18 @@ FileSummary summarize(const std::string& file, const ReadOptions& options) {
     s.error_kind = info.error_kind();
     return s;
   }
-  const Clip& clip = info->clip;
+  const ClipFacts facts = clip_facts(*info);
   s.format = info->format;
   s.animations = info->animations.size();
-  s.frames = clip.frame_count();
-  s.joints = clip.skeleton.joints.size();
-  s.frame_time = frame_time_text(clip);
-  s.rate = clip_rate(clip);
-  s.duration = clip.end_time() - clip.start_time();
-  s.unit = clip.unit;
+  s.frames = facts.frames;
+  s.joints = facts.joints.size();
+  s.frame_time = facts.frame_time_written;
+  s.rate = facts.rate;
+  s.duration = facts.duration;
+  s.unit = info->clip.unit;
   if (!(s.duration > 0.0)) s.notes.push_back(fmt::format("zero-length clip ({} frame{})", s.frames, s.frames == 1 ? "" : "s"));
-  if (std::string note = rate_label_note(clip); !note.empty()) s.notes.push_back(note);
-  for (const std::string& o : clip_oddities(clip)) s.notes.push_back(o);
+  if (std::string note = rate_label_note(info->clip); !note.empty()) s.notes.push_back(note);
+  for (const std::string& o : facts.oddities) s.notes.push_back(o);
   return s;
 }
 
@@ -222,14 +221,15 @@ int describe_static(const std::string& path, const std::string& holds, bool json
   return kExitOk;
 }
 
+// The frame time as the file wrote it (BVH), else as read.
+std::string frame_time_shown(const ClipFacts& f) {
+  return f.frame_time_written.empty() ? fmt::format("{:.9g}", f.frame_time) : f.frame_time_written;
+}
+
 // BVH speaks its own words: frames, Frame Time and the CHANNELS lines' count (not
 // assimp's ticks and node channels).
-std::string bvh_take_text(const Clip& clip) {
-  std::size_t channels = 0;
-  for (std::size_t j = 0; j < clip.skeleton.joints.size(); ++j) channels += bvh_channels(clip, j).size();
-  const std::string frame_time = frame_time_text(clip);
-  return fmt::format("{} frames, Frame Time {}, {} channels (CHANNELS)", clip.frame_count(),
-                     frame_time.empty() ? fmt::format("{:.9g}", clip.frame_time) : frame_time, channels);
+std::string bvh_take_text(const ClipFacts& f) {
+  return fmt::format("{} frames, Frame Time {}, {} channels (CHANNELS)", f.frames, frame_time_shown(f), f.channels);
 }
 
 // A take's span in file time and its length: "0.833333 s to 1.33333 s (0.5 s)"; the
@@ -251,6 +251,52 @@ std::string layout_text(const std::vector<Channel>& channels) {
   return s;
 }
 
+std::string joint_text(const JointFacts& j) {
+  std::string extra;
+  if (!j.channels.empty()) extra += "  [" + layout_text(j.channels) + "]";
+  extra += "  " + std::to_string(j.rotation_keys) + " rotation keys";
+  if (j.translation_keys) extra += ", " + std::to_string(*j.translation_keys) + " translation keys";
+  return std::string(2 * j.depth, ' ') + j.name + extra;
+}
+
+// `info`'s facts as text (clip_info_json prints the same facts as JSON).
+void print_info_text(const std::string& path, const ClipFileInfo& info, const ClipFacts& f) {
+  fmt::print("file:        {}\n", path);
+  fmt::print("format:      {}\n", info.format);
+  fmt::print("animations:  {}\n", info.animations.size());
+  for (std::size_t a = 0; a < info.animations.size(); ++a) {
+    const AnimationSummary& s = info.animations[a];
+    if (is_format(info.format, FormatId::bvh))
+      fmt::print("  {}{} '{}'  {:.6g} s  {}\n", a == info.selected ? "*" : " ", a, s.name, s.duration, bvh_take_text(f));
+    else
+      fmt::print("  {}{} '{}'  {}  {}  {} keys  {} channels{}\n", a == info.selected ? "*" : " ", a, s.name,
+                 take_span_text(s), take_frames_text(s), s.keys, s.channels,
+                 s.default_rate ? fmt::format("  (0 ticks/s in the file: {:.9g} assumed)", s.ticks_per_second) : "");
+  }
+  fmt::print("frames:      {}\n", f.frames);
+  if (f.rate)
+    fmt::print("frame rate:  {} Hz{} (frame time {} s), {}\n", f.rate->to_string(),
+               f.rate->den == 1 ? std::string() : fmt::format(" = {:.9g} Hz", f.rate->hz()), frame_time_shown(f),
+               rate_origin_text(f.rate_stated));
+  else
+    fmt::print("frame rate:  none (keys not on a uniform grid){}\n",
+               f.file_rate_hz > 0 ? fmt::format("; the file's own: {:.9g} Hz (resample's default)", f.file_rate_hz) : "");
+  fmt::print("duration:    {:.6g} s (keys from {:.6g} s to {:.6g} s)\n", f.duration, f.start, f.end);
+  fmt::print("unit:        {}\n", describe_unit(info.clip.unit));
+  fmt::print("size:        {:.3g} m (the first pose's largest side)\n", f.size_m);
+  if (info.folded_helpers > 0) fmt::print("helpers:     {} $AssimpFbx$ helper nodes folded into their bones\n", info.folded_helpers);
+  fmt::print("joints:      {} (+{} End Sites)\n", f.joints.size(), f.end_sites);
+  for (const JointFacts& j : f.joints) fmt::print("  {}\n", joint_text(j));
+  std::string translated;
+  for (const std::string& name : f.translated) translated += (translated.empty() ? "" : ", ") + name;
+  fmt::print("translation tracks: {}\n", translated.empty() ? "none" : translated);
+  if (f.cycle) fmt::print("cycle:       {}\n", loop_check_text(*f.cycle));
+  if (!f.oddities.empty()) {
+    fmt::print("oddities:\n");
+    for (const std::string& o : f.oddities) fmt::print("  - {}\n", o);
+  }
+}
+
 int run_info(const InfoArgs& args) {
   if (args.summary) return run_summary(args);
   std::error_code ec;
@@ -265,69 +311,15 @@ int run_info(const InfoArgs& args) {
   const std::string& path = args.paths.front();
   options.read_curves = args.curves;
   ReadOutcome read = inspect_clip_for_info(path, options);
-  if (read.error && read.kind == ErrorKind::no_animation) return describe_static(path, read.info.holds, args.json);
+  if (read.error && read.kind == file_error::no_animation) return describe_static(path, read.info.holds, args.json);
   Result<ClipFileInfo> info = reading_or_failure(std::move(read));
   if (!info) return fail(info.error());
   if (args.curves) return print_info_curves(path, *info, args.sample_hz, args.json);
-  const Clip& clip = info->clip;
-  const Skeleton& sk = clip.skeleton;
-  const std::vector<std::string> odd = clip_oddities(clip);
-  const double duration = clip.end_time() - clip.start_time();
-  // The rate every command uses (resample too): BVH ".0333330" is 30 Hz, NTSC 30000/1001.
-  const std::optional<Rate> rate = clip_rate(clip);
-  const double size_m = first_pose_size(clip) * clip.unit.metres_per_unit;
-  std::vector<int> depth(sk.joints.size(), 0);
-  for (std::size_t j = 0; j < sk.joints.size(); ++j)
-    if (sk.joints[j].parent >= 0) depth[j] = depth[static_cast<std::size_t>(sk.joints[j].parent)] + 1;
-
   if (args.json) {
     fmt::print("{}\n", clip_info_json(path, *info));
     return kExitOk;
   }
-
-  fmt::print("file:        {}\n", path);
-  fmt::print("format:      {}\n", info->format);
-  fmt::print("animations:  {}\n", info->animations.size());
-  for (std::size_t a = 0; a < info->animations.size(); ++a) {
-    const AnimationSummary& s = info->animations[a];
-    if (is_format(info->format, FormatId::bvh))
-      fmt::print("  {}{} '{}'  {:.6g} s  {}\n", a == info->selected ? "*" : " ", a, s.name, s.duration, bvh_take_text(clip));
-    else
-      fmt::print("  {}{} '{}'  {}  {}  {} keys  {} channels{}\n", a == info->selected ? "*" : " ", a, s.name,
-                 take_span_text(s), take_frames_text(s), s.keys, s.channels,
-                 s.default_rate ? fmt::format("  (0 ticks/s in the file: {:.9g} assumed)", s.ticks_per_second) : "");
-  }
-  fmt::print("frames:      {}\n", clip.frame_count());
-  if (rate)
-    fmt::print("frame rate:  {} Hz{} (frame time {} s), {}\n", rate->to_string(),
-               rate->den == 1 ? std::string() : fmt::format(" = {:.9g} Hz", rate->hz()),
-               frame_time_text(clip).empty() ? fmt::format("{:.9g}", clip.frame_time) : frame_time_text(clip),
-               rate_origin_text(info->animations.at(info->selected).rate_stated));
-  else
-    fmt::print("frame rate:  none (keys not on a uniform grid){}\n",
-               stated_rate_hz(clip.source_record) > 0 ? fmt::format("; the file's own: {:.9g} Hz (resample's default)", stated_rate_hz(clip.source_record)) : "");
-  fmt::print("duration:    {:.6g} s (keys from {:.6g} s to {:.6g} s)\n", duration, clip.start_time(), clip.end_time());
-  fmt::print("unit:        {}\n", describe_unit(clip.unit));
-  fmt::print("size:        {:.3g} m (the first pose's largest side)\n", size_m);
-  if (info->folded_helpers > 0) fmt::print("helpers:     {} $AssimpFbx$ helper nodes folded into their bones\n", info->folded_helpers);
-  fmt::print("joints:      {} (+{} End Sites)\n", sk.joints.size(), sk.end_sites.size());
-  for (std::size_t j = 0; j < sk.joints.size(); ++j) {
-    const Joint& jt = sk.joints[j];
-    std::string extra;
-    if (!bvh_channels(clip, j).empty()) extra += "  [" + layout_text(bvh_channels(clip, j)) + "]";
-    extra += "  " + std::to_string(clip.rotations[j].keys.size()) + " rotation keys";
-    if (clip.translations[j]) extra += ", " + std::to_string(clip.translations[j]->keys.size()) + " translation keys";
-    fmt::print("  {}{}{}\n", std::string(static_cast<std::size_t>(2 * depth[j]), ' '), jt.name, extra);
-  }
-  std::string translated;
-  for (std::size_t j = 0; j < sk.joints.size(); ++j)
-    if (clip.translations[j]) translated += (translated.empty() ? "" : ", ") + sk.joints[j].name;
-  fmt::print("translation tracks: {}\n", translated.empty() ? "none" : translated);
-  if (const Result<LoopCheck> cycle = check_loop(clip)) fmt::print("cycle:       {}\n", loop_check_text(*cycle));
-  if (!odd.empty()) {
-    fmt::print("oddities:\n");
-    for (const std::string& o : odd) fmt::print("  - {}\n", o);
-  }
+  print_info_text(path, *info, clip_facts(*info));
   return kExitOk;
 }
 

@@ -15,6 +15,7 @@
 #include "rotinterp/render/option_text.h"
 #include "rotinterp/render/context.h"
 #include "rotinterp/render/video.h"
+#include "rotinterp/io/files/file_errors.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
@@ -218,7 +219,7 @@ int run_render(const RenderArgs& a) {
   auto result = render::render_comparison(*clip, a.out_dir, options);
   end_progress(a.quiet);
   // An output's error names the output; the others are about the input.
-  if (!result) return fail(result.error_kind() == ErrorKind::cannot_write ? result.error() : a.input + ": " + result.error());
+  if (!result) return fail(result.error_kind() == file_error::cannot_write ? result.error() : a.input + ": " + result.error());
   if (!a.quiet) {
     const std::size_t images = result->files.size() - (a.video.empty() ? 0 : 1);
     const std::string camera = result->followed ? "camera following" : "fixed camera";

@@ -141,7 +141,7 @@ int run_takes(const ResampleArgs& a, ResampleOptions opt) {
   const bool per_take = a.output.find(kTakePlaceholder) != std::string::npos;
   if (!per_take && !can_write_takes(a.output))
     return fail_usage("--anim " + a.anim + ": " + a.output + " holds one take; put " + kTakePlaceholder +
-                      " in the output name to write one file per take (or write .fbx, .glb or .gltf)");
+                      " in the output name to write one file per take (or write " + format_names(holds_takes, " or ", true) + ")");
   ReadOptions read_options;
   read_options.unit = a.unit_m;
   read_options.allow_external_files = a.allow_external_files;
@@ -262,7 +262,9 @@ void add_resample_command(CLI::App& app, int& exit_code) {
                   "The output is one period again, closing the same way; with --fps the period keeps whole frames "
                   "(the rate is kept, the period stretched by under half a frame where needed, and the summary says "
                   "so); --keep-every takes the wrap-around neighbours.");
-  add_anim_option(*sub, a->anim, "each resampled on its own clock; written into one .fbx, .glb or .gltf, a take each, or one file per take with {anim} in the output name");
+  const std::string several = "each resampled on its own clock; written into one " + format_names(holds_takes, " or ", true) +
+                              ", a take each, or one file per take with {anim} in the output name";
+  add_anim_option(*sub, a->anim, several.c_str());
   add_unit_option(*sub, a->unit);
   add_external_files_option(*sub, a->allow_external_files);
   sub->add_option("--out-unit", a->out_unit,

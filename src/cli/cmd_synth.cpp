@@ -6,6 +6,7 @@
 #include "rotinterp/io/files/atomic_file.h"
 #include "rotinterp/io/files/file_record.h"
 #include "rotinterp/io/write.h"
+#include "rotinterp/io/files/formats.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
@@ -61,7 +62,7 @@ int run_synth(const SynthArgs& a) {
     o.joints = static_cast<int>(n);
   }
   if (!can_write_format(a.output))
-    return fail_usage("output '" + a.output + "': unknown format (use .bvh, .fbx, .glb, .gltf or .dae)");
+    return fail_usage("output '" + a.output + "': unknown format (use " + format_names(writable, " or ", true) + ")");
   auto clip = make_synth_file_clip(o);
   if (!clip) return fail_usage(clip.error());
   // The spec next to the clip, so the analytic truth can be rebuilt (eval --truth).

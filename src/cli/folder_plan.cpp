@@ -5,6 +5,7 @@
 #include "progress_line.h"
 #include "rotinterp/core/work_queue.h"
 #include "rotinterp/io/files/run_guard.h"
+#include "rotinterp/io/files/file_errors.h"
 
 #include <new>
 #include <tuple>
@@ -53,7 +54,7 @@ FileRunOptions FolderPlan::run_options(int jobs, bool skip_existing, bool quiet)
 }
 
 void print_file_failure(const FileFailure& failure, bool quiet) {
-  if (failure.kind == ErrorKind::out_of_memory) {
+  if (failure.kind == file_error::out_of_memory) {
     name_out_of_memory_file(failure.file);
     throw std::bad_alloc();
   }

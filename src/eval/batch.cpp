@@ -11,6 +11,7 @@
 #include "rotinterp/io/info.h"
 #include "rotinterp/io/read.h"
 #include "rotinterp/io/takes.h"
+#include "rotinterp/io/files/file_errors.h"
 
 #include <fmt/format.h>
 
@@ -119,7 +120,7 @@ void prepare_clip(const std::string& file, const EvalOptions& opt, unsigned thre
   if (!takes) {
     // A mesh found next to the clips is not an error. The reader's error kind
     // says so: no second look at a file that may crash its importer.
-    if (found_in_directory(file, opt.inputs) && takes.error_kind() == ErrorKind::no_animation)
+    if (found_in_directory(file, opt.inputs) && takes.error_kind() == file_error::no_animation)
       slot.skipped = true;
     else
       slot.load_failure = EvalFailure{file, takes.error(), takes.error_kind()};

@@ -1,8 +1,13 @@
-// What `rotinterp info` reads of a file, and says of a clip beside its data: its oddities.
+// What `rotinterp info` reads of a file, and says of a clip beside its data: its
+// oddities and its facts (clip_facts), which the text and the JSON both print.
 #include "rotinterp/io/info.h"
+#include "rotinterp/clip/frames.h"
+#include "rotinterp/clip/units.h"
+#include "rotinterp/io/files/file_record.h"
 #include "rotinterp/io/files/formats.h"
 
 #include "rotinterp/io/record/read_parts.h"
+#include "rotinterp/io/files/file_errors.h"
 
 #include <algorithm>
 #include <cmath>
@@ -43,7 +48,7 @@ ReadOutcome inspect_clip_for_info(const std::filesystem::path& path, ReadOptions
   if (options.read_curves || !is_format(extension_of(path), FormatId::fbx)) return inspect_clip_outcome(path, options);
   options.read_curves = true;
   ReadOutcome with_curves = inspect_clip_outcome(path, options);
-  if (!with_curves.error || with_curves.kind == ErrorKind::no_animation) return with_curves;
+  if (!with_curves.error || with_curves.kind == file_error::no_animation) return with_curves;
   options.read_curves = false;
   return inspect_clip_outcome(path, options);
 }
@@ -76,6 +81,41 @@ std::vector<std::string> clip_oddities(const Clip& clip) {
   if (clip.start_time() < 0.0) out.push_back("keys before time 0 (first at " + seconds(clip.start_time()) + ")");
   if (clip.frame_time == 0.0) out.push_back("no uniform frame rate: resample before writing BVH");
   return out;
+}
+
+ClipFacts clip_facts(const ClipFileInfo& info) {
+  const Clip& clip = info.clip;
+  const Skeleton& sk = clip.skeleton;
+  ClipFacts f;
+  f.frames = clip.frame_count();
+  f.frame_time = clip.frame_time;
+  f.frame_time_written = frame_time_text(clip);
+  f.rate = clip_rate(clip);
+  f.rate_stated = info.selected < info.animations.size() && info.animations[info.selected].rate_stated;
+  f.file_rate_hz = stated_rate_hz(clip.source_record);
+  f.start = clip.start_time();
+  f.end = clip.end_time();
+  f.duration = f.end - f.start;
+  f.size_m = first_pose_size(clip) * clip.unit.metres_per_unit;
+  for (std::size_t j = 0; j < sk.joints.size(); ++j) {
+    const Joint& jt = sk.joints[j];
+    JointFacts joint{jt.name, std::nullopt, 0, bvh_channels(clip, j), clip.rotations[j].keys.size(), std::nullopt};
+    if (jt.parent >= 0) {
+      const auto parent = static_cast<std::size_t>(jt.parent);
+      joint.parent = sk.joints[parent].name;
+      joint.depth = f.joints[parent].depth + 1;  // parents come first (Skeleton::validate)
+    }
+    if (clip.translations[j]) {
+      joint.translation_keys = clip.translations[j]->keys.size();
+      f.translated.push_back(jt.name);
+    }
+    f.channels += joint.channels.size();
+    f.joints.push_back(std::move(joint));
+  }
+  f.end_sites = sk.end_sites.size();
+  if (Result<LoopCheck> cycle = check_loop(clip)) f.cycle = std::move(*cycle);
+  f.oddities = clip_oddities(clip);
+  return f;
 }
 
 }  // namespace rotinterp

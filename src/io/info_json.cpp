@@ -1,11 +1,10 @@
-// clip_info_json: `rotinterp info --json` for one file, shared by the CLI and the
-// Python module (rotinterp.info), so that both give the same document.
-#include "rotinterp/io/files/file_record.h"
-#include "rotinterp/io/files/json_text.h"
-#include "rotinterp/io/files/written_names.h"
-#include "rotinterp/clip/frames.h"
+// clip_info_json: `rotinterp info --json` for one file, its clip_facts as JSON, shared
+// by the CLI and the Python module (rotinterp.info), so that both give the same document.
 #include "rotinterp/clip/loop.h"
 #include "rotinterp/clip/units.h"
+#include "rotinterp/io/files/bvh_layout.h"
+#include "rotinterp/io/files/json_text.h"
+#include "rotinterp/io/files/written_names.h"
 #include "rotinterp/io/info.h"
 
 #include <nlohmann/json.hpp>
@@ -31,13 +30,7 @@ nlohmann::json unit_object(const ClipUnit& u) {
 std::string unit_info_json(const ClipUnit& unit) { return json_text(unit_object(unit)); }
 
 std::string clip_info_json(const std::string& path, const ClipFileInfo& info) {
-  const Clip& clip = info.clip;
-  const Skeleton& sk = clip.skeleton;
-  const std::vector<std::string> odd = clip_oddities(clip);
-  const double duration = clip.end_time() - clip.start_time();
-  // The rate every command uses (resample too): BVH ".0333330" is 30 Hz, NTSC 30000/1001.
-  const std::optional<Rate> rate = clip_rate(clip);
-  const double size_m = first_pose_size(clip) * clip.unit.metres_per_unit;
+  const ClipFacts facts = clip_facts(info);
   nlohmann::json out;
   out["file"] = path;  // json_text prints a path that is not UTF-8
   out["format"] = info.format;
@@ -52,38 +45,39 @@ std::string clip_info_json(const std::string& path, const ClipFileInfo& info) {
                                  {"frame_rate_hz", s.frame_rate_hz > 0.0 ? nlohmann::json(s.frame_rate_hz) : nlohmann::json(nullptr)},
                                  {"rate_stated", s.rate_stated}});
   }
-  out["frames"] = clip.frame_count();
-  out["frame_time_s"] = clip.frame_time;
-  out["frame_rate_hz"] = rate ? rate->hz() : 0.0;
-  out["frame_rate"] = rate ? nlohmann::json(rate->to_string()) : nlohmann::json(nullptr);
-  out["file_frame_rate_hz"] = stated_rate_hz(clip.source_record) > 0 ? nlohmann::json(stated_rate_hz(clip.source_record)) : nlohmann::json(nullptr);
-  out["start_s"] = clip.start_time();
-  out["end_s"] = clip.end_time();
-  out["duration_s"] = duration;
+  out["frames"] = facts.frames;
+  out["frame_time_s"] = facts.frame_time;
+  out["frame_rate_hz"] = facts.rate ? facts.rate->hz() : 0.0;
+  out["frame_rate"] = facts.rate ? nlohmann::json(facts.rate->to_string()) : nlohmann::json(nullptr);
+  out["file_frame_rate_hz"] = facts.file_rate_hz > 0 ? nlohmann::json(facts.file_rate_hz) : nlohmann::json(nullptr);
+  out["start_s"] = facts.start;
+  out["end_s"] = facts.end;
+  out["duration_s"] = facts.duration;
   // The same shape as --summary's rows give (cmd_info.cpp).
-  out["unit"] = unit_object(clip.unit);
-  out["figure_size_m"] = size_m;
+  out["unit"] = unit_object(info.clip.unit);
+  out["figure_size_m"] = facts.size_m;
   out["folded_helpers"] = info.folded_helpers;
   nlohmann::json joints = nlohmann::json::array();
   nlohmann::json translated = nlohmann::json::array();
-  const std::vector<std::string> names = written_joint_names(sk, NameForm::text);  // as a glTF or FBX writes them
-  for (std::size_t j = 0; j < sk.joints.size(); ++j) {
-    const Joint& jt = sk.joints[j];
+  // The names as a glTF or FBX writes them: valid UTF-8, no control characters.
+  const Skeleton& sk = info.clip.skeleton;
+  const std::vector<std::string> names = written_joint_names(sk, NameForm::text);
+  for (std::size_t j = 0; j < facts.joints.size(); ++j) {
+    const JointFacts& f = facts.joints[j];
+    const int parent = sk.joints[j].parent;
     nlohmann::json channels = nlohmann::json::array();
-    for (Channel c : bvh_channels(clip, j)) channels.push_back(channel_name(c));
+    for (Channel c : f.channels) channels.push_back(channel_name(c));
     joints.push_back({{"name", names[j]},
-                      {"parent", jt.parent >= 0 ? nlohmann::json(names[static_cast<std::size_t>(jt.parent)])
-                                                : nlohmann::json(nullptr)},
+                      {"parent", parent >= 0 ? nlohmann::json(names[static_cast<std::size_t>(parent)]) : nlohmann::json(nullptr)},
                       {"channels", channels},
-                      {"rotation_keys", clip.rotations[j].keys.size()},
-                      {"translation_keys", clip.translations[j] ? clip.translations[j]->keys.size() : 0}});
-    if (clip.translations[j]) translated.push_back(names[j]);
+                      {"rotation_keys", f.rotation_keys},
+                      {"translation_keys", f.translation_keys.value_or(0)}});
+    if (f.translation_keys) translated.push_back(names[j]);
   }
   out["joints"] = joints;
-  out["end_sites"] = sk.end_sites.size();
+  out["end_sites"] = facts.end_sites;
   out["translation_tracks"] = translated;
-  // The cycle check (clip/loop.h); null where it cannot run (no frame rate, < 3 frames).
-  if (const Result<LoopCheck> c = check_loop(clip)) {
+  if (const std::optional<LoopCheck>& c = facts.cycle) {
     nlohmann::json misses = nlohmann::json::array();
     for (const ClosureMiss& m : c->misses) misses.push_back({{"joint", names[m.joint]}, {"angle_deg", m.angle * 180.0 / kPi}});
     out["cycle"] = {{"looks_like_cycle", c->looks_like_cycle},
@@ -99,7 +93,7 @@ std::string clip_info_json(const std::string& path, const ClipFileInfo& info) {
   } else {
     out["cycle"] = nullptr;
   }
-  out["oddities"] = odd;
+  out["oddities"] = facts.oddities;
   out["warnings"] = info.warnings;
   return json_text(out, 2);
 }

@@ -6,6 +6,7 @@
 #include "rotinterp/io/import/import.h"
 #include "rotinterp/io/process/importer.h"
 #include "rotinterp/io/record/read_parts.h"
+#include "rotinterp/io/files/file_errors.h"
 
 #include <new>
 #include <set>
@@ -52,7 +53,7 @@ ReadOutcome load(const fs::path& path, const ReadOptions& options) {
   // tokenizers would name their own confusion instead.
   if (!bvh && !ext.empty() && !importable_extension(ext))
     return failed(make_error(path.string() + ": not a motion file (formats read: " + read_formats_text() + ")",
-                             ErrorKind::unreadable));
+                             file_error::unreadable));
   if (!bvh || options.cross_check_with_assimp) return read_imported(path, options);
   ReadOutcome out;
   out.info.format = ext;
@@ -68,7 +69,7 @@ ReadOutcome inspect_clip_outcome(const fs::path& path, const ReadOptions& option
   try {
     return load(path, options);
   } catch (const std::bad_alloc&) {
-    return failed(make_error(path.string() + ": out of memory while reading", ErrorKind::out_of_memory));
+    return failed(make_error(path.string() + ": out of memory while reading", file_error::out_of_memory));
   } catch (const std::exception& e) {
     return failed(make_error(path.string() + ": " + one_line(e.what())));
   }

@@ -3,6 +3,7 @@
 #include "rotinterp/io/write.h"
 
 #include "rotinterp/io/files/atomic_file.h"
+#include "rotinterp/io/files/file_errors.h"
 #include "rotinterp/io/files/formats.h"
 #include "rotinterp/io/bvh/bvh.h"
 #include "rotinterp/io/import/import.h"
@@ -117,7 +118,7 @@ std::optional<Status> write_character(const std::vector<Clip>& takes, const std:
     std::vector<const Clip*> pointers;
     for (const Clip& c : takes) pointers.push_back(&c);
     auto written = write_gltf_character(pointers, options.source, path, output->id == FormatId::glb, gltf_keys(options));
-    if (!written && written.error_kind() != ErrorKind::cannot_write) return not_kept(written.error());
+    if (!written && written.error_kind() != file_error::cannot_write) return not_kept(written.error());
     if (!written) return Status(written.failure());
     kept(written->text());
     return Status(Ok{});

@@ -6,6 +6,7 @@
 
 #include "rotinterp/io/process/importer.h"  // src/io: the importer's in-process reading
 #include "rotinterp/io/read.h"
+#include "rotinterp/io/process/process_errors.h"
 
 #include <unistd.h>
 
@@ -26,7 +27,7 @@ inline void read_bytes_as(const std::uint8_t* data, std::size_t size, const char
   // A non-BVH file is read in the importer process, out of the fuzzer's sight.
   // Unless assimp crashed there, read it again in this process, so that our own
   // clip building runs under the sanitizers too; both readings must agree.
-  if (clip.ok() || clip.error_kind() != rotinterp::ErrorKind::crashed) {
+  if (clip.ok() || clip.error_kind() != rotinterp::process_error::crashed) {
     const rotinterp::ReadOutcome again = rotinterp::detail::read_in_this_process(path, {});
     if (again.error.has_value() == clip.ok()) __builtin_trap();
     if (again.error && (*again.error != clip.error() || again.kind != clip.error_kind())) __builtin_trap();

@@ -3,6 +3,8 @@
 // that are not one whole record are an error, never a crash or a huge allocation.
 #include "clip_wire.h"
 #include "identical_info.h"
+#include "rotinterp/io/files/file_errors.h"
+#include "rotinterp/io/process/process_errors.h"
 
 #include <gtest/gtest.h>
 
@@ -68,19 +70,35 @@ TEST(ClipWire, EveryFieldSurvivesTheRoundTripBitForBit) {
 TEST(ClipWire, AnErrorTravelsWithTheWarningsBeforeIt) {
   ReadOutcome out;
   out.error = "x.fbx: the animation moves no node of the scene";
-  out.kind = ErrorKind::no_animation;
+  out.kind = file_error::no_animation;
   out.info.warnings = {"x.fbx: animation 'A' gives 0 ticks per second; assuming 25"};
   Result<ReadOutcome> back = wire::decode(wire::encode(out));
   ASSERT_TRUE(back) << back.error();
   ASSERT_TRUE(back->error);
   EXPECT_EQ(*back->error, *out.error);
-  EXPECT_EQ(back->kind, ErrorKind::no_animation);
+  EXPECT_EQ(back->kind, file_error::no_animation);
   expect_identical(back->info, out.info, "error");
   ReadOutcome empty_message;
   empty_message.error = "";
   back = wire::decode(wire::encode(empty_message));
   ASSERT_TRUE(back) << back.error();
   EXPECT_EQ(back->error, std::optional<std::string>(""));
+}
+
+TEST(ClipWire, EveryFileKindCrossesAndAProcessKindIsRefused) {
+  for (ErrorKind kind : file_error::all) {
+    ReadOutcome out;
+    out.error = "x";
+    out.kind = kind;
+    Result<ReadOutcome> back = wire::decode(wire::encode(out));
+    ASSERT_TRUE(back) << static_cast<int>(kind);
+    EXPECT_EQ(back->kind, kind);
+  }
+  // The parent gives the process kinds; an importer that sends one is not believed.
+  ReadOutcome crashed;
+  crashed.error = "x";
+  crashed.kind = process_error::crashed;
+  EXPECT_FALSE(wire::decode(wire::encode(crashed)));
 }
 
 TEST(ClipWire, EveryTruncationIsRejected) {

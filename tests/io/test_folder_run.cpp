@@ -1,6 +1,8 @@
 // The folder-run facility (batch/folder_run.h): inputs and shards, tasks in input
 // order, skip-existing, failures with their kind, the manifest.
 #include "rotinterp/batch/folder_run.h"
+#include "rotinterp/io/files/file_errors.h"
+#include "rotinterp/io/process/process_errors.h"
 
 #include <gtest/gtest.h>
 
@@ -131,18 +133,18 @@ TEST_F(FolderRun, FailuresKeepTheirKindAndComeInInputOrder) {
     said_on.push_back(std::this_thread::get_id());
   };
   const FileRunReport r = run_files(files, o, [&](std::size_t i, unsigned) -> Status {
-    if (i == 1) return make_error(files[i].input + ": the importer crashed", ErrorKind::crashed);
-    if (i == 2) return make_error(files[i].input + ": no animation", ErrorKind::no_animation);
-    if (i == 4) return make_error(files[i].input + ": too large", ErrorKind::too_large);
+    if (i == 1) return make_error(files[i].input + ": the importer crashed", process_error::crashed);
+    if (i == 2) return make_error(files[i].input + ": no animation", file_error::no_animation);
+    if (i == 4) return make_error(files[i].input + ": too large", process_error::too_large);
     return Ok{};
   });
   ASSERT_EQ(r.outcomes.size(), 6u);
   ASSERT_EQ(r.failures.size(), 2u);
   EXPECT_EQ(r.failures[0].file, inputs[1]);
-  EXPECT_EQ(r.failures[0].kind, ErrorKind::crashed);
+  EXPECT_EQ(r.failures[0].kind, process_error::crashed);
   EXPECT_EQ(r.failures[0].message, inputs[1] + ": the importer crashed");
   EXPECT_EQ(r.failures[1].file, inputs[4]);
-  EXPECT_EQ(r.failures[1].kind, ErrorKind::too_large);
+  EXPECT_EQ(r.failures[1].kind, process_error::too_large);
   EXPECT_EQ(said, (std::vector<std::string>{inputs[1], inputs[4]}));
   for (const auto& id : said_on) EXPECT_EQ(id, std::this_thread::get_id());
   // A file found in a folder with no animation is a mesh next to the clips: skipped, not failed.
@@ -156,10 +158,10 @@ TEST_F(FolderRun, ANamedFileWithoutAnimationFails) {
   FileRunOptions o;
   o.named = {fs::path(inputs[0])};
   const FileRunReport r = run_files({{inputs[0], {}}}, o, [&](std::size_t, unsigned) -> Status {
-    return make_error("no animation", ErrorKind::no_animation);
+    return make_error("no animation", file_error::no_animation);
   });
   ASSERT_EQ(r.failures.size(), 1u);
-  EXPECT_EQ(r.failures[0].kind, ErrorKind::no_animation);
+  EXPECT_EQ(r.failures[0].kind, file_error::no_animation);
   EXPECT_EQ(r.outcomes[0].status, FileStatus::failed);
 }
 
@@ -214,7 +216,7 @@ TEST_F(FolderRun, TheManifestHasARowPerFileWithItsStatusThenTheCallersColumns) {
   std::vector<FileOutcome> outcomes = {{"a.bvh", "out/a.bvh", FileStatus::ok, "", ErrorKind::other},
                                        {"b.bvh", "out/b.bvh", FileStatus::exists, "", ErrorKind::other},
                                        {"c, d.bvh", "out/c.bvh", FileStatus::failed, "c, d.bvh: bad", ErrorKind::other},
-                                       {"m.fbx", "out/m.bvh", FileStatus::no_animation, "", ErrorKind::no_animation}};
+                                       {"m.fbx", "out/m.bvh", FileStatus::no_animation, "", file_error::no_animation}};
   const fs::path path = dir_ / "manifest.csv";
   ASSERT_TRUE(write_manifest(path, outcomes, {"message", "n"}, [&](std::size_t i) -> std::vector<std::string> {
     return {outcomes[i].message, std::to_string(i)};

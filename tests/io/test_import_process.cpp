@@ -10,6 +10,8 @@
 #include "rotinterp/io/info.h"
 #include "rotinterp/io/read.h"
 #include "support/hostile_files.h"
+#include "rotinterp/io/files/file_errors.h"
+#include "rotinterp/io/process/process_errors.h"
 
 #include <gtest/gtest.h>
 
@@ -125,13 +127,13 @@ TEST(ImportProcess, ErrorsComeBackWithTheirKind) {
   const struct {
     std::filesystem::path path;
     ErrorKind kind;
-  } cases[] = {{dir / "missing.fbx", ErrorKind::no_file},
-               {dir / "dangling.fbx", ErrorKind::no_file},
-               {dir / "folder.fbx", ErrorKind::directory},
-               {dir / "empty.fbx", ErrorKind::unreadable},
-               {dir / "garbage.fbx", ErrorKind::unreadable},
-               {dir / "still.obj", ErrorKind::no_animation},
-               {dir / "no_keys.fbx", ErrorKind::crashed}};
+  } cases[] = {{dir / "missing.fbx", file_error::no_file},
+               {dir / "dangling.fbx", file_error::no_file},
+               {dir / "folder.fbx", file_error::directory},
+               {dir / "empty.fbx", file_error::unreadable},
+               {dir / "garbage.fbx", file_error::unreadable},
+               {dir / "still.obj", file_error::no_animation},
+               {dir / "no_keys.fbx", process_error::crashed}};
   for (const auto& c : cases) {
     Result<Clip> clip = read_clip(c.path);
     ASSERT_FALSE(clip) << c.path;
@@ -172,7 +174,7 @@ TEST(ImportProcess, AnImporterThatHangsIsKilledAtTheDeadline) {
   Result<Clip> clip = read_clip(dir / "a.fbx", options);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   ASSERT_FALSE(clip);
-  EXPECT_EQ(clip.error_kind(), ErrorKind::timed_out);
+  EXPECT_EQ(clip.error_kind(), process_error::timed_out);
   EXPECT_NE(clip.error().find("took longer than 0.5 s"), std::string::npos) << clip.error();
   EXPECT_LT(seconds, 5.0);
 }
@@ -185,7 +187,7 @@ TEST(ImportProcess, AnImporterThatAnswersTooMuchIsStopped) {
   options.max_import_bytes = 1 << 20;
   Result<Clip> clip = read_clip(dir / "a.fbx", options);
   ASSERT_FALSE(clip);
-  EXPECT_EQ(clip.error_kind(), ErrorKind::too_large);
+  EXPECT_EQ(clip.error_kind(), process_error::too_large);
   EXPECT_NE(clip.error().find("passed 1048576 bytes"), std::string::npos) << clip.error();
 }
 
@@ -196,7 +198,7 @@ TEST(ImportProcess, AGarbledOrMissingImporterIsAnErrorNotACrash) {
     const FakeImporter fake(dir, "echo not a clip record");
     Result<Clip> clip = read_clip(dir / "a.fbx");
     ASSERT_FALSE(clip);
-    EXPECT_EQ(clip.error_kind(), ErrorKind::crashed);
+    EXPECT_EQ(clip.error_kind(), process_error::crashed);
     EXPECT_NE(clip.error().find("its report was cut short or garbled"), std::string::npos) << clip.error();
   }
   ::setenv("ROTINTERP_IMPORTER", (dir / "nowhere").c_str(), 1);

@@ -5,6 +5,8 @@
 #include "rotinterp/io/read.h"
 #include "support/hostile_files.h"
 #include "support/run_cli.h"
+#include "rotinterp/io/files/file_errors.h"
+#include "rotinterp/io/process/process_errors.h"
 
 #include <gtest/gtest.h>
 
@@ -100,7 +102,7 @@ TEST(MalformedPaths, FilesAssimpCrashesOnAreRefusedAndTheCallerGoesOn) {
   test::write_text(late, test::fbx_one_curve("46186158000000", "1.5", 1));
   auto clip = read_clip(late);
   ASSERT_FALSE(clip);
-  EXPECT_EQ(clip.error_kind(), ErrorKind::crashed);
+  EXPECT_EQ(clip.error_kind(), process_error::crashed);
   EXPECT_NE(clip.error().find("assimp crashed importing this file"), std::string::npos) << clip.error();
   // The same file with its key inside the take reads (the test file is well formed).
   test::write_text(late, test::fbx_one_curve("0", "1.5", 1));
@@ -121,7 +123,7 @@ TEST(MalformedPaths, FilesAssimpCrashesOnAreRefusedAndTheCallerGoesOn) {
   EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line: " << r.err;
   clip = read_clip(path);
   ASSERT_FALSE(clip);
-  EXPECT_EQ(clip.error_kind(), ErrorKind::unreadable);
+  EXPECT_EQ(clip.error_kind(), file_error::unreadable);
   // The unchanged file reads.
   EXPECT_TRUE(read_clip(source));
 }

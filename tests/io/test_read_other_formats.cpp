@@ -3,6 +3,7 @@
 #include "io_test_util.h"
 #include "rotinterp/io/info.h"
 #include "rotinterp/io/read.h"
+#include "rotinterp/io/files/file_errors.h"
 
 #include <gtest/gtest.h>
 
@@ -48,7 +49,7 @@ TEST(OtherFormats, StaticSceneIsRefusedWithAClearMessage) {
   test::write_text(path, text);
   Result<Clip> c = read_clip(path);
   ASSERT_FALSE(c);
-  EXPECT_EQ(c.error_kind(), ErrorKind::no_animation);
+  EXPECT_EQ(c.error_kind(), file_error::no_animation);
   EXPECT_EQ(c.error().rfind(path.string() + ": the file has no animation (it holds ", 0), 0u) << c.error();
   // What it holds also comes as data, through the importer process.
   const ReadOutcome whole = inspect_clip_outcome(path);

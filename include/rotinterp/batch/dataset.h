@@ -22,7 +22,7 @@ Result<std::vector<std::string>> discover_inputs(const std::vector<std::filesyst
 
 // True when `path` was found inside a directory rather than named itself: such a
 // file is skipped quietly when read_clip says it holds no animation
-// (ErrorKind::no_animation: a mesh next to the clips).
+// (file_error::no_animation: a mesh next to the clips).
 bool found_in_directory(const std::string& path, const std::vector<std::filesystem::path>& named);
 
 // Shard `index` of `count` (1 ≤ index ≤ count): files[i] for i ≡ index − 1 (mod count).

@@ -35,7 +35,8 @@ Result<TimeRange> parse_time_range(std::string_view text);
 // frame, an end past the clip's (given in seconds and frames), an empty range.
 Result<std::pair<double, double>> range_seconds(const TimeRange& range, const std::optional<Rate>& rate,
                                                 double duration);
-// A time in seconds as the range's errors write it, 6 significant digits ("2.5").
+// A time in seconds as messages write it (the range's errors, the importer's deadline),
+// 6 significant digits ("2.5").
 std::string seconds_text(double s);
 
 }  // namespace rotinterp

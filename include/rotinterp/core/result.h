@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cassert>
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <variant>
@@ -10,21 +11,11 @@
 namespace rotinterp {
 
 // What kind of failure an error is, for callers that act on it (a batch skips a
-// file without an animation and goes on after a crash). Most errors are `other`.
-enum class ErrorKind {
-  other,
-  unreadable,    // input that is not what it should be: empty, malformed, or refused
-  no_animation,  // readable input that holds no animation (a mesh)
-  crashed,       // a helper process died on the input
-  too_large,     // a result passed the size limit its caller set
-  timed_out,     // work ran past the deadline its caller set
-  no_file,       // nothing at the path: missing, a link to nothing, a loop of links
-  directory,     // the path is a directory
-  cannot_open,   // the system refuses to read it: permissions, not a regular file, I/O
-  out_of_memory, // the work needed more memory than the process may have
-  cannot_write,  // an output could not be made (its folder, its file, its lock): the message names it
-  last = cannot_write,
-};
+// file without an animation and goes on after a crash). Open, like std::byte: core
+// names only `other`, what most errors are; the layers that produce failures name
+// their own kinds as constants of this type (io/files/file_errors.h,
+// io/process/process_errors.h), so core knows no file or process.
+enum class ErrorKind : std::uint8_t { other = 0 };
 
 struct Error {
   std::string message;  // one line, no trailing newline; names the file/joint/frame where known

@@ -1,10 +1,13 @@
 // What a clip file holds: format, animations, the selected clip, warnings and
-// oddities — the data behind `rotinterp info`.
+// oddities — the data behind `rotinterp info`, and its facts, computed once.
 #pragma once
 
 #include "rotinterp/clip/clip.h"
+#include "rotinterp/clip/loop.h"
+#include "rotinterp/clip/sampling.h"
 #include "rotinterp/core/result.h"
 #include "rotinterp/io/fbx/fbx_curves.h"
+#include "rotinterp/io/files/bvh_layout.h"
 #include "rotinterp/io/record/clip_file.h"
 #include "rotinterp/io/read.h"
 
@@ -31,9 +34,41 @@ ReadOutcome inspect_clip_for_info(const std::filesystem::path& path, ReadOptions
 // negative times.
 std::vector<std::string> clip_oddities(const Clip& clip);
 
+// One joint as `info` describes it.
+struct JointFacts {
+  std::string name;
+  std::optional<std::string> parent;            // none for a root
+  std::size_t depth = 0;                        // 0 for a root
+  std::vector<Channel> channels;                // the file's channel layout (BVH's CHANNELS), else none
+  std::size_t rotation_keys = 0;
+  std::optional<std::size_t> translation_keys;  // none: the joint has no translation track
+};
+
+// What `rotinterp info` says of a read clip, computed once (clip_facts) and printed
+// as text (the CLI) or JSON (clip_info_json). Times in seconds, sizes in metres.
+struct ClipFacts {
+  std::size_t frames = 0;
+  double frame_time = 0.0;
+  std::string frame_time_written;  // as the file wrote it (BVH's Frame Time), else empty
+  // The rate every command uses (resample too): BVH ".0333330" is 30 Hz, NTSC
+  // 30000/1001; none where the keys are not on a uniform grid.
+  std::optional<Rate> rate;
+  bool rate_stated = false;  // the selected take's rate is the file's word (AnimationSummary)
+  double file_rate_hz = 0.0; // the file's own rate where it states one (resample's default), else 0
+  double start = 0.0, end = 0.0, duration = 0.0;
+  double size_m = 0.0;       // the first pose's largest side
+  std::vector<JointFacts> joints;
+  std::vector<std::string> translated;  // the joints with a translation track, in joint order
+  std::size_t channels = 0;             // the joints' channels in all (BVH's CHANNELS lines)
+  std::size_t end_sites = 0;
+  std::optional<LoopCheck> cycle;       // none where the check cannot run (no frame rate, < 3 frames)
+  std::vector<std::string> oddities;    // clip_oddities
+};
+ClipFacts clip_facts(const ClipFileInfo& info);
+
 // What `rotinterp info --json` prints for `info` read from `path` (written as
-// given): one JSON document, 2-space indented, the one definition the CLI and the
-// Python module's rotinterp.info share.
+// given): its clip_facts as one JSON document, 2-space indented, the one definition
+// the CLI and the Python module's rotinterp.info share.
 std::string clip_info_json(const std::string& path, const ClipFileInfo& info);
 // What `rotinterp info --curves --json` prints: {"curves": [{"node", "property",
 // "channel", "layer", "default", "pre_extrapolation", "post_extrapolation",

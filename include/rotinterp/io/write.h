@@ -18,7 +18,7 @@ namespace rotinterp {
 // Writes `clip` to `path`; the format follows the extension (bvh, fbx, glb, gltf,
 // dae). The clip must be sampled on a uniform grid of frame_time for BVH output.
 // Atomic (io/files/atomic_file.h), missing folders created; an error about the output has
-// ErrorKind::cannot_write and names the file or folder.
+// file_error::cannot_write and names the file or folder.
 Status write_clip(const Clip& clip, const std::filesystem::path& path, const WriteOptions& options = {});
 
 // Writes several takes of one skeleton into one file: FBX (one AnimationStack and

@@ -1,6 +1,7 @@
 // BVH text up to the data rows: the HIERARCHY section (joints, OFFSETs, CHANNELS,
 // End Sites) and the MOTION header (Frames, exact Frame Time).
 #include "bvh_text.h"
+#include "rotinterp/io/files/file_errors.h"
 
 #include <algorithm>
 #include <cctype>
@@ -258,7 +259,7 @@ Status check_bvh_head(std::string_view head, bool whole_file, const std::string&
   if (s) s = header.parse_motion_header(file);
   // A token that reached the head's end may go on in the file: only the full parse can tell.
   if (s || (!whole_file && header.farthest() >= head.size())) return Ok{};
-  return make_error(s.error(), ErrorKind::unreadable);
+  return make_error(s.error(), file_error::unreadable);
 }
 
 }  // namespace rotinterp

@@ -5,6 +5,7 @@
 #include "rotinterp/io/fbx/fbx_transform.h"
 #include "rotinterp/io/files/key_times.h"
 #include "rotinterp/track/sample.h"
+#include "rotinterp/io/files/file_errors.h"
 
 #include <algorithm>
 #include <cmath>
@@ -73,7 +74,7 @@ Result<FbxCharacter> read_fbx_character(const std::filesystem::path& path) {
   out.label = path.string();
   std::ifstream in(path, std::ios::binary);
   std::ostringstream bytes;
-  if (!in || !(bytes << in.rdbuf())) return make_error(out.label + ": cannot read the file", ErrorKind::cannot_open);
+  if (!in || !(bytes << in.rdbuf())) return make_error(out.label + ": cannot read the file", file_error::cannot_open);
   auto doc = parse_fbx_nodes(bytes.str(), out.label);
   if (!doc) return doc.failure();
   if (doc->version < kFirstObjectVersion)

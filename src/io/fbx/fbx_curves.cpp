@@ -5,6 +5,7 @@
 
 #include "fbx_keys.h"
 #include "fbx_objects.h"
+#include "rotinterp/io/files/file_errors.h"
 
 #include <algorithm>
 #include <cmath>
@@ -76,7 +77,7 @@ Status read_layer_curves(const Objects& o, const FbxNode& layer, std::size_t ind
         c.layer = index;
         c.default_value = fbx::property_number(fbx::find_property(*cn, "d|Weight"), 0, take.layers[index].weight);
         const std::string where = label + ": FBX layer " + fbx_printable(c.node) + "/Weight";
-        if (Status st = read_fbx_curve_keys(*curve, c, where, repairs); !st) return make_error(st.error(), ErrorKind::unreadable);
+        if (Status st = read_fbx_curve_keys(*curve, c, where, repairs); !st) return make_error(st.error(), file_error::unreadable);
         take.layers[index].weight_curve = std::move(c);
         continue;
       }
@@ -101,7 +102,7 @@ Status read_layer_curves(const Objects& o, const FbxNode& layer, std::size_t ind
         c.layer = index;
         c.default_value = fbx::property_number(fbx::find_property(*cn, link.property), 0, 0.0);
         const std::string where = label + ": FBX curve " + fbx_printable(c.node) + "/" + c.property + "/" + ch;
-        if (Status st = read_fbx_curve_keys(*curve->second, c, where, repairs); !st) return make_error(st.error(), ErrorKind::unreadable);
+        if (Status st = read_fbx_curve_keys(*curve->second, c, where, repairs); !st) return make_error(st.error(), file_error::unreadable);
         take.curves.push_back(std::move(c));
       }
     }

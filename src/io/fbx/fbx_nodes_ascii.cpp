@@ -2,6 +2,7 @@
 // children `}`, `;` comments, arrays as `*N { a: … }`, properties continued over
 // lines after a comma.
 #include "rotinterp/io/fbx/fbx_nodes.h"
+#include "rotinterp/io/files/file_errors.h"
 
 #include <cctype>
 #include <charconv>
@@ -40,7 +41,7 @@ class AsciiReader {
   }
 
   Status fail(const std::string& what) const {
-    return make_error(fbx_node_where(label_, path_) + ": " + what, ErrorKind::unreadable);
+    return make_error(fbx_node_where(label_, path_) + ": " + what, file_error::unreadable);
   }
 
  private:
@@ -215,7 +216,7 @@ std::uint32_t ascii_version(std::string_view text, const FbxDocument& doc) {
 
 Result<FbxDocument> parse_fbx_ascii(std::string_view text, const std::string& label) {
   if (text.find('\0') != std::string_view::npos)
-    return make_error(label + ": not an FBX file (binary bytes without the binary FBX header)", ErrorKind::unreadable);
+    return make_error(label + ": not an FBX file (binary bytes without the binary FBX header)", file_error::unreadable);
   FbxDocument doc;
   AsciiReader reader(text, label);
   if (Status s = reader.nodes(doc.nodes, 0); !s) return s.failure();

@@ -2,6 +2,7 @@
 // offset and count checked before it is used (io/fbx/fbx_nodes.h states the rules).
 #include "rotinterp/io/fbx/fbx_nodes.h"
 #include "rotinterp/io/files/limits.h"
+#include "rotinterp/io/files/file_errors.h"
 
 #include <zlib.h>
 
@@ -63,7 +64,7 @@ class BinaryReader {
     return Ok{};
   }
 
-  Status fail(const std::string& what) const { return make_error(where() + ": " + what, ErrorKind::unreadable); }
+  Status fail(const std::string& what) const { return make_error(where() + ": " + what, file_error::unreadable); }
 
   std::string where() const { return fbx_node_where(label_, path_); }
 
@@ -178,12 +179,12 @@ class BinaryReader {
 
 Result<FbxDocument> parse_fbx_binary(std::string_view bytes, const std::string& label) {
   if (!is_binary_fbx(bytes) || bytes.size() < kHeaderBytes)
-    return make_error(label + ": not a binary FBX file (no header)", ErrorKind::unreadable);
+    return make_error(label + ": not a binary FBX file (no header)", file_error::unreadable);
   std::uint32_t version = 0;
   std::memcpy(&version, bytes.data() + 23, 4);
   if (version < kFirstVersion || version > kLastVersion)
     return make_error(label + ": binary FBX version " + std::to_string(version) + " is not read (6100 to 7700 are)",
-                      ErrorKind::unreadable);
+                      file_error::unreadable);
   FbxDocument doc;
   doc.binary = true;
   doc.version = version;

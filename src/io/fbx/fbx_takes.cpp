@@ -3,6 +3,7 @@
 // decoded from the 6.1 key list.
 #include "fbx_objects.h"
 #include "rotinterp/io/files/key_checks.h"
+#include "rotinterp/io/files/file_errors.h"
 
 #include <algorithm>
 #include <cmath>
@@ -130,27 +131,27 @@ Status read_channel(const FbxNode& channel, FbxCurve& c, const std::string& wher
   if (!key) return Ok{};
   const FbxNode* count_node = channel.child("KeyCount");
   if (!count_node || count_node->properties.empty() || !count_node->properties[0].is_integer())
-    return make_error(where + ": a Key list without its KeyCount", ErrorKind::unreadable);
+    return make_error(where + ": a Key list without its KeyCount", file_error::unreadable);
   const std::int64_t count = count_node->properties[0].integer;
   KeyList list(key->properties);
   // A key takes three values at least (time, value, letter).
   if (count < 0 || static_cast<std::uint64_t>(count) > list.size() / 3)
     return make_error(where + ": KeyCount " + std::to_string(count) + " is past the end of its " +
                           std::to_string(list.size()) + " values",
-                      ErrorKind::unreadable);
+                      file_error::unreadable);
   c.keys.resize(static_cast<std::size_t>(count));
   for (std::size_t i = 0; i < c.keys.size(); ++i) {
     FbxKey& k = c.keys[i];
     const std::string at = where + ": key " + std::to_string(i) + " of " + std::to_string(count);
     if (!list.ticks(k.ticks) || !list.number(k.value))
       return make_error(at + ": no time and finite value (the list ends or holds something else)",
-                        ErrorKind::unreadable);
+                        file_error::unreadable);
     if (const std::string wrong = decode_key(list, k); !wrong.empty())
-      return make_error(at + ": " + wrong, ErrorKind::unreadable);
+      return make_error(at + ": " + wrong, file_error::unreadable);
   }
   if (!list.at_end())
     return make_error(where + ": values after the last of its " + std::to_string(count) + " keys",
-                      ErrorKind::unreadable);
+                      file_error::unreadable);
   std::vector<double> times, values;
   for (const FbxKey& k : c.keys) times.push_back(static_cast<double>(k.ticks)), values.push_back(k.value);
   Result<std::vector<std::size_t>> repaired = check_keys(times, values, 1, where);

@@ -4,6 +4,7 @@
 #include "cleanup_list.h"
 #include "temp_names.h"
 #include "rotinterp/io/files/output_dirs.h"
+#include "rotinterp/io/files/file_errors.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -28,7 +29,7 @@ namespace fs = std::filesystem;
 
 // Every error here is about an output (its folder, its file, its lock): a caller names
 // the output, not its input, in front of it.
-Error write_error(std::string message) { return make_error(std::move(message), ErrorKind::cannot_write); }
+Error write_error(std::string message) { return make_error(std::move(message), file_error::cannot_write); }
 
 // The test seam (see the header): the Nth checked operation fails with ENOSPC.
 bool injected_fault() {

@@ -1,5 +1,6 @@
 // The keys' validation pass (io/files/key_checks.h).
 #include "rotinterp/io/files/key_checks.h"
+#include "rotinterp/io/files/file_errors.h"
 
 #include <cmath>
 #include <cstdio>
@@ -26,21 +27,21 @@ Result<std::vector<std::size_t>> check_keys(const std::vector<double>& times, co
                                             std::size_t width, const std::string& where) {
   std::vector<std::size_t> repaired;
   for (std::size_t k = 0; k < times.size(); ++k) {
-    if (!std::isfinite(times[k])) return make_error(where + ": " + key(k) + ": its time is not finite", ErrorKind::unreadable);
+    if (!std::isfinite(times[k])) return make_error(where + ": " + key(k) + ": its time is not finite", file_error::unreadable);
     for (std::size_t i = 0; i < width; ++i)
       if (!std::isfinite(values[k * width + i]))
-        return make_error(where + ": " + key(k) + ": a value is not finite", ErrorKind::unreadable);
+        return make_error(where + ": " + key(k) + ": a value is not finite", file_error::unreadable);
     if (k == 0) continue;
     if (times[k] < times[k - 1])
       return make_error(where + ": " + key(k) + ": its time " + number(times[k]) + " is before key " +
                             std::to_string(k - 1) + "'s " + number(times[k - 1]) + " (times must increase)",
-                        ErrorKind::unreadable);
+                        file_error::unreadable);
     if (times[k] == times[k - 1]) {
       for (std::size_t i = 0; i < width; ++i)
         if (values[k * width + i] != values[(k - 1) * width + i])
           return make_error(where + ": " + key(k) + ": its time " + number(times[k]) + " is key " +
                                 std::to_string(k - 1) + "'s, with another value (times must increase)",
-                            ErrorKind::unreadable);
+                            file_error::unreadable);
       repaired.push_back(k);
     }
   }
@@ -59,7 +60,7 @@ Status check_quaternion_keys(const std::vector<double>& values, std::size_t firs
                                     values[at + 2] * values[at + 2] + values[at + 3] * values[at + 3]);
     if (!(length > kMinQuaternionLength))
       return make_error(where + ": " + key(k) + ": a rotation of length " + number(length) + " (no direction)",
-                        ErrorKind::unreadable);
+                        file_error::unreadable);
   }
   return Ok{};
 }

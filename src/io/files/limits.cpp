@@ -1,5 +1,6 @@
 // The readers' size checks (io/files/limits.h).
 #include "rotinterp/io/files/limits.h"
+#include "rotinterp/io/files/file_errors.h"
 
 #include <limits>
 
@@ -11,11 +12,11 @@ Status check_declared_count(std::uint64_t count, std::uint64_t element_bytes, st
   if (count > max_count)
     return make_error(where + ": " + std::to_string(count) + " elements, more than the " + std::to_string(max_count) +
                           " rotinterp reads",
-                      ErrorKind::unreadable);
+                      file_error::unreadable);
   if (count > bytes_left / element_bytes)
     return make_error(where + ": " + std::to_string(count) + " elements of " + std::to_string(element_bytes) +
                           " bytes cannot fit in the " + std::to_string(bytes_left) + " bytes left",
-                      ErrorKind::unreadable);
+                      file_error::unreadable);
   return Ok{};
 }
 
@@ -30,7 +31,7 @@ Status InflationBudget::take(std::uint64_t bytes, const std::string& where) {
   if (bytes > left_)
     return make_error(where + ": the file's compressed arrays would inflate past " + std::to_string(limit_ >> 20) +
                           " MiB, more than a file of its size holds (a zlib bomb?)",
-                      ErrorKind::unreadable);
+                      file_error::unreadable);
   left_ -= bytes;
   return Ok{};
 }

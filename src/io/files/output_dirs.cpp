@@ -2,6 +2,7 @@
 #include "rotinterp/io/files/output_dirs.h"
 
 #include "cleanup_list.h"
+#include "rotinterp/io/files/file_errors.h"
 
 #include <mutex>
 #include <system_error>
@@ -17,7 +18,7 @@ std::mutex g_mutex;
 
 Error in_the_way(const fs::path& p) {
   return make_error(p.string() + ": cannot create the output folder: a file of that name is in the way",
-                    ErrorKind::cannot_write);
+                    file_error::cannot_write);
 }
 
 }  // namespace
@@ -40,7 +41,7 @@ Status create_output_directories(const fs::path& dir) {
   }
   for (auto it = missing.rbegin(); it != missing.rend(); ++it) {
     if (fs::create_directory(*it, ec)) cleanup::add(it->string(), cleanup::Kind::folder);
-    if (ec) return make_error(it->string() + ": cannot create the output folder: " + ec.message(), ErrorKind::cannot_write);
+    if (ec) return make_error(it->string() + ": cannot create the output folder: " + ec.message(), file_error::cannot_write);
   }
   if (!fs::is_directory(d, ec)) return in_the_way(d);
   return Ok{};

@@ -2,6 +2,7 @@
 #include "rotinterp/io/files/run_guard.h"
 
 #include "rotinterp/io/files/output_dirs.h"
+#include "rotinterp/io/files/file_errors.h"
 
 #include <fcntl.h>
 #include <sys/file.h>
@@ -21,7 +22,7 @@ namespace {
 namespace fs = std::filesystem;
 
 // Errors about an output (its folder, its lock): the caller names the output.
-Error write_error(std::string message) { return make_error(std::move(message), ErrorKind::cannot_write); }
+Error write_error(std::string message) { return make_error(std::move(message), file_error::cannot_write); }
 
 std::string reason(int err) { return std::strerror(err); }
 

@@ -6,6 +6,7 @@
 #include "gltf_container.h"
 #include "rotinterp/io/files/input_file.h"
 #include "rotinterp/io/files/key_checks.h"
+#include "rotinterp/io/files/file_errors.h"
 
 #include <nlohmann/json.hpp>
 
@@ -160,7 +161,7 @@ Result<GltfAnimations> parse_gltf_animations(std::string_view bytes, const std::
       for (const json& animation : doc.at("animations")) out.animations.push_back(read_animation(doc, buffers, animation, nodes, out.repairs));
     return out;
   } catch (const std::exception& e) {
-    return make_error(label + ": glTF animations: " + e.what(), ErrorKind::unreadable);
+    return make_error(label + ": glTF animations: " + e.what(), file_error::unreadable);
   }
 }
 

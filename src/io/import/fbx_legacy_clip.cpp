@@ -8,6 +8,7 @@
 
 #include "rotinterp/io/fbx/fbx_nodes.h"
 #include "rotinterp/io/fbx/fbx_transform.h"
+#include "rotinterp/io/files/file_errors.h"
 
 #include <algorithm>
 #include <cctype>
@@ -197,9 +198,9 @@ bool is_legacy_fbx(const fs::path& path) {
 Status read_legacy_fbx(const fs::path& path, const ReadOptions& options, ClipFileInfo& info, const Warnings& warn) {
   const std::string label = path.string();
   Result<FbxDocument> doc = read_fbx_file(path, label);
-  if (!doc) return make_error(doc.error(), ErrorKind::unreadable);
+  if (!doc) return make_error(doc.error(), file_error::unreadable);
   Result<FbxAnimation> anim = read_fbx_animation(*doc, label);
-  if (!anim) return make_error(anim.error(), ErrorKind::unreadable);
+  if (!anim) return make_error(anim.error(), file_error::unreadable);
   const double rate = time_mode_rate(static_cast<int>(global_setting(*doc, "TimeMode", 0)),
                                      global_setting(*doc, "CustomFrameRate", -1));
   std::size_t meshes = 0;
@@ -209,7 +210,7 @@ Status read_legacy_fbx(const fs::path& path, const ReadOptions& options, ClipFil
   if (!any_curve) {
     info.holds = std::to_string(meshes) + (meshes == 1 ? " mesh, " : " meshes, ") +
                  std::to_string(anim->models.size()) + " models";
-    return make_error(label + ": the file has no animation (it holds " + info.holds + ")", ErrorKind::no_animation);
+    return make_error(label + ": the file has no animation (it holds " + info.holds + ")", file_error::no_animation);
   }
   for (const FbxTake& t : anim->takes) {
     AnimationSummary s;

@@ -13,6 +13,7 @@
 #include "rotinterp/io/gltf/gltf_source.h"
 #include "scene_parts.h"
 #include "scene_to_clip.h"
+#include "rotinterp/io/files/file_errors.h"
 
 #include <assimp/Importer.hpp>
 #include <assimp/config.h>
@@ -107,12 +108,12 @@ Status read_with_assimp(const fs::path& path, const ReadOptions& options, ClipFi
   const aiScene* scene = import_scene(importer, path, assimp_error);
   if (!scene) {
     if (assimp_error.find("No suitable reader") != std::string::npos || assimp_error.empty())
-      return make_error(label + ": not a motion file (formats read: " + read_formats_text() + ")", ErrorKind::unreadable);
-    return make_error(label + ": cannot read: " + assimp_error, ErrorKind::unreadable);
+      return make_error(label + ": not a motion file (formats read: " + read_formats_text() + ")", file_error::unreadable);
+    return make_error(label + ": cannot read: " + assimp_error, file_error::unreadable);
   }
   if (scene->mNumAnimations == 0) {
     info.holds = scene_contents(scene);
-    return make_error(label + ": the file has no animation (it holds " + info.holds + ")", ErrorKind::no_animation);
+    return make_error(label + ": the file has no animation (it holds " + info.holds + ")", file_error::no_animation);
   }
   // FBX: assimp re-bases each take to its span's start (LocalStart, else its first
   // key), where its file time is out of sight (read_here adds it from our own reader).
@@ -127,7 +128,7 @@ Status read_with_assimp(const fs::path& path, const ReadOptions& options, ClipFi
     s.channels = an->mNumChannels;
     Result<scene_parts::KeyTimes> keys = scene_parts::key_times(
         an, fbx ? std::optional(scene_parts::TickSpan{0.0, an->mDuration}) : std::nullopt, label);
-    if (!keys) return make_error(keys.error(), ErrorKind::unreadable);
+    if (!keys) return make_error(keys.error(), file_error::unreadable);
     s.keys = keys->distinct;
     s.start = fbx ? NAN : keys->first / s.ticks_per_second;
     if (!fbx) s.duration = keys->all.empty() ? 0.0 : (keys->last - keys->first) / s.ticks_per_second;
@@ -143,14 +144,14 @@ Status read_with_assimp(const fs::path& path, const ReadOptions& options, ClipFi
   const aiAnimation* anim = scene->mAnimations[info.selected];
   const AnimationSummary& summary = info.animations[info.selected];
   if (!std::isfinite(anim->mTicksPerSecond) || anim->mTicksPerSecond < 0.0)
-    return make_error(label + ": animation '" + summary.name + "' has an invalid tick rate", ErrorKind::unreadable);
+    return make_error(label + ": animation '" + summary.name + "' has an invalid tick rate", file_error::unreadable);
   if (summary.default_rate)
     warn(label + ": animation '" + summary.name + "' gives 0 ticks per second; assuming " +
          std::to_string(static_cast<int>(kDefaultTicksPerSecond)));
   info.clip.name = summary.name.empty() ? path.stem().string() : summary.name;
   Status filled = scene_to_clip(scene, anim, summary.ticks_per_second, fbx ? std::optional(anim->mDuration) : std::nullopt,
                                 info.clip, info.folded_helpers, warn, label);
-  if (!filled) return make_error(filled.error(), ErrorKind::unreadable);
+  if (!filled) return make_error(filled.error(), file_error::unreadable);
   return Ok{};
 }
 
@@ -211,7 +212,7 @@ Status read_bvh_checked(const fs::path& path, const ReadOptions& options, ClipFi
   if (Status st = bvh_file_to_clip(*bvh, anim ? anim->mName.C_Str() : "", path, options, info); !st) return st;
   if (!anim) return Ok{};
   if (Status st = compare_with_assimp(*bvh, info.clip, anim, warn, label); !st)
-    return make_error(st.error(), ErrorKind::unreadable);
+    return make_error(st.error(), file_error::unreadable);
   return Ok{};
 }
 
@@ -233,7 +234,7 @@ Result<std::optional<FbxAnimation>> read_ahead_of_assimp(const fs::path& path, c
       return make_error(curves->repairs.front() +
                             " by our reader, but assimp, which reads FBX 7 files, drops such a curve and would leave "
                             "its joint at rest: refused",
-                        ErrorKind::unreadable);
+                        file_error::unreadable);
     return std::optional<FbxAnimation>(std::move(*curves));
   }
   if (is_format(ext, FormatId::glb) || is_format(ext, FormatId::gltf)) {
@@ -282,7 +283,7 @@ ReadOutcome read_in_this_process(const fs::path& path, const ReadOptions& option
     }
   } catch (const std::bad_alloc&) {
     out.error = path.string() + ": out of memory while reading";
-    out.kind = ErrorKind::out_of_memory;
+    out.kind = file_error::out_of_memory;
   } catch (const std::exception& e) {
     out.error = path.string() + ": " + one_line(e.what());
   }

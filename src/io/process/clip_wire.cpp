@@ -3,6 +3,7 @@
 #include "clip_wire.h"
 #include "wire_bytes.h"
 
+#include "rotinterp/io/files/file_errors.h"
 #include "rotinterp/io/files/file_record.h"
 
 #include <cmath>
@@ -20,6 +21,15 @@ constexpr std::string_view kMagic = "rotinterp-clip-wire-6";
 // Smallest encoded sizes, for Reader::count.
 constexpr std::size_t kCount = 8, kDouble = 8, kVec3 = 3 * kDouble, kQuat = 4 * kDouble;
 constexpr std::size_t kString = kCount;
+
+// What a reading in the importer can fail with: `other` or a file kind (the process
+// kinds are given by the parent, never sent).
+bool sendable_kind(std::uint8_t code) {
+  if (code == static_cast<std::uint8_t>(ErrorKind::other)) return true;
+  for (ErrorKind k : file_error::all)
+    if (code == static_cast<std::uint8_t>(k)) return true;
+  return false;
+}
 
 void put(Writer& w, const std::vector<double>& v) {
   w.u64(v.size());
@@ -320,7 +330,7 @@ Result<ReadOutcome> decode(std::string_view bytes) {
   if (r.flag()) {
     out.error = r.str();
     const std::uint8_t kind = r.u8();
-    if (kind > static_cast<std::uint8_t>(ErrorKind::last)) r.fail();
+    if (!sendable_kind(kind)) r.fail();
     out.kind = static_cast<ErrorKind>(kind);
   }
   ClipFileInfo& info = out.info;

@@ -4,6 +4,8 @@
 #include "rotinterp/io/process/importer.h"
 #include "clip_wire.h"
 #include "import_protocol.h"
+#include "rotinterp/clip/time_range.h"
+#include "rotinterp/io/process/process_errors.h"
 
 #include <dlfcn.h>
 #include <fcntl.h>
@@ -19,7 +21,6 @@
 #include <cerrno>
 #include <chrono>
 #include <climits>
-#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -65,12 +66,6 @@ bool send_all(int fd, std::string_view bytes) {
     bytes.remove_prefix(static_cast<std::size_t>(put));
   }
   return true;
-}
-
-std::string seconds_text(double s) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", s);
-  return buf;
 }
 
 // One running importer, talking through one socket that is both its standard
@@ -280,18 +275,18 @@ Result<ReadOutcome> read_once(Importer& importer, bool fresh, const fs::path& pa
   if (reply.too_large)
     return make_error(label + ": the importer's result passed " + std::to_string(options.max_import_bytes) +
                           " bytes (ReadOptions::max_import_bytes); it was stopped and the file refused",
-                      ErrorKind::too_large);
+                      process_error::too_large);
   if (timed_out)
     return make_error(label + ": the import took longer than " + seconds_text(options.import_timeout_seconds) +
                           " s (ReadOptions::import_timeout_seconds); it was stopped and the file refused",
-                      ErrorKind::timed_out);
+                      process_error::timed_out);
   std::string how;
   if (WIFSIGNALED(status))
     how = "signal " + std::to_string(WTERMSIG(status)) + ", " + ::strsignal(WTERMSIG(status));
   else if (WIFEXITED(status) && WEXITSTATUS(status) != 0)
     how = "exit status " + std::to_string(WEXITSTATUS(status));
   if (how.empty()) how = "its report was cut short or garbled";
-  return make_error(label + ": assimp crashed importing this file (" + how + "); refused", ErrorKind::crashed);
+  return make_error(label + ": assimp crashed importing this file (" + how + "); refused", process_error::crashed);
 }
 }  // namespace
 
@@ -328,7 +323,7 @@ Result<ReadOutcome> read_in_importer(const fs::path& path, const ReadOptions& op
   // An importer that read other files first may have been broken by one of them
   // (a heap damaged without a crash there): before this file is called a crash,
   // a fresh importer reads it.
-  if (reused && !got && got.error_kind() == ErrorKind::crashed)
+  if (reused && !got && got.error_kind() == process_error::crashed)
     got = read_once(importer, true, path, exe->string(), options);
   return got;
 }

@@ -2,6 +2,7 @@
 #include "rotinterp/io/record/read_parts.h"
 #include "rotinterp/io/files/formats.h"
 #include "rotinterp/io/files/huge_pages.h"
+#include "rotinterp/io/files/file_errors.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -109,9 +110,9 @@ Result<BvhFile> read_bvh_file(const fs::path& path, ClipFileInfo& info, const Wa
   if (Status st = marked ? Status(Ok{}) : check_bvh_head(first, head.size() <= kBvhHeadBytes, label); !st)
     return st.failure();
   FileText text;
-  if (Status st = text.open(path, label); !st) return make_error(st.error(), ErrorKind::unreadable);
+  if (Status st = text.open(path, label); !st) return make_error(st.error(), file_error::unreadable);
   Result<BvhFile> bvh = parse_bvh(text.text(), label);
-  if (!bvh) return make_error(bvh.error(), ErrorKind::unreadable);
+  if (!bvh) return make_error(bvh.error(), file_error::unreadable);
   info.format = format_info(FormatId::bvh).name;
   if (bvh->extra_rows > 0)
     warn(label + ": " + std::to_string(bvh->extra_rows) + " data row(s) after the " + std::to_string(bvh->frames) +
@@ -164,7 +165,7 @@ void settle_unit(ClipFileInfo& info, const std::string& label, const ReadOptions
 
 Status check_clip(ClipFileInfo& info, const std::string& label, const ReadOptions& options) {
   info.clip.source_format = info.format;
-  if (Status s = info.clip.validate(); !s) return make_error(label + ": " + s.error(), ErrorKind::unreadable);
+  if (Status s = info.clip.validate(); !s) return make_error(label + ": " + s.error(), file_error::unreadable);
   const std::vector<Joint>& joints = info.clip.skeleton.joints;
   std::vector<std::size_t> depth(joints.size(), 1);
   for (std::size_t j = 0; j < joints.size(); ++j) {
@@ -172,7 +173,7 @@ Status check_clip(ClipFileInfo& info, const std::string& label, const ReadOption
     if (depth[j] > kMaxJointDepth)
       return make_error(label + ": joints nested more than " + std::to_string(kMaxJointDepth) +
                             " levels deep (the most rotinterp reads)",
-                        ErrorKind::unreadable);
+                        file_error::unreadable);
   }
   settle_unit(info, label, options);
   return Ok{};

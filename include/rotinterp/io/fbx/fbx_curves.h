@@ -147,7 +147,7 @@ struct FbxAnimation {
 Result<FbxAnimation> read_fbx_animation(const FbxDocument& doc, const std::string& label);
 
 // The file at `path` read whole and through parse_fbx_nodes and read_fbx_animation;
-// `label` names it in errors (ErrorKind::unreadable, or cannot_open).
+// `label` names it in errors (file_error::unreadable, or cannot_open).
 Result<FbxAnimation> read_fbx_curves_file(const std::string& path, const std::string& label);
 
 }  // namespace rotinterp

@@ -82,7 +82,7 @@ std::string fbx_node_where(const std::string& label, const std::vector<std::stri
 bool is_binary_fbx(std::string_view bytes);
 
 // Reads a whole FBX file's bytes (binary or ASCII, chosen by the magic). `label`
-// names the file in errors (ErrorKind::unreadable).
+// names the file in errors (file_error::unreadable).
 Result<FbxDocument> parse_fbx_nodes(std::string_view bytes, const std::string& label);
 
 // The file at `path` (io/files/input_file.h read_input_file) through parse_fbx_nodes.

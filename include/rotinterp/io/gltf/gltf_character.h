@@ -43,7 +43,7 @@ struct GltfKept {
 // Writes `takes` (valid, read from the glTF/GLB file `source`; each take's joints
 // are the nodes of their names, so takes of different joints may be written) to
 // `path`, atomically, as the source with its animations replaced. Errors of kind
-// ErrorKind::cannot_write are the output's; any other says why the character cannot
+// file_error::cannot_write are the output's; any other says why the character cannot
 // be kept (a joint with no node of its name, or several; a joint node stored as a
 // matrix; buffer views with extensions, which point into buffers we would
 // rewrite), and nothing is written.

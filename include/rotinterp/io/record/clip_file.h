@@ -46,7 +46,7 @@ struct ClipFileInfo {
   // FBX with ReadOptions::read_curves: the curves as the file stores them, read by
   // our own FBX reader (io/fbx/fbx_curves.h); empty otherwise.
   std::optional<FbxAnimation> curves;
-  // A file without animation, which a read refuses (ErrorKind::no_animation): what it
+  // A file without animation, which a read refuses (file_error::no_animation): what it
   // holds ("1 mesh, 2 nodes: RootNode, Cube"), for info; empty otherwise.
   std::string holds;
 };

@@ -40,7 +40,7 @@ struct ReadOptions {
   // FBX: also read the file's animation curves as stored — keys, tangents, takes,
   // layers — with our own FBX reader, in the importer process like the rest of the
   // read (ClipFileInfo::curves; `info --curves`). A malformed curve then refuses the
-  // file (ErrorKind::unreadable). Off by default.
+  // file (file_error::unreadable). Off by default.
   bool read_curves = false;
   // glTF: read buffer files that lie outside the file's folder (a uri with `..`, an
   // absolute path, or a link leading out). Off by default: a file from elsewhere
@@ -54,14 +54,14 @@ struct ReadOptions {
   // its reading back; this process never calls assimp's importers. assimp 5.2.5
   // aborts or corrupts memory on some malformed files (a failed internal assertion,
   // a segfault on a curve without keys, a double free in ~aiScene): such a file is
-  // one error (ErrorKind::crashed) instead of the end of a batch. Each reading
+  // one error (process_error::crashed) instead of the end of a batch. Each reading
   // thread keeps one importer for file after file, replaced after a crash, a limit
   // below, or past 256 MiB resident; it ends with its thread (killed and reaped)
   // and with this process. It is killed when one file takes longer than this (the
-  // file is refused, ErrorKind::timed_out)…
+  // file is refused, process_error::timed_out)…
   double import_timeout_seconds = 600.0;
   // … or when its reply (the clip, 40 bytes a key) passes this many bytes
-  // (ErrorKind::too_large).
+  // (process_error::too_large).
   std::uint64_t max_import_bytes = std::uint64_t{4} << 30;
 };
 

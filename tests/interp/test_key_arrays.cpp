@@ -97,9 +97,9 @@ TEST(KeyArrays, AZeroKeyIsNamedByJointAndKey) {
     for (const auto& [joints, bad] : {std::pair<std::size_t, std::size_t>{3, 2}, {11, 9}}) {
       std::vector<RotationTrack> tracks = tracks_on_one_grid(joints);
       std::vector<double> flat = flat_keys<double>(tracks, false);
-      for (std::size_t c = 0; c < 4; ++c) {
-        flat[4 * (5 * joints + bad) + c] = 0.0;            // key 5
-        flat[4 * (7 * joints + joints - 1) + c] = std::numeric_limits<double>::quiet_NaN();  // key 7 of the last joint, after it
+      for (std::size_t c = 0; c < 4; ++c) {  // key 5 of `bad`; key 7 of the last joint, a later one
+        flat[4 * (5 * joints + bad) + c] = 0.0;
+        flat[4 * (7 * joints + joints - 1) + c] = std::numeric_limits<double>::quiet_NaN();
       }
       const double at = 0.5;
       std::vector<double> out(joints * 4);

@@ -54,8 +54,7 @@ struct KeyArrays {
 };
 
 // The tracks of joints [first, first + count) into tracks[0 .. count), each key made
-// unit on the way, read in one pass over the rows: the array is row-major, and a pass
-// per joint would fetch every row (a cache miss each) once per joint. Returns the
+// unit on the way, read in one pass over the rows (the array is row-major). Returns the
 // offset of the first of those joints with a key unit_quat refuses (its track is not
 // whole), or count. first + count <= keys.joints.
 template <class Component>

@@ -9,7 +9,9 @@
 #include <gtest/gtest.h>
 
 #include <cstddef>
+#include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace rotinterp {
@@ -80,7 +82,7 @@ void expect_each_joint_its_own_curve(const char* method, std::size_t joints, boo
 
 TEST(KeyArrays, EveryJointGetsTheCurveOfItsOwnKeysInEitherLayout) {
   for (const char* method : {"slerp", "c2", "clamped"})  // slerp's joints are built together, the others one by one
-    for (std::size_t joints : {1, 3}) {
+    for (std::size_t joints : {1, 3, 11}) {  // 11: the one-by-one methods gather keys 8 joints a pass
       expect_each_joint_its_own_curve<double>(method, joints, false, false);
       expect_each_joint_its_own_curve<double>(method, joints, true, false);
       expect_each_joint_its_own_curve<double>(method, joints, false, true);
@@ -89,15 +91,23 @@ TEST(KeyArrays, EveryJointGetsTheCurveOfItsOwnKeysInEitherLayout) {
 }
 
 TEST(KeyArrays, AZeroKeyIsNamedByJointAndKey) {
-  std::vector<RotationTrack> tracks = tracks_on_one_grid(3);
-  std::vector<double> flat = flat_keys<double>(tracks, false);
-  for (int c = 0; c < 4; ++c) flat[4 * (5 * 3 + 2) + static_cast<std::size_t>(c)] = 0.0;  // joint 2, key 5
-  const double at = 0.5;
-  std::vector<double> out(3 * 4);
-  const Status s = interpolate_key_arrays(KeyArrays<double>{tracks[0].times.data(), flat.data(), 12, 3, false}, &at, 1,
-                                          KeyArraysCurve{"c2"}, out.data());
-  ASSERT_FALSE(s);
-  EXPECT_EQ(s.error(), "joint 2, key 5 is not a finite non-zero quaternion");
+  // Joint 2 of 3, and joint 9 of 11 (the second gather pass of the one-by-one methods):
+  // the first bad joint is named, though a later one is bad too.
+  for (const char* method : {"c2", "slerp"})
+    for (const auto& [joints, bad] : {std::pair<std::size_t, std::size_t>{3, 2}, {11, 9}}) {
+      std::vector<RotationTrack> tracks = tracks_on_one_grid(joints);
+      std::vector<double> flat = flat_keys<double>(tracks, false);
+      for (std::size_t c = 0; c < 4; ++c) {  // key 5 of `bad`; key 7 of the last joint, a later one
+        flat[4 * (5 * joints + bad) + c] = 0.0;
+        flat[4 * (7 * joints + joints - 1) + c] = std::numeric_limits<double>::quiet_NaN();
+      }
+      const double at = 0.5;
+      std::vector<double> out(joints * 4);
+      const Status s = interpolate_key_arrays(KeyArrays<double>{tracks[0].times.data(), flat.data(), 12, joints, false},
+                                              &at, 1, KeyArraysCurve{method}, out.data());
+      ASSERT_FALSE(s);
+      EXPECT_EQ(s.error(), "joint " + std::to_string(bad) + ", key 5 is not a finite non-zero quaternion") << method;
+    }
 }
 
 TEST(KeyArrays, ATrackTheMethodRefusesIsNamedByItsJointWhereThereAreSeveral) {

@@ -50,6 +50,27 @@ def test_float32_keys_are_the_joints_own_interpolators_bit_for_bit(method):
     assert ours.tobytes() == rotinterp.interpolate(t, q32.astype(np.float64), new_t, method).tobytes()
 
 
+def strided(a):
+    """The same values as a non-contiguous view: every other element of a twice-as-wide last axis."""
+    wide = np.zeros(a.shape[:-1] + (2 * a.shape[-1],), dtype=a.dtype)
+    wide[..., ::2] = a
+    return wide[..., ::2]
+
+
+@pytest.mark.parametrize("method", ["slerp", "c2"])
+def test_non_contiguous_and_float32_inputs_give_the_contiguous_float64_result_bit_for_bit(method):
+    t, q, new_t = clip_keys(9)
+    q = (q * 1.3).astype(np.float32).astype(np.float64)  # exactly float32 values, unnormalized
+    expected = rotinterp.interpolate(t, q, new_t, method).tobytes()
+    for keys in (strided(q), np.asfortranarray(q), q.astype(np.float32), strided(q.astype(np.float32)),
+                 np.asfortranarray(q.astype(np.float32))):
+        assert not keys.flags.c_contiguous or keys.dtype == np.float32
+        assert rotinterp.interpolate(strided(t), keys, strided(new_t), method).tobytes() == expected
+    one = rotinterp.interpolate(t, q[:, 1].copy(), new_t, method).tobytes()  # q[:, 1] is itself a strided view
+    assert rotinterp.interpolate(t, q[:, 1], new_t, method).tobytes() == one
+    assert rotinterp.interpolate(t, q.astype(np.float32)[:, 1], new_t, method).tobytes() == one
+
+
 @pytest.mark.parametrize("method", ["slerp", "c2"])
 def test_a_scipy_rotation_gives_the_result_of_its_quaternions_bit_for_bit(method):
     t, q, new_t = clip_keys(6)

@@ -19,8 +19,17 @@ namespace rotinterp {
 
 // The 4 components at p made unit into `unit`, in the same layout; false for a zero,
 // NaN or infinite quaternion. Scaled by the largest component first: no overflow or
-// underflow in the norm for finite components of any size (1e300 or 1e-320).
-bool unit_quat(const double* p, Eigen::Vector4d& unit);
+// underflow in the norm for finite components of any size (1e300 or 1e-320). Inline:
+// called once per key, it is most of the cost of gathering them (unit_tracks).
+inline bool unit_quat(const double* p, Eigen::Vector4d& unit) {
+  const Eigen::Map<const Eigen::Vector4d> q(p);
+  if (!q.allFinite()) return false;
+  const double largest = q.cwiseAbs().maxCoeff();
+  if (largest == 0.0) return false;
+  const Eigen::Vector4d scaled = q / largest;
+  unit = scaled / scaled.norm();
+  return true;
+}
 
 // The quaternion whose 4 components are at p, in either layout, and back.
 inline Quat quat_at(const double* p, bool scalar_first) {
@@ -44,10 +53,13 @@ struct KeyArrays {
   bool scalar_first = false;
 };
 
-// Joint j's track, each key made unit on the way; false at the first key unit_quat
-// refuses. j < keys.joints.
+// The tracks of joints [first, first + count) into tracks[0 .. count), each key made
+// unit on the way, read in one pass over the rows (the array is row-major). Returns the
+// offset of the first of those joints with a key unit_quat refuses (its track is not
+// whole), or count. first + count <= keys.joints.
 template <class Component>
-bool unit_track(const KeyArrays<Component>& keys, std::size_t j, RotationTrack& track);
+std::size_t unit_tracks(const KeyArrays<Component>& keys, std::size_t first, std::size_t count,
+                        RotationTrack* tracks);
 
 // What interpolate_key_arrays builds and writes.
 struct KeyArraysCurve {
@@ -63,7 +75,7 @@ struct KeyArraysCurve {
 // whose curve is nothing but their keys (slerp, nlerp) are built together and
 // written a block of times at a time, a row at once; the others one at a time, each
 // curve freed before the next is built (31 c2 curves alive at once cost 11 000 page
-// faults a call, more than the evaluation itself).
+// faults a call, more than the evaluation itself), their keys gathered 8 joints a pass.
 template <class Component>
 Status interpolate_key_arrays(const KeyArrays<Component>& keys, const double* at, std::size_t n,
                               const KeyArraysCurve& curve, double* out);

@@ -5,6 +5,7 @@
 #include "fbx_objects.h"
 #include "fbx_write_document.h"
 #include "fbx_write_takes.h"
+#include "rotinterp/io/files/kept_text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -165,25 +166,20 @@ FbxNode definitions(FbxNode defs, const std::map<std::string, std::size_t>& coun
 }  // namespace
 
 std::string FbxKept::text() const {
-  auto items = [](std::size_t n, const char* one, const char* many) {
-    return std::to_string(n) + " " + (n == 1 ? one : many);
-  };
   std::vector<std::string> parts;
-  if (meshes) parts.push_back(items(meshes, "mesh", "meshes"));
-  if (skins) parts.push_back(items(skins, "skin", "skins") + " (" + items(bones, "bone", "bones") + ")");
-  if (blend_shapes) parts.push_back(items(blend_shapes, "blend shape", "blend shapes"));
-  if (materials) parts.push_back(items(materials, "material", "materials"));
-  if (textures) parts.push_back(items(textures, "texture", "textures"));
-  if (embedded_media) parts.push_back(items(embedded_media, "embedded image", "embedded images"));
-  if (bind_poses) parts.push_back(items(bind_poses, "bind pose", "bind poses"));
-  std::string s;
-  for (const std::string& p : parts) s += (s.empty() ? "" : ", ") + p;
-  s = s.empty() ? "the source's nodes kept (no mesh)" : s + " kept";
+  if (meshes) parts.push_back(count_text(meshes, "mesh", "meshes"));
+  if (skins) parts.push_back(count_text(skins, "skin", "skins") + " (" + count_text(bones, "bone", "bones") + ")");
+  if (blend_shapes) parts.push_back(count_text(blend_shapes, "blend shape", "blend shapes"));
+  if (materials) parts.push_back(count_text(materials, "material", "materials"));
+  if (textures) parts.push_back(count_text(textures, "texture", "textures"));
+  if (embedded_media) parts.push_back(count_text(embedded_media, "embedded image", "embedded images"));
+  if (bind_poses) parts.push_back(count_text(bind_poses, "bind pose", "bind poses"));
+  std::string s = kept_text(parts);
   if (skins && !bind_poses) s += "; no bind pose (readers take the clusters' matrices)";
   if (ascii) s += "; written as ASCII FBX, as the source";
-  if (dropped_properties) s += "; dropped: " + items(dropped_properties, "animated property", "animated properties") + " other than rotation and translation";
-  if (dropped_connections) s += "; repaired: " + items(dropped_connections, "connection", "connections") + " to missing objects dropped";
-  if (dropped_clusters) s += "; repaired: " + items(dropped_clusters, "cluster", "clusters") + " linked to no bone dropped";
+  if (dropped_properties) s += "; dropped: " + count_text(dropped_properties, "animated property", "animated properties") + " other than rotation and translation";
+  if (dropped_connections) s += "; repaired: " + count_text(dropped_connections, "connection", "connections") + " to missing objects dropped";
+  if (dropped_clusters) s += "; repaired: " + count_text(dropped_clusters, "cluster", "clusters") + " linked to no bone dropped";
   return s;
 }
 

@@ -6,6 +6,7 @@
 #include "gltf_document.h"
 #include "gltf_repack.h"
 #include "rotinterp/io/files/input_file.h"
+#include "rotinterp/io/files/kept_text.h"
 #include "rotinterp/io/gltf/gltf_source.h"
 
 #include <algorithm>
@@ -145,20 +146,17 @@ std::size_t count_of(const json& doc, const char* array) { return doc.contains(a
 }  // namespace
 
 std::string GltfKept::text() const {
-  auto items = [](std::size_t n, const char* one, const char* many) { return std::to_string(n) + " " + (n == 1 ? one : many); };
   std::vector<std::string> parts;
-  if (meshes) parts.push_back(items(meshes, "mesh", "meshes"));
-  if (skins) parts.push_back(items(skins, "skin", "skins") + " (" + items(joints, "joint", "joints") + ")");
-  if (materials) parts.push_back(items(materials, "material", "materials"));
-  if (textures) parts.push_back(items(textures, "texture", "textures"));
-  if (images) parts.push_back(items(images, "image", "images"));
-  if (cameras) parts.push_back(items(cameras, "camera", "cameras"));
-  std::string s;
-  for (const std::string& p : parts) s += (s.empty() ? "" : ", ") + p;
-  s = s.empty() ? "the source's nodes kept (no mesh)" : s + " kept";
-  if (embedded_images) s += "; " + items(embedded_images, "image", "images") + " embedded from files beside the source";
+  if (meshes) parts.push_back(count_text(meshes, "mesh", "meshes"));
+  if (skins) parts.push_back(count_text(skins, "skin", "skins") + " (" + count_text(joints, "joint", "joints") + ")");
+  if (materials) parts.push_back(count_text(materials, "material", "materials"));
+  if (textures) parts.push_back(count_text(textures, "texture", "textures"));
+  if (images) parts.push_back(count_text(images, "image", "images"));
+  if (cameras) parts.push_back(count_text(cameras, "camera", "cameras"));
+  std::string s = kept_text(parts);
+  if (embedded_images) s += "; " + count_text(embedded_images, "image", "images") + " embedded from files beside the source";
   if (dropped_channels)
-    s += "; dropped: " + items(dropped_channels, "animated scale or morph-weight channel", "animated scale or morph-weight channels");
+    s += "; dropped: " + count_text(dropped_channels, "animated scale or morph-weight channel", "animated scale or morph-weight channels");
   return s;
 }
 

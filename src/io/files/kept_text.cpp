@@ -1,0 +1,15 @@
+#include "rotinterp/io/files/kept_text.h"
+
+namespace rotinterp {
+
+std::string count_text(std::size_t n, const char* one, const char* many) {
+  return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+std::string kept_text(const std::vector<std::string>& parts) {
+  std::string s;
+  for (const std::string& p : parts) s += (s.empty() ? "" : ", ") + p;
+  return s.empty() ? "the source's nodes kept (no mesh)" : s + " kept";
+}
+
+}  // namespace rotinterp

@@ -153,7 +153,7 @@ Status write_clip(const Clip& clip, const std::filesystem::path& path, const Wri
   const std::string ext = lower_extension(path);
   const FormatInfo* known = format_of(path);
   const FormatId id = known && known->writes ? known->id : FormatId::dae;  // dae: assimp's exporters below
-  if (id == FormatId::fbx || id == FormatId::glb || id == FormatId::gltf)
+  if (format_info(id).meshes)
     if (std::optional<Status> written = write_character({clip}, path, options)) return *written;
   if (can_write_format(path)) warn_meshes_lost(clip, label, options);
   if (id == FormatId::bvh) {

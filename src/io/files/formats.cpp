@@ -9,9 +9,9 @@ const std::vector<FormatInfo>& formats() {
   // id, name, title, reads, writes, takes, curves, bvh_layout, meshes, frames_only, unit
   static const std::vector<FormatInfo> all = {
       {FormatId::bvh, "bvh", "BVH", true, true, false, false, true, false, true, "inferred"},
-      {FormatId::fbx, "fbx", "FBX", true, true, true, true, true, false, false, "declared"},
-      {FormatId::glb, "glb", "GLB", true, true, true, true, false, false, false, "metres"},
-      {FormatId::gltf, "gltf", "glTF", true, true, true, true, false, false, false, "metres"},
+      {FormatId::fbx, "fbx", "FBX", true, true, true, true, true, true, false, "declared"},
+      {FormatId::glb, "glb", "GLB", true, true, true, true, false, true, false, "metres"},
+      {FormatId::gltf, "gltf", "glTF", true, true, true, true, false, true, false, "metres"},
       {FormatId::dae, "dae", "Collada", true, true, false, false, false, false, false, "metres"},
   };
   return all;

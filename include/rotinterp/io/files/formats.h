@@ -25,7 +25,9 @@ struct FormatInfo {
   bool takes = false;      // several takes in one file (write_clips)
   bool curves = false;     // sparse keys with their interpolation (reduce -o, -m source)
   bool bvh_layout = false; // a BVH source's channel layout, read back as written
-  bool meshes = false;     // the source's meshes and skins (none yet: skeleton and motion only)
+  // A character's meshes, skins and materials, from a source of its own kind (FBX from
+  // FBX 7, glTF/GLB from glTF): the source with only its animation replaced (io/write.h).
+  bool meshes = false;
   // Stores a value per frame at one rate (BVH): a clip with sparse keys must be
   // resampled on its frame grid before it is written.
   bool frames_only = false;

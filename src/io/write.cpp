@@ -7,6 +7,7 @@
 #include "rotinterp/io/files/formats.h"
 #include "rotinterp/io/bvh/bvh.h"
 #include "rotinterp/io/import/import.h"
+#include "rotinterp/io/info.h"
 #include "rotinterp/io/fbx/fbx_character.h"
 #include "rotinterp/io/fbx/fbx_write.h"
 #include "rotinterp/io/gltf/gltf_character.h"
@@ -121,6 +122,21 @@ std::optional<Status> write_character(const std::vector<Clip>& takes, const std:
     if (!written && written.error_kind() != file_error::cannot_write) return not_kept(written.error());
     if (!written) return Status(written.failure());
     kept(written->text());
+    return Status(Ok{});
+  }
+  if (is_gltf(output) && output->meshes) {  // any other character (FBX, Collada) as glTF: its body read by assimp
+    ReadOptions read;
+    read.read_body = true;
+    const Result<ClipFileInfo> source_file = inspect_clip(options.source, read);
+    if (!source_file || !source_file->body) return not_kept(source_file ? "assimp found no body in it" : source_file.error());
+    std::vector<const Clip*> pointers;
+    for (const Clip& c : takes) pointers.push_back(&c);
+    auto written = write_gltf(pointers, path, output->id == FormatId::glb, gltf_keys(options), *source_file->body);
+    if (!written && written.error_kind() != file_error::cannot_write) return not_kept(written.error());
+    if (!written) return Status(written.failure());
+    for (const std::string& note : written->notes)
+      if (options.on_warning) options.on_warning(path.string() + ": " + note);
+    kept(written->kept);
     return Status(Ok{});
   }
   return std::nullopt;

@@ -34,6 +34,7 @@ std::vector<BlenderCharacter> blender_characters(const std::vector<std::pair<std
                           m.at("groups").get<std::vector<std::string>>()});
     for (const auto& take : r.at("takes")) c.takes.insert(take.get<std::string>());
     c.actions = r.at("actions").get<std::size_t>();
+    c.images = r.at("images").get<std::size_t>();
     for (const auto& [take, poses] : r.at("poses").items())
       for (const auto& p : poses)
         c.poses[take].push_back({p.at("time").get<double>(), point(p.at("min")), point(p.at("max")), point(p.at("centroid"))});
@@ -88,6 +89,7 @@ std::vector<BlenderCharacter> expect_same_character(const std::vector<CharacterC
     const std::string what = cases[i].source + " (" + cases[i].command + ")";
     EXPECT_FALSE(source.meshes.empty()) << what;
     EXPECT_EQ(ours.meshes, source.meshes) << what;
+    EXPECT_EQ(ours.images, source.images) << what;
     const std::set<std::string> takes = cases[i].take.empty() ? source.takes : std::set<std::string>{cases[i].take};
     EXPECT_EQ(ours.takes, takes) << what;
     const PoseDeviation d = pose_deviation(ours, source);

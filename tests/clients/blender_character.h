@@ -35,6 +35,7 @@ struct BlenderCharacter {
   std::vector<BlenderMesh> meshes;
   std::set<std::string> takes;  // the take of each action (blender_character.py: its name without "OBJECT|")
   std::size_t actions = 0;  // every action Blender made (one per take and object it moves)
+  std::size_t images = 0;   // images with pixels (embedded, or found beside the file)
   std::map<std::string, std::vector<BlenderPose>> poses;  // per take: first, middle, last
 };
 

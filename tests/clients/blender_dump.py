@@ -6,16 +6,15 @@
 # every armature and empty object (FBX Nulls that Blender did not make bones);
 # every action's name, and where there are several (takes), each one's keys.
 # A BVH is imported at global_scale 0.01, centimetres (`FILE@SCALE` sets another).
-import builtins
 import json
+import os
 import sys
 
 import bpy
 from mathutils import Matrix, Vector
 
-# Blender 3.4's BVH importer opens files in mode 'rU', which Python 3.11 refuses.
-_open = builtins.open
-builtins.open = lambda file, mode="r", *a, **k: _open(file, mode.replace("U", ""), *a, **k)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import blender_compat  # noqa: E402,F401  (Blender 3.4 on Python 3.11 and numpy 1.24)
 
 
 

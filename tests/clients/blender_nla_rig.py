@@ -4,7 +4,8 @@
 # it as Blender users do: OUT_STEM.fbx with every action baked as a take
 # (bake_anim_use_all_actions) and OUT_STEM.glb with an animation per NLA track.
 # `skinned`: a character, the armature deforming a mesh of its own (a tube around the
-# bones, a vertex group per bone, weights blended along it, one material).
+# bones, a vertex group per bone, weights blended along it, one material whose base
+# colour is a PNG texture, embedded in the FBX).
 import math, sys
 import bpy
 args = sys.argv[sys.argv.index("--") + 1:]
@@ -49,6 +50,22 @@ def make_action(name, first, last, amp):
 
 
 
+def textured_material(png):
+    """A material whose base colour is a 16×16 checker PNG saved at `png`."""
+    image = bpy.data.images.new("Checker", 16, 16)
+    image.pixels = [c for i in range(256) for c in ((1.0, 0.8, 0.2, 1.0) if (i // 16 + i) % 2 else (0.1, 0.3, 0.9, 1.0))]
+    image.filepath_raw = png
+    image.file_format = "PNG"
+    image.save()
+    material = bpy.data.materials.new("Skin")
+    material.use_nodes = True
+    texture = material.node_tree.nodes.new("ShaderNodeTexImage")
+    texture.image = image
+    bsdf = material.node_tree.nodes["Principled BSDF"]
+    material.node_tree.links.new(texture.outputs["Color"], bsdf.inputs["Base Color"])
+    return material
+
+
 def add_skinned_tube(bone_names, rings=13, sides=8, radius=0.15, length=1.5):
     """A tube along the bones (Z), each vertex weighted to the bones nearest it."""
     verts = [(radius * math.cos(2 * math.pi * s / sides), radius * math.sin(2 * math.pi * s / sides),
@@ -57,7 +74,11 @@ def add_skinned_tube(bone_names, rings=13, sides=8, radius=0.15, length=1.5):
              for r in range(rings - 1) for s in range(sides)]
     mesh = bpy.data.meshes.new("Body")
     mesh.from_pydata(verts, [], faces)
-    mesh.materials.append(bpy.data.materials.new("Skin"))
+    uv = mesh.uv_layers.new(name="UVMap")
+    for loop in mesh.loops:
+        x, y, z = verts[loop.vertex_index]
+        uv.data[loop.index].uv = (0.5 + math.atan2(y, x) / (2 * math.pi), z / length)
+    mesh.materials.append(textured_material(out + "_skin.png"))
     body = bpy.data.objects.new("Body", mesh)
     scene.collection.objects.link(body)
     body.parent = obj
@@ -78,5 +99,5 @@ make_action("Walk", 1, 21, 0.6)
 make_action("Wave", 10, 45, 1.2)
 bpy.ops.object.mode_set(mode="OBJECT")
 bpy.ops.export_scene.fbx(filepath=out + ".fbx", bake_anim=True, bake_anim_use_all_actions=True,
-                         bake_anim_use_nla_strips=False, add_leaf_bones=False)
+                         bake_anim_use_nla_strips=False, add_leaf_bones=False, path_mode="COPY", embed_textures=True)
 bpy.ops.export_scene.gltf(filepath=out + ".glb", export_format="GLB", export_nla_strips=True)

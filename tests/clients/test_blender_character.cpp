@@ -51,6 +51,23 @@ TEST(BlenderCharacter, EveryTakeOfABlenderMadeCharacterDeformsAsItsSource) {
                         1.0 / 6.0, dir.path(), ".fbx");
 }
 
+// FBX in, GLB out: the body comes through assimp (meshes, skins, materials, the rig's
+// embedded PNG) and Blender's glTF importer deforms it as its FBX importer deforms
+// the source. Across formats a mesh compares by its distinct positions and triangles
+// (blender_character.py), a take by its name.
+TEST(BlenderCharacter, FbxCharactersWrittenAsGlbDeformAsTheirSources) {
+  const TempDir dir;
+  const std::string rig = make_blender_rig(dir.path(), true) + ".fbx";
+  const std::string reduce = "reduce --tolerance 0.05deg,0.05mm";
+  expect_same_character({{"fbx/ufbx_maya_kenney_character_7700_binary.fbx", "resample --fps 30", ""},
+                         {"fbx/digitalrune_Dude.fbx", "resample --fps 30", ""},
+                         {"fbx/digitalrune_Marine_Run.fbx", "resample --fps 30", ""},
+                         {"fbx/digitalrune_Dude.fbx", reduce, ""},
+                         {rig, "resample --anim all --fps 30", ""},
+                         {rig, reduce + " --anim 1", "Rig|Wave"}},
+                        1.0 / 6.0, dir.path(), ".glb");
+}
+
 // An inconsistent source, made from Marine_Run in memory: one with no bind pose, one
 // whose first cluster lost its bone. The summary states each (a repair, or what
 // readers do instead), and Blender opens both: the first deforms as the source, the

@@ -53,6 +53,13 @@ ClipFileInfo every_field_set() {
   set_file_rate_hz(c, 23.976);
   c.unit = {0.01, UnitOrigin::declared, "declared by the file: FBX UnitScaleFactor 1"};
   c.source_format = "bvh";
+  CharacterBody& body = info.body.emplace();
+  BodyPart part{{0, 0, -0.0f, 1, 0, 0, 0, 1, 0}, {0, 0, 1}, {}, {1, 1, 1, 0.5f}, {0, 1, 2}, 0, {}};
+  part.bones.push_back({"\xE8\x82\xA9", RowMajor4{1, 0, 0, 2, 0, 1, 0, -0.0, 0, 0, 1, 1e-310, 0, 0, 0, 1}, {0, 2}, {0.5f, 1.0f}});
+  body.meshes.push_back({"Body", RowMajor4{}, "Hips", {part, BodyPart{}}});
+  body.materials = {{"Skin", {0.5, 0.25, 1.0, 0.75}, 0}, {"", {1, 1, 1, 1}, -1}};
+  body.images = {{"skin.png", "image/png", std::string("\x89PNG\0\0", 6)}};
+  body.notes = {"texture 'x.tga' is not beside the file"};
   return info;
 }
 
@@ -64,6 +71,9 @@ TEST(ClipWire, EveryFieldSurvivesTheRoundTripBitForBit) {
   ASSERT_TRUE(back) << back.error();
   EXPECT_FALSE(back->error);
   expect_identical(back->info, out.info, "round trip");
+  ASSERT_TRUE(back->info.body);  // and the body's fields, bit for bit through the re-encoding below
+  EXPECT_EQ(back->info.body->meshes.at(0).parts.at(0).bones.at(0).weights, (std::vector<float>{0.5f, 1.0f}));
+  EXPECT_EQ(back->info.body->images.at(0).bytes, out.info.body->images[0].bytes);
   EXPECT_EQ(wire::encode(*back), bytes);
 }
 

@@ -277,6 +277,24 @@ TEST(GltfCharacter, AJointWithNoNodeOfItsNameWritesTheSkeletonAloneAndSaysWhy) {
   EXPECT_FALSE(read_glb(dir / "out.glb").first.contains("meshes"));
 }
 
+// The source declares KHR_animation_pointer for its animations, which ours replace:
+// the declaration goes with them; every other extension stays declared.
+TEST(GltfCharacter, AnExtensionOnlyTheReplacedAnimationsUsedIsNoLongerDeclared) {
+  const test::TempDir dir;
+  write_character(dir);
+  const Clip walk = read_take(dir / "character.gltf", "Walk");
+  json doc = json::parse(test::read_text(dir / "character.gltf"));
+  doc["extensionsUsed"] = {"KHR_animation_pointer", "KHR_materials_emissive_strength"};
+  test::write_text(dir / "character.gltf", doc.dump());
+  const Written w = write_from({walk}, dir / "character.gltf", dir / "out.glb");
+  ASSERT_TRUE(w.status) << w.status.error();
+  EXPECT_EQ(read_glb(dir / "out.glb").first["extensionsUsed"], json({"KHR_materials_emissive_strength"}));
+  doc["extensionsUsed"] = {"KHR_animation_pointer"};
+  test::write_text(dir / "character.gltf", doc.dump());
+  ASSERT_TRUE(write_from({walk}, dir / "character.gltf", dir / "out.glb").status);
+  EXPECT_FALSE(read_glb(dir / "out.glb").first.contains("extensionsUsed"));
+}
+
 TEST(GltfCharacter, WhatCannotBeKeptIsSaidInOneLineAndTheSkeletonIsWritten) {
   // A joint node stored as a matrix (no animation may target it); a buffer view with
   // an extension (it would point into the buffers we rewrite).

@@ -160,6 +160,18 @@ std::string GltfKept::text() const {
   return s;
 }
 
+// The source's declaration of an extension only its animations used (they are
+// replaced, ours use none): dropped, so that no reader is told of an extension the
+// file no longer uses.
+void undeclare_animation_extensions(json& doc) {
+  for (const char* list : {"extensionsUsed", "extensionsRequired"}) {
+    if (!doc.contains(list) || !doc[list].is_array()) continue;
+    json& names = doc[list];
+    names.erase(std::remove(names.begin(), names.end(), json("KHR_animation_pointer")), names.end());
+    if (names.empty()) doc.erase(list);
+  }
+}
+
 Result<GltfKept> write_gltf_character(const std::vector<const Clip*>& takes, const std::filesystem::path& source,
                                       const std::filesystem::path& path, bool binary, const GltfKeys& keys) {
   const std::string label = source.string();
@@ -188,6 +200,7 @@ Result<GltfKept> write_gltf_character(const std::vector<const Clip*>& takes, con
       animations.push_back(std::move(*a));
     }
     doc["animations"] = std::move(animations);
+    undeclare_animation_extensions(doc);
   } catch (const std::exception& e) {
     return make_error(label + ": " + e.what());
   }

@@ -1,6 +1,7 @@
 // Our glTF 2.0 writer: nodes, skin and animation samplers as .glb or .gltf with its buffer.
 #include "rotinterp/io/gltf/gltf_write.h"
 
+#include "gltf_body.h"
 #include "gltf_document.h"
 #include "rotinterp/io/files/atomic_file.h"
 #include "rotinterp/io/files/json_text.h"
@@ -35,6 +36,7 @@ std::uint64_t fnv1a(const std::string& bytes) {
 struct Document {
   nlohmann::json json;
   std::string buffer;
+  BodyKept body;
 };
 
 // Inverse bind matrices: the inverse of each joint's world rest transform, column-major,
@@ -55,7 +57,7 @@ std::vector<double> rest_world_inverse(const Skeleton& sk, double metres) {
 
 // The document of the takes' skeleton (the first's: every take has it) with one
 // animation per take, in order.
-Result<Document> build(const std::vector<const Clip*>& takes, const GltfKeys& keys) {
+Result<Document> build(const std::vector<const Clip*>& takes, const GltfKeys& keys, const CharacterBody* body = nullptr) {
   for (const Clip* take : takes)
     if (Status s = take->validate(); !s)
       return s.failure(takes.size() > 1 ? "take '" + take->name + "': cannot write an invalid clip: " : "cannot write an invalid clip: ");
@@ -112,7 +114,15 @@ Result<Document> build(const std::vector<const Clip*>& takes, const GltfKeys& ke
       {"animations", animations},
       {"bufferViews", b.views},
       {"accessors", b.accessors}};
-  return Document{std::move(doc), std::move(b.bin)};
+  BodyKept kept;
+  if (body) {
+    Result<BodyKept> added = add_body(b, doc, sk, metres, *body);
+    if (!added) return added.failure();
+    kept = std::move(*added);
+    doc["bufferViews"] = b.views;
+    doc["accessors"] = b.accessors;
+  }
+  return Document{std::move(doc), std::move(b.bin), std::move(kept)};
 }
 
 // The buffer an existing .gltf at `path` names, when it is one this writer named
@@ -200,6 +210,15 @@ Status write_gltf(const std::vector<const Clip*>& takes, const std::filesystem::
   Result<gltf::Document> doc = gltf::build(takes, keys);
   if (!doc) return doc.failure(path.string() + ": ");
   return gltf::write_document(std::move(doc->json), std::move(doc->buffer), path, binary);
+}
+
+Result<GltfBodyWritten> write_gltf(const std::vector<const Clip*>& takes, const std::filesystem::path& path, bool binary,
+                                   const GltfKeys& keys, const CharacterBody& body) {
+  if (takes.empty()) return make_error(path.string() + ": no takes to write");
+  Result<gltf::Document> doc = gltf::build(takes, keys, &body);
+  if (!doc) return doc.failure(path.string() + ": ");
+  if (Status s = gltf::write_document(std::move(doc->json), std::move(doc->buffer), path, binary); !s) return s.failure();
+  return GltfBodyWritten{doc->body.text(), std::move(doc->body.notes)};
 }
 
 }  // namespace rotinterp

@@ -11,6 +11,7 @@
 #include "rotinterp/io/fbx/fbx_curves.h"
 #include "rotinterp/io/fbx/fbx_source.h"
 #include "rotinterp/io/gltf/gltf_source.h"
+#include "scene_body.h"
 #include "scene_parts.h"
 #include "scene_to_clip.h"
 #include "rotinterp/io/files/file_errors.h"
@@ -152,6 +153,7 @@ Status read_with_assimp(const fs::path& path, const ReadOptions& options, ClipFi
   Status filled = scene_to_clip(scene, anim, summary.ticks_per_second, fbx ? std::optional(anim->mDuration) : std::nullopt,
                                 info.clip, info.folded_helpers, warn, label);
   if (!filled) return make_error(filled.error(), file_error::unreadable);
+  if (options.read_body) info.body = scene_body(scene, info.clip, path);
   return Ok{};
 }
 

@@ -1,6 +1,7 @@
 // The reader's private wire format (clip_wire.h): a read's outcome, clip and FBX
 // curves field by field; arrays as a count followed by their items (wire_bytes.h).
 #include "clip_wire.h"
+#include "body_wire.h"
 #include "wire_bytes.h"
 
 #include "rotinterp/io/files/file_errors.h"
@@ -16,7 +17,7 @@ namespace rotinterp::wire {
 namespace {
 
 // Also the format's version: bytes from another build fail here, not in a field.
-constexpr std::string_view kMagic = "rotinterp-clip-wire-6";
+constexpr std::string_view kMagic = "rotinterp-clip-wire-7";
 
 // Smallest encoded sizes, for Reader::count.
 constexpr std::size_t kCount = 8, kDouble = 8, kVec3 = 3 * kDouble, kQuat = 4 * kDouble;
@@ -319,6 +320,8 @@ std::string encode(const ReadOutcome& outcome) {
   w.u64(info.folded_helpers);
   w.u8(info.curves.has_value());
   if (info.curves) put(w, *info.curves);
+  w.u8(info.body.has_value());
+  if (info.body) put(w, *info.body);
   w.str(info.holds);
   return w.take();
 }
@@ -353,6 +356,7 @@ Result<ReadOutcome> decode(std::string_view bytes) {
   for (std::string& s : info.warnings) s = r.str();
   info.folded_helpers = r.size();
   if (r.flag()) get(r, info.curves.emplace());
+  if (r.flag()) get(r, info.body.emplace());
   info.holds = r.str();
   if (r.failed()) return make_error("clip record cut short or garbled");
   if (!r.at_end()) return make_error("clip record followed by stray bytes");

@@ -35,6 +35,7 @@ std::string encode_request(const std::filesystem::path& path, const ReadOptions&
   put_field(body, options.read_curves ? "1" : "0");
   put_field(body, options.unit ? exact_text(*options.unit) : std::string());
   put_field(body, options.allow_external_files ? "1" : "0");
+  put_field(body, options.read_body ? "1" : "0");
   std::string out;
   put_u32(out, static_cast<std::uint32_t>(body.size()));
   return out + body;
@@ -51,7 +52,7 @@ std::optional<Request> decode_request(std::string_view body) {
     fields.emplace_back(body.substr(0, n));
     body.remove_prefix(n);
   }
-  if (fields.size() != 7) return std::nullopt;
+  if (fields.size() != 8) return std::nullopt;
   Request r;
   r.path = fields[0];
   r.options.animation = fields[1];
@@ -60,6 +61,7 @@ std::optional<Request> decode_request(std::string_view body) {
   r.options.read_curves = fields[4] == "1";
   if (!fields[5].empty()) r.options.unit = std::strtod(fields[5].c_str(), nullptr);
   r.options.allow_external_files = fields[6] == "1";
+  r.options.read_body = fields[7] == "1";
   return r;
 }
 

@@ -16,7 +16,7 @@
 namespace rotinterp::detail::import_protocol {
 
 // The importer's first argument: a mismatch means the two come from different builds.
-constexpr std::string_view kVersion = "rotinterp-import-4";
+constexpr std::string_view kVersion = "rotinterp-import-5";
 
 // A request: its body's length (uint32), then the body.
 constexpr std::size_t kRequestHeader = sizeof(std::uint32_t);

@@ -11,6 +11,7 @@
 #include <limits>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace rotinterp::wire {
 
@@ -34,6 +35,12 @@ class Writer {
     f64(q.z());
   }
   void raw(const void* p, std::size_t n) { bytes_.append(static_cast<const char*>(p), n); }
+  // A vector of plain values, bit for bit: its count, then its bytes.
+  template <class T>
+  void values(const std::vector<T>& v) {
+    u64(v.size());
+    raw(v.data(), v.size() * sizeof(T));
+  }
   std::string take() { return std::move(bytes_); }
 
  private:
@@ -113,6 +120,11 @@ class Reader {
     Vec3 v;
     for (int i = 0; i < 3; ++i) v[i] = f64();
     return v;
+  }
+  template <class T>
+  void values(std::vector<T>& v) {
+    v.resize(count(sizeof(T)));
+    if (!v.empty()) raw(v.data(), v.size() * sizeof(T));
   }
   Quat quat() {
     const double w = f64();

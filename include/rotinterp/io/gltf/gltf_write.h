@@ -15,8 +15,10 @@
 
 #include "rotinterp/clip/clip.h"
 #include "rotinterp/core/result.h"
+#include "rotinterp/io/record/character_body.h"
 
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace rotinterp {
@@ -34,5 +36,16 @@ Status write_gltf(const Clip& clip, const std::filesystem::path& path, bool bina
 // every take has it): one animation per take, named by Clip::name, in order.
 Status write_gltf(const std::vector<const Clip*>& takes, const std::filesystem::path& path, bool binary,
                   const GltfKeys& keys = {});
+
+// `takes` with a character's body (read with ReadOptions::read_body from the file
+// they were read from): its meshes, skins over the takes' joints, materials and
+// images written too (the body's rules: src/io/gltf/gltf_body.h). What passed
+// through, for the summary line, and what did not, one line each.
+struct GltfBodyWritten {
+  std::string kept;                // "1 mesh, 1 skin (32 bones), 1 material kept"
+  std::vector<std::string> notes;  // "mesh 'him': 12 vertices have more than 4 weights; …"
+};
+Result<GltfBodyWritten> write_gltf(const std::vector<const Clip*>& takes, const std::filesystem::path& path, bool binary,
+                                   const GltfKeys& keys, const CharacterBody& body);
 
 }  // namespace rotinterp

@@ -6,6 +6,7 @@
 #include "rotinterp/clip/clip.h"
 #include "rotinterp/core/result.h"
 #include "rotinterp/io/fbx/fbx_curves.h"
+#include "rotinterp/io/record/character_body.h"
 
 #include <cstddef>
 #include <optional>
@@ -46,6 +47,9 @@ struct ClipFileInfo {
   // FBX with ReadOptions::read_curves: the curves as the file stores them, read by
   // our own FBX reader (io/fbx/fbx_curves.h); empty otherwise.
   std::optional<FbxAnimation> curves;
+  // With ReadOptions::read_body, from a file assimp reads: the character's body
+  // (character_body.h); empty otherwise.
+  std::optional<CharacterBody> body;
   // A file without animation, which a read refuses (file_error::no_animation): what it
   // holds ("1 mesh, 2 nodes: RootNode, Cube"), for info; empty otherwise.
   std::string holds;

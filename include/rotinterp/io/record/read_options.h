@@ -42,6 +42,10 @@ struct ReadOptions {
   // read (ClipFileInfo::curves; `info --curves`). A malformed curve then refuses the
   // file (file_error::unreadable). Off by default.
   bool read_curves = false;
+  // Also read the character's body — meshes, skins, materials and their images —
+  // with assimp (ClipFileInfo::body), for a writer that keeps it in another format
+  // (io/write.h: an FBX character written as GLB). Off by default.
+  bool read_body = false;
   // glTF: read buffer files that lie outside the file's folder (a uri with `..`, an
   // absolute path, or a link leading out). Off by default: a file from elsewhere
   // should not make rotinterp read /etc or a home folder (docs/limits.md).

@@ -18,11 +18,14 @@ namespace rotinterp::test {
 namespace {
 
 TEST(BlenderCharacter, ResampledFbxCharactersDeformAsTheirSources) {
-  // 24 Hz and 30 Hz sources at 30 Hz: every 1/6 s is a key of both.
+  // 24 Hz and 30 Hz sources at 30 Hz: every 1/6 s is a key of both. XboxAvatars
+  // (15 meshes) states no CustomFrameRate: the one we add must be labelled as
+  // Blender's importer asserts ("Number"), or it refuses the file.
   const TempDir dir;
   expect_same_character({{"fbx/ufbx_maya_kenney_character_7700_binary.fbx", "resample --fps 30", ""},
                          {"fbx/digitalrune_Dude.fbx", "resample --fps 30", ""},
-                         {"fbx/digitalrune_Marine_Run.fbx", "resample --fps 30", ""}},
+                         {"fbx/digitalrune_Marine_Run.fbx", "resample --fps 30", ""},
+                         {"fbx/digitalrune_XboxAvatars_Jump.fbx", "resample --fps 30", ""}},
                         1.0 / 6.0, dir.path(), ".fbx");
 }
 
@@ -69,9 +72,10 @@ TEST(BlenderCharacter, FbxCharactersWrittenAsGlbDeformAsTheirSources) {
 }
 
 // An inconsistent source, made from Marine_Run in memory: one with no bind pose, one
-// whose first cluster lost its bone. The summary states each (a repair, or what
-// readers do instead), and Blender opens both: the first deforms as the source, the
-// second has the same mesh with that bone's vertex group gone. assimp reads both.
+// whose first cluster lost its bone, one whose first cluster's weights are halved.
+// The summary states each (a repair, or what readers do instead), and Blender opens
+// all three: the first deforms as the source, the second has the same mesh with that
+// bone's vertex group gone, the third the same mesh. assimp reads all three.
 TEST(BlenderCharacter, AnInconsistentCharacterIsRepairedOrSaidAndBlenderOpensIt) {
   const TempDir dir;
   const std::string source = (kData / "fbx/digitalrune_Marine_Run.fbx").string();
@@ -114,7 +118,19 @@ TEST(BlenderCharacter, AnInconsistentCharacterIsRepairedOrSaidAndBlenderOpensIt)
   links.erase(bone_link);
   const std::string unboned = write(*lost_bone, "lost_bone.fbx", "1 cluster linked to no bone dropped");
 
-  const std::vector<BlenderCharacter> imports = blender_characters({{source, unposed}, {source, unboned}}, 1.0 / 6.0, dir.path());
+  Result<FbxCharacter> light = read_fbx_character(source);  // one cluster's weights halved
+  ASSERT_TRUE(light) << light.error();
+  for (FbxNode& o : nodes(*light, "Objects"))
+    if (o.name == "Deformer" && o.properties.at(2).text == "Cluster") {
+      for (FbxNode& c : o.children)
+        if (c.name == "Weights")
+          for (double& w : c.properties.at(0).numbers) w *= 0.5;
+      break;
+    }
+  const std::string halved = write(*light, "halved_weights.fbx", "skin weights do not sum to 1 (kept as the source has them");
+
+  const std::vector<BlenderCharacter> imports =
+      blender_characters({{source, unposed}, {source, unboned}, {source, halved}}, 1.0 / 6.0, dir.path());
   const BlenderCharacter& original = imports[0];
   ASSERT_EQ(original.meshes.size(), 1u);
   EXPECT_EQ(imports[1].meshes, original.meshes);
@@ -126,6 +142,7 @@ TEST(BlenderCharacter, AnInconsistentCharacterIsRepairedOrSaidAndBlenderOpensIt)
   without.groups.erase(std::remove(without.groups.begin(), without.groups.end(), lost), without.groups.end());
   EXPECT_EQ(without.groups.size() + 1, original.meshes.front().groups.size()) << lost;
   EXPECT_EQ(imports[3].meshes.front(), without);
+  EXPECT_EQ(imports[5].meshes, original.meshes);  // opened, the same mesh
   std::printf("[ blender ] no bind pose: worst %.4g mm of %.4g m; cluster of %s dropped: %zu vertex groups of %zu\n",
               d.distance * 1000, d.height, lost.c_str(), imports[3].meshes.front().groups.size(),
               original.meshes.front().groups.size());

@@ -50,13 +50,16 @@ FbxProperty text(std::string s) {
   return p;
 }
 
-// Sets entry `name`'s value (the fifth field), adding the entry where it is missing.
+// Sets entry `name`'s value (the fifth field), adding the entry where it is missing,
+// labelled as FBX SDK files label its type: Blender's importer asserts a double's
+// label is "Number" (a CustomFrameRate labelled "" made it refuse the file).
 void set_entry(FbxNode& node, std::string_view name, std::string_view type, const FbxProperty& value) {
   FbxNode* p = entry(node, name);
   if (!p) {
     auto block = std::find_if(node.children.begin(), node.children.end(), [](const FbxNode& c) { return c.name == "Properties70"; });
     if (block == node.children.end()) block = node.children.insert(node.children.end(), FbxNode{"Properties70", {}, {}});
-    block->children.push_back(FbxNode{"P", {text(std::string(name)), text(std::string(type)), text(""), text("")}, {}});
+    const std::string label = type == "double" ? "Number" : type == "KTime" ? "Time" : "";
+    block->children.push_back(FbxNode{"P", {text(std::string(name)), text(std::string(type)), text(label), text("")}, {}});
     p = &block->children.back();
   }
   p->properties.resize(5);
@@ -66,8 +69,30 @@ void set_entry(FbxNode& node, std::string_view name, std::string_view type, cons
 // What the source's objects are, and which of them go.
 struct Survey {
   std::set<std::int64_t> ids, removed;
-  std::size_t dropped_clusters = 0, dropped_properties = 0;
+  std::size_t dropped_clusters = 0, dropped_properties = 0, unnormalized_vertices = 0;
 };
+
+// Weights of a control point summing to within this of 1 are normalized.
+constexpr double kWeightSumTolerance = 1e-3;
+
+// Control points whose clusters' weights (per skin) sum to more than 0 but not to 1.
+std::size_t unnormalized_vertices(const fbx::Objects& objects, const std::set<std::int64_t>& removed) {
+  std::map<std::int64_t, std::map<std::int64_t, double>> sums;  // skin → control point → weight
+  for (const FbxNode* o : objects.in_order) {
+    const std::int64_t id = fbx::object_id(*o);
+    if (o->name != "Deformer" || fbx::object_subclass(*o) != "Cluster" || removed.count(id)) continue;
+    const FbxNode *indexes = o->child("Indexes"), *weights = o->child("Weights");
+    if (!indexes || !weights || indexes->properties.empty() || weights->properties.empty()) continue;
+    const std::vector<double> i = indexes->properties[0].as_doubles(), w = weights->properties[0].as_doubles();
+    for (auto [it, end] = objects.by_child.equal_range(id); it != end; ++it)
+      for (std::size_t k = 0; k < std::min(i.size(), w.size()); ++k)
+        sums[objects.connections[it->second].parent][static_cast<std::int64_t>(i[k])] += w[k];
+  }
+  std::size_t n = 0;
+  for (const auto& [skin, points] : sums)
+    for (const auto& [point, sum] : points) n += sum > 0.0 && std::abs(sum - 1.0) > kWeightSumTolerance;
+  return n;
+}
 
 // Whether some curve of the curve node `id` takes more than one value (beyond float round-off).
 bool moves(const fbx::Objects& objects, std::int64_t id) {
@@ -111,6 +136,7 @@ Survey survey(const fbx::Objects& objects) {
       if (!linked) s.removed.insert(id), ++s.dropped_clusters;
     }
   }
+  s.unnormalized_vertices = unnormalized_vertices(objects, s.removed);
   return s;
 }
 
@@ -118,6 +144,7 @@ FbxKept count_kept(const fbx::Objects& objects, const Survey& s) {
   FbxKept k;
   k.dropped_clusters = s.dropped_clusters;
   k.dropped_properties = s.dropped_properties;
+  k.unnormalized_vertices = s.unnormalized_vertices;
   for (const FbxNode* o : objects.in_order) {
     if (s.removed.count(fbx::object_id(*o))) continue;
     const std::string subclass = fbx::object_subclass(*o);
@@ -180,6 +207,9 @@ std::string FbxKept::text() const {
   if (dropped_properties) s += "; dropped: " + count_text(dropped_properties, "animated property", "animated properties") + " other than rotation and translation";
   if (dropped_connections) s += "; repaired: " + count_text(dropped_connections, "connection", "connections") + " to missing objects dropped";
   if (dropped_clusters) s += "; repaired: " + count_text(dropped_clusters, "cluster", "clusters") + " linked to no bone dropped";
+  if (unnormalized_vertices)
+    s += "; " + count_text(unnormalized_vertices, "vertex's skin weights do", "vertices' skin weights do") +
+         " not sum to 1 (kept as the source has them; Blender normalizes them)";
   return s;
 }
 

@@ -60,6 +60,7 @@ struct FbxKept {
   bool ascii = false;                  // written as ASCII (the source was)
   std::size_t dropped_properties = 0;  // animated properties other than Lcl T/R whose values moved
   std::size_t dropped_connections = 0, dropped_clusters = 0;  // repairs
+  std::size_t unnormalized_vertices = 0;  // control points whose skin weights sum to more than 0 but not to 1 (kept)
   // "1 mesh, 1 skin (32 bones), 1 material kept", then what was dropped or repaired.
   std::string text() const;
 };

@@ -34,5 +34,20 @@ TEST(BlenderCharacter, ResampledAndReducedGlbCharactersDeformAsTheirSources) {
     EXPECT_EQ(imports[i + 1].actions, imports[i].actions) << "case " << i / 2;
 }
 
+// The two-take character Blender makes (blender_nla_rig.py, skinned, its PNG texture
+// embedded) as Blender's glTF exporter writes it: both takes resampled into one GLB,
+// one take reduced into a GLB of its own.
+TEST(BlenderCharacter, EveryTakeOfABlenderMadeGlbCharacterDeformsAsItsSource) {
+  const TempDir dir;
+  const std::string rig = make_blender_rig(dir.path(), true) + ".glb";
+  const std::vector<BlenderCharacter> imports =
+      expect_same_character({{rig, "resample --anim all --fps 30", ""},
+                             {rig, "reduce --tolerance 0.05deg,0.05mm --anim 1", "Wave"}},
+                            1.0 / 6.0, dir.path(), ".glb");
+  ASSERT_EQ(imports.size(), 4u);
+  EXPECT_EQ(imports[1].actions, imports[0].actions);
+  EXPECT_EQ(imports[0].takes, (std::set<std::string>{"Walk", "Wave"}));
+}
+
 }  // namespace
 }  // namespace rotinterp::test

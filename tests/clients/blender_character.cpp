@@ -92,6 +92,11 @@ std::vector<BlenderCharacter> expect_same_character(const std::vector<CharacterC
     EXPECT_EQ(ours.images, source.images) << what;
     const std::set<std::string> takes = cases[i].take.empty() ? source.takes : std::set<std::string>{cases[i].take};
     EXPECT_EQ(ours.takes, takes) << what;
+    // Within a format, every take written: one action per take and object, as the
+    // source's (each take keys the objects the source's take of its name keys).
+    if (cases[i].take.empty() && std::filesystem::path(pairs[i].first).extension() == extension) {
+      EXPECT_EQ(ours.actions, source.actions) << what;
+    }
     const PoseDeviation d = pose_deviation(ours, source);
     // Every take that moves bones (a glTF import makes an action per take and object;
     // those of objects other than the armature move none) is compared at three times.

@@ -66,7 +66,8 @@ struct CharacterCase {
 // Runs each case's command to DIR/N`extension`, which must print what it kept, warn
 // of no lost mesh, and be read by assimp's command line; then Blender imports each
 // source and output (blender_characters, `step`), and the two must show the same
-// meshes and takes, and deformed meshes within 0.1 % of the figure's height at the
+// meshes and takes (and, within one format, as many actions where every take is
+// written), and deformed meshes within 0.1 % of the figure's height at the
 // three times of each take. Returns the imports (source, ours, per case; none where a
 // command failed).
 std::vector<BlenderCharacter> expect_same_character(const std::vector<CharacterCase>& cases, double step,

@@ -22,16 +22,13 @@ TEST(BlenderCharacter, ResampledAndReducedGlbCharactersDeformAsTheirSources) {
   run_blender("blender_fbx_to_glb.py", "", exports, dir.path(), "export");
   // 24 Hz and 30 Hz sources at 30 Hz: every 1/6 s is a key of both. Every take is
   // written (--anim all); reduce keeps its sparse keys within a budget far below 0.1 %.
-  const std::vector<BlenderCharacter> imports =
-      expect_same_character({{exports[1], "resample --fps 30 --anim all", ""},
-                             {exports[3], "resample --fps 30 --anim all", ""},
-                             {exports[5], "resample --fps 30 --anim all", ""},
-                             {exports[3], "reduce --tolerance 0.05deg,0.2mm", ""}},
-                            1.0 / 6.0, dir.path(), ".glb");
-  // One action per take and object, as the source's: each take drives the nodes the
-  // source's animation of its name drives (Marine_Run: eleven, one per IK handle and foot).
-  for (std::size_t i = 0; i + 1 < imports.size(); i += 2)
-    EXPECT_EQ(imports[i + 1].actions, imports[i].actions) << "case " << i / 2;
+  // As many actions as the source (expect_same_character): Marine_Run has eleven, one
+  // per IK handle and foot.
+  expect_same_character({{exports[1], "resample --fps 30 --anim all", ""},
+                         {exports[3], "resample --fps 30 --anim all", ""},
+                         {exports[5], "resample --fps 30 --anim all", ""},
+                         {exports[3], "reduce --tolerance 0.05deg,0.2mm", ""}},
+                        1.0 / 6.0, dir.path(), ".glb");
 }
 
 // The two-take character Blender makes (blender_nla_rig.py, skinned, its PNG texture
@@ -45,7 +42,6 @@ TEST(BlenderCharacter, EveryTakeOfABlenderMadeGlbCharacterDeformsAsItsSource) {
                              {rig, "reduce --tolerance 0.05deg,0.05mm --anim 1", "Wave"}},
                             1.0 / 6.0, dir.path(), ".glb");
   ASSERT_EQ(imports.size(), 4u);
-  EXPECT_EQ(imports[1].actions, imports[0].actions);
   EXPECT_EQ(imports[0].takes, (std::set<std::string>{"Walk", "Wave"}));
 }
 

@@ -7,6 +7,7 @@
 #include "rotinterp/track/sample.h"
 #include "rotinterp/io/files/file_errors.h"
 
+#include <set>
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -177,7 +178,48 @@ Result<FbxCharacterTake> fbx_character_take(const Clip& clip, const FbxCharacter
       for (FbxOutCurve& curve : *set)
         for (FbxOutKey& key : curve) key.ticks += origin;
   keep_source_scaling(out.take.curves, *joints, take);
+  unkey_resting_joints(out, source, take);
   return out;
+}
+
+namespace {
+
+// Every key of `curves` (else its default) within `tolerance` of `value`, per axis.
+bool holds(const std::array<FbxOutCurve, 3>& curves, const Vec3& fallback, const FbxVec3& value, double tolerance) {
+  for (std::size_t a = 0; a < 3; ++a) {
+    const double v = value[a], tol = tolerance * std::max(1.0, std::abs(v));
+    if (curves[a].empty() && std::abs(fallback[static_cast<int>(a)] - v) > tol) return false;
+    for (const FbxOutKey& key : curves[a])
+      if (std::abs(key.value - v) > tol) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+void unkey_resting_joints(FbxCharacterTake& written, const FbxCharacter& source, const FbxTake* take) {
+  // Float keys: degrees and file units within float precision of the model's values.
+  constexpr double kRotationDegrees = 1e-4, kTranslationRelative = 1e-6;
+  std::set<std::string> animated;
+  if (take)
+    for (const FbxAnimatedProperty& p : take->properties) animated.insert(p.node);
+  std::vector<std::size_t> resting;
+  std::vector<FbxOutJoint>& curves = written.take.curves;
+  for (std::size_t j = 0; j < curves.size() && j < written.model_ids.size(); ++j) {
+    const auto m = std::find_if(source.animation.models.begin(), source.animation.models.end(),
+                                [&](const FbxModel& x) { return x.id == written.model_ids[j]; });
+    if (m == source.animation.models.end() || animated.count(m->name) || curves[j].has_scaling) continue;
+    if (!holds(curves[j].rotation, curves[j].rotation_default, m->rotation, kRotationDegrees)) continue;
+    if (curves[j].has_translation &&
+        !holds(curves[j].translation, curves[j].translation_default, m->translation, kTranslationRelative))
+      continue;
+    resting.push_back(j);
+  }
+  if (resting.size() == curves.size()) return;  // a take keys something
+  for (std::size_t j : resting) {
+    curves[j].has_rotation = curves[j].has_translation = false;
+    curves[j].rotation = curves[j].translation = {};
+  }
 }
 
 Result<FbxCharacterFile> fbx_character_file(const std::vector<Clip>& takes, const std::filesystem::path& source,

@@ -240,6 +240,7 @@ Result<FbxReducedResult> encode_reduced_fbx(const Clip& reduced, const Clip& sou
       keep_source_scaling(out, joints, take);
       FbxCharacterTake written{fbx_character_out_take(reduced.name, std::move(out), take), {}};
       for (const FbxModel* m : joints.models) written.model_ids.push_back(m->id);
+      unkey_resting_joints(written, *options.character, take);
       auto file = encode_fbx_character(*options.character, {written}, grid.rate, ascii ? FbxEncoding::ascii : FbxEncoding::binary);
       if (!file) return file.failure();
       result.kept = file->kept;

@@ -103,9 +103,11 @@ FbxTakeIds new_take_ids(const std::vector<FbxOutJoint>& curves, const std::funct
   ids.scaling_node.assign(n, 0);
   ids.scaling_curve.assign(n, {});
   for (std::size_t j = 0; j < n; ++j) {
-    ids.rotation_node[j] = new_id();
-    for (std::size_t a = 0; a < 3; ++a) ids.rotation_curve[j][a] = curves[j].rotation[a].empty() ? 0 : new_id();
-    ++ids.curve_nodes;
+    if (curves[j].has_rotation) {
+      ids.rotation_node[j] = new_id();
+      for (std::size_t a = 0; a < 3; ++a) ids.rotation_curve[j][a] = curves[j].rotation[a].empty() ? 0 : new_id();
+      ++ids.curve_nodes;
+    }
     if (curves[j].has_translation) {
       ids.translation_node[j] = new_id();
       for (std::size_t a = 0; a < 3; ++a) ids.translation_curve[j][a] = curves[j].translation[a].empty() ? 0 : new_id();
@@ -152,7 +154,7 @@ void write_take_objects(FbxWriteDocument& doc, const FbxOutTake& take, const Fbx
   e.end();
   const std::vector<FbxOutJoint>& curves = take.curves;
   for (std::size_t j = 0; j < curves.size(); ++j) {
-    write_curve_node(doc, ids.rotation_node[j], "R", curves[j].rotation, curves[j].rotation_default);
+    if (ids.rotation_node[j]) write_curve_node(doc, ids.rotation_node[j], "R", curves[j].rotation, curves[j].rotation_default);
     if (ids.translation_node[j])
       write_curve_node(doc, ids.translation_node[j], "T", curves[j].translation, curves[j].translation_default);
     if (ids.scaling_node[j]) write_curve_node(doc, ids.scaling_node[j], "S", curves[j].scaling, Vec3::Ones());
@@ -172,15 +174,13 @@ void write_take_connections(FbxWriteDocument& doc, const FbxOutTake& take, const
   static const char* axis_names[] = {"d|X", "d|Y", "d|Z"};
   doc.connect(ids.layer, ids.stack);
   for (std::size_t j = 0; j < take.curves.size(); ++j) {
-    doc.connect(ids.rotation_node[j], ids.layer);
-    doc.connect(ids.rotation_node[j], model_id[j], "Lcl Rotation");
-    for (std::size_t a = 0; a < 3; ++a)
-      if (ids.rotation_curve[j][a]) doc.connect(ids.rotation_curve[j][a], ids.rotation_node[j], axis_names[a]);
-    const std::pair<std::int64_t, const std::array<std::int64_t, 3>*> others[] = {
-        {ids.translation_node[j], &ids.translation_curve[j]}, {ids.scaling_node[j], &ids.scaling_curve[j]}};
-    const char* properties[] = {"Lcl Translation", "Lcl Scaling"};
-    for (std::size_t p = 0; p < 2; ++p) {
-      const auto [node, curves] = others[p];
+    const std::pair<std::int64_t, const std::array<std::int64_t, 3>*> nodes[] = {
+        {ids.rotation_node[j], &ids.rotation_curve[j]},
+        {ids.translation_node[j], &ids.translation_curve[j]},
+        {ids.scaling_node[j], &ids.scaling_curve[j]}};
+    const char* properties[] = {"Lcl Rotation", "Lcl Translation", "Lcl Scaling"};
+    for (std::size_t p = 0; p < 3; ++p) {
+      const auto [node, curves] = nodes[p];
       if (!node) continue;
       doc.connect(node, ids.layer);
       doc.connect(node, model_id[j], properties[p]);

@@ -115,6 +115,12 @@ struct FbxCharacterTake {
 };
 Result<FbxCharacterTake> fbx_character_take(const Clip& clip, const FbxCharacter& source, const FbxTake* take);
 
+// A joint that `take` (the source's take replaced, or null) does not animate, whose
+// written curves hold its model's static Lcl values, gets no curve node: readers make
+// an action per animated object, and the source had none for it (Blender: two
+// actions more on Marine_Run, L_FOOT's and R_FOOT's). Exact: the static value holds.
+void unkey_resting_joints(FbxCharacterTake& written, const FbxCharacter& source, const FbxTake* take);
+
 // The source's tree with its animation replaced by `takes` (in order, the first the
 // active one; their model_ids the source's), at `rate` where they share one, in
 // `encoding` (binary: FBX 7.4).

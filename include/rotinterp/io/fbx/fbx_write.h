@@ -70,6 +70,7 @@ struct FbxOutJoint {
   EulerAxes axes{2, 1, 0};
   std::array<FbxOutCurve, 3> rotation, translation;
   Vec3 rotation_default = Vec3::Zero(), translation_default = Vec3::Zero();  // channels without keys
+  bool has_rotation = true;      // an "R" curve node (a character's joint at rest has none: fbx_character.h)
   bool has_translation = false;  // an "T" curve node (any translation channel with keys)
   // Lcl Scaling curves: only a source's own scale written back (io/fbx/fbx_character.h).
   std::array<FbxOutCurve, 3> scaling;

@@ -125,10 +125,15 @@ std::optional<Status> write_character(const std::vector<Clip>& takes, const std:
     return Status(Ok{});
   }
   if (is_gltf(output) && output->meshes) {  // any other character (FBX, Collada) as glTF: its body read by assimp
+    for (std::size_t i = 1; i < takes.size(); ++i)  // one skeleton, which the body's skins name
+      if (const std::string why = skeleton_difference(takes.front(), takes[i]); !why.empty())
+        return Status(make_error(path.string() + ": take '" + takes[i].name + "' has another skeleton than take '" +
+                                 takes.front().name + "': " + why));
     ReadOptions read;
     read.read_body = true;
     const Result<ClipFileInfo> source_file = inspect_clip(options.source, read);
-    if (!source_file || !source_file->body) return not_kept(source_file ? "assimp found no body in it" : source_file.error());
+    if (!source_file || !source_file->body) return not_kept(source_file ? "an FBX 6.1 file, whose motion rotinterp's own reader reads, but not its meshes"
+                                                            : source_file.error());
     std::vector<const Clip*> pointers;
     for (const Clip& c : takes) pointers.push_back(&c);
     auto written = write_gltf(pointers, path, output->id == FormatId::glb, gltf_keys(options), *source_file->body);

@@ -5,6 +5,8 @@
 // characters written so: tests/clients/test_blender_character.cpp.)
 #include "io_test_util.h"
 #include "rotinterp/io/gltf/gltf_write.h"
+#include "rotinterp/io/read.h"
+#include "rotinterp/io/write.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -215,6 +217,36 @@ TEST(GltfBody, ABodyThatIsNoMeshIsRefusedAndNothingIsWritten) {
     EXPECT_NE(said.error().find("mesh 'Tri' is not a mesh"), std::string::npos) << said.error();
     EXPECT_TRUE(dir.files().empty());
   }
+}
+
+// Through write_clips from an FBX character: takes of different skeletons are refused
+// (the body's skins name one), and an FBX 6.1 source, whose meshes no reader of ours
+// reads, is written as its skeleton with the reason said.
+TEST(GltfBody, AnFbxCharacterAsGlbRefusesTwoSkeletonsAndSaysWhenItHasNoBody) {
+  const test::TempDir dir;
+  const std::string marine = (test::kData / "fbx/digitalrune_Marine_Run.fbx").string();
+  const Result<Clip> run = read_clip(marine);
+  ASSERT_TRUE(run) << run.error();
+  Clip other = *run;
+  other.name = "Other";
+  other.skeleton.joints.back().name = "Tail";
+  std::vector<std::string> warnings;
+  WriteOptions options;
+  options.source = marine;
+  options.on_warning = [&](const std::string& w) { warnings.push_back(w); };
+  const Status two = write_clips({*run, other}, dir / "two.glb", options);
+  ASSERT_FALSE(two);
+  EXPECT_NE(two.error().find("take 'Other' has another skeleton"), std::string::npos) << two.error();
+  EXPECT_TRUE(dir.files().empty());
+
+  const std::string sausage = (test::kData / "fbx/ufbx_maya_game_sausage_6100_binary_wiggle.fbx").string();
+  const Result<Clip> wiggle = read_clip(sausage);
+  ASSERT_TRUE(wiggle) << wiggle.error();
+  options.source = sausage;
+  ASSERT_TRUE(write_clip(*wiggle, dir / "sausage.glb", options));
+  ASSERT_EQ(warnings.size(), 2u);
+  EXPECT_NE(warnings[0].find("the character is not kept: an FBX 6.1 file"), std::string::npos) << warnings[0];
+  EXPECT_NE(warnings[1].find("are not written"), std::string::npos) << warnings[1];
 }
 
 }  // namespace

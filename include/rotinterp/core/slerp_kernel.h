@@ -13,8 +13,9 @@
 //   4 terms while every rotation in the block is ≤ 8.1°, 8 terms ≤ 33.7°: exact to
 //     round-off there (truncation < 2e-17 rad);
 //   16 terms otherwise, the last scaled by kSlerpTailFactor to stand for the tail
-//     (Eberly's correction; his single precision takes 8).
-// A sample gets the same value (to round-off) whichever block it is in.
+//     (Eberly's correction; his single precision takes 8): still ≤ 1e-16 rad up to
+//     83°, then 3e-14 at 100°, 6e-12 at 120°, 2.2e-9 at 150°, 2.3e-8 near 180°.
+// So a sample gets the same value (to round-off) whichever block it is in.
 //
 // Bound: for unit a, b and t ∈ [−0.1, 1.1], the rotation the result stands for is
 // within kSlerpKernelMaxError of the exact slerp's (2.3e-8 rad measured, at rotations
@@ -23,7 +24,6 @@
 
 #include "rotinterp/core/rotation.h"
 
-#include <array>
 #include <cmath>
 #include <cstddef>
 
@@ -48,7 +48,7 @@ namespace slerp_kernel_detail {
 
 // uᵢ and vᵢ for i = 1 … kSlerpTerms, computed at compile time.
 struct Coefficients {
-  std::array<double, kSlerpTerms + 1> u{}, v{};
+  double u[kSlerpTerms + 1] = {}, v[kSlerpTerms + 1] = {};
 };
 constexpr Coefficients make_coefficients() {
   Coefficients c;

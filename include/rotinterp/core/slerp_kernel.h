@@ -8,14 +8,14 @@
 //   uᵢ = 1/(i(2i+1)), vᵢ = i/(2i+1),
 // the series cut after N terms. At d = 0 (θ = 0) it is exactly t: no division, no
 // small-angle branch. Its terms shrink by about |d|/2 each, so few terms are exact
-// for small steps and many are needed near θ = 90°. Each block of samples therefore
-// takes the fewest terms that suit its widest step (kSlerpTiers):
-//   4 terms while every rotation in the block is ≤ 8.1°, 8 terms ≤ 33.7°: exact to
-//     round-off there (truncation < 2e-17 rad);
+// for small steps and many are needed near θ = 90°. Each sample takes the fewest
+// terms that suit its step (kSlerpTiers), a block of one tier in one loop:
+//   4 terms for rotations ≤ 8.1°, 8 terms ≤ 33.7°: exact to round-off there
+//     (truncation < 2e-17 rad);
 //   16 terms otherwise, the last scaled by kSlerpTailFactor to stand for the tail
 //     (Eberly's correction; his single precision takes 8): still ≤ 1e-16 rad up to
 //     83°, then 3e-14 at 100°, 6e-12 at 120°, 2.2e-9 at 150°, 2.3e-8 near 180°.
-// So a sample gets the same value (to round-off) whichever block it is in.
+// A sample's value depends on its own a, b, t alone, bit for bit, whatever its block.
 //
 // Bound: for unit a, b and t ∈ [−0.1, 1.1], the rotation the result stands for is
 // within kSlerpKernelMaxError of the exact slerp's (2.3e-8 rad measured, at rotations
@@ -98,31 +98,40 @@ struct QuatArraysOut {
 };
 
 // out[j] = slerp(a[j], b[j], t[j]) on the shortest arc, for unit a, b and finite t;
-// out overlaps no input except exactly (out.w == a.w is fine). At a·b = ±0 (a half
-// turn) b is taken as stored for +0 and flipped for −0: the slerp method's keys are
-// aligned (align_pair) before they reach it.
+// out overlaps no input. At a·b = ±0 (a half turn) b is taken as stored for +0 and
+// flipped for −0: the slerp method's keys are aligned (align_pair) before they reach it.
 inline void slerp_arrays(QuatArrays a, QuatArrays b, const double* t, std::size_t n, QuatArraysOut out) {
   constexpr std::size_t kBlock = 64;
-  double dot[kBlock];
+  constexpr int kTiers = 3;
+  double dot[kBlock], r[4][kBlock];
+  int tier[kBlock];
   for (std::size_t j0 = 0; j0 < n; j0 += kBlock) {
     const std::size_t m = n - j0 < kBlock ? n - j0 : kBlock;
     const double *aw = a.w + j0, *ax = a.x + j0, *ay = a.y + j0, *az = a.z + j0;
     const double *bw = b.w + j0, *bx = b.x + j0, *by = b.y + j0, *bz = b.z + j0;
     for (std::size_t j = 0; j < m; ++j) dot[j] = aw[j] * bw[j] + ax[j] * bx[j] + ay[j] * by[j] + az[j] * bz[j];
-    double min_d = 0.0;  // the widest step of the block
+    bool used[kTiers] = {};
     for (std::size_t j = 0; j < m; ++j) {
-      const double d = std::abs(dot[j]) - 1.0;
-      if (!(d >= min_d)) min_d = d;  // NaN takes the last tier
+      const double d = std::abs(dot[j]) - 1.0;  // NaN takes the last tier
+      tier[j] = d >= kSlerpTiers[0].min_d ? 0 : d >= kSlerpTiers[1].min_d ? 1 : 2;
+      used[tier[j]] = true;
     }
+    const bool mixed = int(used[0]) + int(used[1]) + int(used[2]) > 1;
     const double* tj = t + j0;
     double *ow = out.w + j0, *ox = out.x + j0, *oy = out.y + j0, *oz = out.z + j0;
-    using namespace slerp_kernel_detail;
-    if (min_d >= kSlerpTiers[0].min_d) {
-      slerp_block<kSlerpTiers[0].terms>(aw, ax, ay, az, bw, bx, by, bz, dot, tj, m, ow, ox, oy, oz);
-    } else if (min_d >= kSlerpTiers[1].min_d) {
-      slerp_block<kSlerpTiers[1].terms>(aw, ax, ay, az, bw, bx, by, bz, dot, tj, m, ow, ox, oy, oz);
-    } else {
-      slerp_block<kSlerpTiers[2].terms>(aw, ax, ay, az, bw, bx, by, bz, dot, tj, m, ow, ox, oy, oz);
+    for (int k = 0; k < kTiers; ++k) {
+      if (!used[k]) continue;
+      // One tier: straight into out. Several (a rare block): each tier over the whole
+      // block, its own samples kept, so that a sample's value depends on its own step
+      // alone, bit for bit, whatever block it is in.
+      double *rw = mixed ? r[0] : ow, *rx = mixed ? r[1] : ox, *ry = mixed ? r[2] : oy, *rz = mixed ? r[3] : oz;
+      using namespace slerp_kernel_detail;
+      if (k == 0) slerp_block<kSlerpTiers[0].terms>(aw, ax, ay, az, bw, bx, by, bz, dot, tj, m, rw, rx, ry, rz);
+      if (k == 1) slerp_block<kSlerpTiers[1].terms>(aw, ax, ay, az, bw, bx, by, bz, dot, tj, m, rw, rx, ry, rz);
+      if (k == 2) slerp_block<kSlerpTiers[2].terms>(aw, ax, ay, az, bw, bx, by, bz, dot, tj, m, rw, rx, ry, rz);
+      if (!mixed) continue;
+      for (std::size_t j = 0; j < m; ++j)
+        if (tier[j] == k) ow[j] = rw[j], ox[j] = rx[j], oy[j] = ry[j], oz[j] = rz[j];
     }
   }
 }
@@ -133,9 +142,9 @@ inline void slerp_kernel_detail::slerp_block(const double* aw, const double* ax,
                                              const double* by, const double* bz, const double* dot,
                                              const double* t, std::size_t n, double* ow, double* ox,
                                              double* oy, double* oz) {
-  // No element is read after another's result is written (out[j] may be a[j], not a
-  // neighbour). Said to the compiler, which otherwise gives up on checking fourteen
-  // arrays for overlap at run time.
+  // No element is read after another's result is written (out overlaps no input).
+  // Said to the compiler, which otherwise gives up on checking fourteen arrays for
+  // overlap at run time.
 #if defined(__clang__)
 #pragma clang loop vectorize(assume_safety)
 #elif defined(__GNUC__)

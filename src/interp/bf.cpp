@@ -276,7 +276,7 @@ Result<std::unique_ptr<Interpolator>> make_bf(RotationTrack track, const BfSplin
     if (!c2) return c2.failure();
     if (auto p = attempt(c2->get(), options.max_key_step)) return std::unique_ptr<Interpolator>(std::move(p));
   }
-  auto geodesic = make_slerp(original);
+  auto geodesic = detail::make_exact_slerp(original);
   if (!geodesic) return geodesic.failure();
   double max_step = options.max_key_step;
   for (int halving = 0; halving < 4; ++halving, max_step *= 0.5)

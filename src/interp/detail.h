@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -82,10 +83,14 @@ inline Where locate(const std::vector<double>& t, double x, std::size_t& hint) {
 //   Derived::segment_velocity(i, u)   fixed-frame angular velocity there (rad/s)
 //   Derived::segment_acceleration(i, u)  optional: its derivative in t (rad/s²);
 //                                     without it, the difference quotient below
+//   Derived::segments(w, m, out)      optional, with kBatchSegments = true: out[j] =
+//                                     segment(w[j].i, w[j].u) for m ≤ kSegmentBlock
 template <class Derived>
 class SegmentInterpolator : public Interpolator {
  public:
   explicit SegmentInterpolator(Keys keys) : k_(std::move(keys)) {}
+  static constexpr bool kBatchSegments = false;
+  static constexpr std::size_t kSegmentBlock = 64;  // samples per segments() call
 
   Quat evaluate(double t) const final {
     if (k_.size() == 1) return k_.q[0];
@@ -99,9 +104,20 @@ class SegmentInterpolator : public Interpolator {
       return;
     }
     std::size_t hint = 0;
-    for (std::size_t j = 0; j < n; ++j) {
-      const Where w = locate(k_.t, t[j], hint);
-      out[j] = self().segment(w.i, w.u);
+    if constexpr (Derived::kBatchSegments) {
+      // Located a block at a time, then evaluated together (Derived::segments), so
+      // the per-sample arithmetic runs as one vectorizable loop.
+      Where w[kSegmentBlock];
+      for (std::size_t j0 = 0; j0 < n; j0 += kSegmentBlock) {
+        const std::size_t m = std::min(kSegmentBlock, n - j0);
+        for (std::size_t j = 0; j < m; ++j) w[j] = locate(k_.t, t[j0 + j], hint);
+        self().segments(w, m, out + j0);
+      }
+    } else {
+      for (std::size_t j = 0; j < n; ++j) {
+        const Where w = locate(k_.t, t[j], hint);
+        out[j] = self().segment(w.i, w.u);
+      }
     }
   }
   bool has_angular_velocity() const final { return true; }
@@ -146,5 +162,9 @@ class SegmentInterpolator : public Interpolator {
   double dt(std::size_t i) const { return k_.t[i + 1] - k_.t[i]; }
   Keys k_;
 };
+
+// The slerp method's curve by the exact core slerp instead of its polynomial kernel
+// (slerp.cpp): for callers that need points exactly on the geodesic (bf's knots).
+Result<std::unique_ptr<Interpolator>> make_exact_slerp(RotationTrack track);
 
 }  // namespace rotinterp::detail

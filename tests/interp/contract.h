@@ -4,6 +4,7 @@
 
 #include "support.h"
 
+#include "rotinterp/core/slerp_kernel.h"
 #include "rotinterp/interp/interpolator.h"
 
 #include <gtest/gtest.h>
@@ -26,6 +27,13 @@ inline constexpr double kKeyTolerance = 1e-9;  // rad
 inline constexpr double kUnitTolerance = 1e-12;
 // Coordinate invariance where a method claims it (rad).
 inline constexpr double kInvarianceTolerance = 1e-9;
+
+// How close a method's curve comes to a closed form it claims to follow, at best
+// `tolerance`: slerp samples by the polynomial kernel, exact to round-off for
+// rotations up to 83° between keys and within kSlerpKernelMaxError beyond.
+inline double curve_tolerance(const std::string& method, double tolerance) {
+  return method == "slerp" ? std::max(tolerance, kSlerpKernelMaxError) : tolerance;
+}
 
 struct Fixture {
   std::string name;

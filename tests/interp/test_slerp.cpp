@@ -2,12 +2,15 @@
 #include "support.h"
 
 #include "rotinterp/interp/nlerp.h"
+#include "rotinterp/core/slerp_kernel.h"
 #include "rotinterp/interp/slerp.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 namespace rotinterp {
 namespace {
@@ -89,6 +92,49 @@ TEST(Nlerp, IsOnTheGeodesicButNotConstantSpeed) {
   const double angle = angular_distance(a, m);
   EXPECT_GT(std::abs(angle - kPi / 8), 1e-3);  // 0.25 of the way in t, not in angle
   EXPECT_LT(angular_distance(nlerp(a, b, 0.5), slerp(a, b, 0.5)), 1e-15);
+}
+
+TEST(SlerpMethod, SamplesThroughThePolynomialKernelWithinItsBound) {
+  // Non-uniform key times, steps from 0.01° to 170° (stored in either hemisphere),
+  // and sample times repeated, unsorted and outside the keys: batch and single
+  // evaluation are the kernel (core/slerp_kernel.h) — within 1e-15 of it where it is
+  // 1e-8 from the exact slerp — and within kSlerpKernelMaxError of the exact slerp.
+  std::mt19937_64 rng(21);
+  const double deg = kPi / 180;
+  const double steps[] = {0.01 * deg, 3 * deg, 30 * deg, 170 * deg, 90 * deg, 1e-9};
+  RotationTrack track;
+  Quat q = random_quat(rng);
+  double t = 0.0;
+  for (double step : steps) {
+    track.times.push_back(t);
+    track.keys.push_back(track.keys.size() % 2 ? Quat(-q.coeffs()) : q);
+    q = apply_moving(q, RotVec(random_unit(rng) * step));
+    t += 0.01 + step;
+  }
+  track.times.push_back(t);
+  track.keys.push_back(q);
+  auto f = make_slerp(track);
+  ASSERT_TRUE(f);
+  std::vector<double> at = {-1.0, t + 1.0, 0.5 * t, 0.5 * t};
+  std::uniform_real_distribution<double> u(0.0, t);
+  for (int s = 0; s < 500; ++s) at.push_back(u(rng));
+  std::vector<Quat> out(at.size());
+  (*f)->evaluate(at.data(), at.size(), out.data());
+  double worst = 0.0;
+  for (std::size_t j = 0; j < at.size(); ++j) {
+    const double x = std::clamp(at[j], 0.0, t);
+    const std::size_t i = static_cast<std::size_t>(
+        std::min<std::ptrdiff_t>(std::upper_bound(track.times.begin(), track.times.end(), x) - track.times.begin() - 1,
+                                 static_cast<std::ptrdiff_t>(track.times.size()) - 2));
+    const double v = (x - track.times[i]) / (track.times[i + 1] - track.times[i]);
+    const Quat a = track.keys[i], b = align_pair(a, track.keys[i + 1]);
+    const Quat expected = v <= 0.0 ? a : v >= 1.0 ? b : slerp_poly(a, b, v);
+    EXPECT_LT(angular_distance(out[j], expected), 1e-15) << at[j];
+    EXPECT_LT(angular_distance(out[j], (*f)->evaluate(at[j])), 1e-15) << at[j];
+    EXPECT_NEAR(out[j].norm(), 1.0, 1e-14);
+    worst = std::max(worst, angular_distance(out[j], slerp(a, b, v)));
+  }
+  EXPECT_LE(worst, kSlerpKernelMaxError);
 }
 
 }  // namespace

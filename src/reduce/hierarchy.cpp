@@ -44,12 +44,11 @@ bool Reducer::exact_at(const Track& t, std::size_t f) const {
 
 // j's shell error at f with its own rotation exact and the tracks in `exact` exact
 // too (as if keyed at f); the others rebuilt.
-double Reducer::floor_with_exact(std::size_t j, std::size_t f, const std::vector<Track>& exact) const {
+double Reducer::floor_with_exact(std::size_t j, std::size_t f, const std::vector<Track>& exact,
+                                 const std::vector<std::size_t>& chain) const {
   auto is_exact = [&](std::size_t k, bool translation) {
     return std::find(exact.begin(), exact.end(), Track{k, translation}) != exact.end();
   };
-  std::vector<std::size_t> chain;  // j's ancestors, root first
-  for (int a = parent(j); a >= 0; a = parent(static_cast<std::size_t>(a))) chain.insert(chain.begin(), static_cast<std::size_t>(a));
   Quat r = Quat::Identity();
   Vec3 p = Vec3::Zero();
   for (std::size_t k : chain) {
@@ -77,11 +76,14 @@ std::vector<Reducer::Track> Reducer::tracks_to_key(std::size_t j, std::size_t f)
     for (bool translation : {false, true}) candidates.push_back({static_cast<std::size_t>(a), translation});
   candidates.erase(std::remove_if(candidates.begin(), candidates.end(), [&](const Track& t) { return exact_at(t, f); }),
                    candidates.end());
-  double err = floor_with_exact(j, f, exact);
+  std::vector<std::size_t> chain;  // j's ancestors, root first
+  for (int a = parent(j); a >= 0; a = parent(static_cast<std::size_t>(a))) chain.push_back(static_cast<std::size_t>(a));
+  std::reverse(chain.begin(), chain.end());
+  double err = floor_with_exact(j, f, exact, chain);
   for (const Track& t : candidates) {
     if (err <= limit) return exact;
     exact.push_back(t);
-    const double e = floor_with_exact(j, f, exact);
+    const double e = floor_with_exact(j, f, exact, chain);
     if (e < err - kUseful * budget_[j].shell) err = e;
     else exact.pop_back();
   }

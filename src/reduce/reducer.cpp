@@ -20,15 +20,6 @@ TranslationTrack translation_keys(const std::vector<double>& times, const std::v
   return t;
 }
 
-// shell_error where it exceeds `limit`; below, possibly a bound between it and
-// `limit` (|ΔP| + 2d·sin(θ/2), θ the angle between the world rotations, bounds every
-// vertex's displacement): enough to tell within-budget frames, at a third of the cost.
-double shell_error_above(const Quat& r_ref, const Vec3& p_ref, const Quat& r_test, const Vec3& p_test, double d,
-                         double limit) {
-  const double bound = (p_ref - p_test).norm() + 2.0 * d * (r_ref.conjugate() * r_test).vec().norm();
-  return bound <= limit ? bound : shell_error(r_ref, p_ref, r_test, p_test, d);
-}
-
 // Every joint's rotations smoothed by the kStartSmoothing Gaussian over the frames on
 // either side, as many on each side (the first and last frames stay as they are),
 // weights below 1e-4 left out: the normalized weighted sum of the sign-aligned
@@ -63,6 +54,10 @@ Reducer::Reducer(const Clip& clip, const ReduceOptions& o, std::vector<ReduceBud
   n_ = dense_.grid.size();
   joints_ = clip.skeleton.joints.size();
   for (const ReduceBudget& b : budget_) shell_ = shell_ || b.shell > 0.0;
+  const MethodInfo* method = find_method(o.method);
+  slerp_ = method && method->name == "slerp" && n_ >= 2;
+  for (std::size_t f = 1; slerp_ && f < n_; ++f) slerp_ = times()[f] > times()[f - 1];
+  for (std::size_t f = 0; slerp_ && f < n_; ++f) slerp_ = std::isfinite(times()[f]);
   rkeys_.assign(joints_, ends(n_));
   tkeys_.assign(joints_, {});
   for (std::size_t j = 0; j < joints_; ++j)

@@ -4,6 +4,7 @@
 
 #include "select.h"
 #include "rotinterp/clip/loop.h"
+#include "rotinterp/clip/metrics.h"
 #include "rotinterp/interp/interpolator.h"
 #include "rotinterp/reduce/reduce.h"
 
@@ -62,8 +63,15 @@ Status for_each_run(const std::vector<char>& mask, const F& f) {
 }
 TranslationTrack translation_keys(const std::vector<double>& times, const std::vector<Vec3>& source,
                                   const std::vector<std::size_t>& kept);
-double shell_error_above(const Quat& r_ref, const Vec3& p_ref, const Quat& r_test, const Vec3& p_test, double d,
-                         double limit);
+// shell_error where it exceeds `limit`; below, possibly a bound between it and
+// `limit` (|ΔP| + 2d·sin(θ/2), θ the angle between the world rotations, bounds every
+// vertex's displacement): enough to tell within-budget frames, at a third of the cost.
+// Inline: every frame measured runs it.
+inline double shell_error_above(const Quat& r_ref, const Vec3& p_ref, const Quat& r_test, const Vec3& p_test, double d,
+                                 double limit) {
+  const double bound = (p_ref - p_test).norm() + 2.0 * d * (r_ref.conjugate() * r_test).vec().norm();
+  return bound <= limit ? bound : shell_error(r_ref, p_ref, r_test, p_test, d);
+}
 
 class Reducer {
  public:
@@ -128,8 +136,9 @@ class Reducer {
 
   // j's rotation curve through its keys at the frames `keys`.
   Result<std::unique_ptr<Interpolator>> curve(std::size_t j, const std::vector<std::size_t>& keys) const;
-  // j's rotation at the frames [lo, hi], rebuilt through its keys at the frames `keys`.
-  Result<std::vector<Quat>> rebuild(std::size_t j, const std::vector<std::size_t>& keys, std::size_t lo, std::size_t hi) const;
+  // j's rotation at the frames [lo, hi], rebuilt through its keys at the frames `keys`, into q
+  // (slerp outside a cycle: slerp_window.h, without building the curve).
+  Status rebuild(std::size_t j, const std::vector<std::size_t>& keys, std::size_t lo, std::size_t hi, std::vector<Quat>& q) const;
   // Fitted values at the key frames `free` (refit.cpp).
   Result<bool> refit_values(std::size_t j, const std::vector<std::size_t>& keys, const std::vector<std::size_t>& free,
                             std::size_t lo, std::size_t hi, int blocks, const ResidualFn& residual);
@@ -145,7 +154,9 @@ class Reducer {
     bool operator==(const Track& o) const { return joint == o.joint && translation == o.translation; }
   };
   bool exact_at(const Track& t, std::size_t f) const;
-  double floor_with_exact(std::size_t j, std::size_t f, const std::vector<Track>& exact) const;
+  // (`chain`: j's ancestors, root first.)
+  double floor_with_exact(std::size_t j, std::size_t f, const std::vector<Track>& exact,
+                          const std::vector<std::size_t>& chain) const;
   std::vector<Track> tracks_to_key(std::size_t j, std::size_t f) const;
   std::vector<std::size_t> floor_frames(std::size_t j);
   Status run_hierarchical();
@@ -157,6 +168,7 @@ class Reducer {
     std::vector<std::size_t> rkeys, tkeys;  // the keys its curves were built through
     std::vector<Quat> values;               // the rotation keys' values then
     std::shared_ptr<const Interpolator> curve;  // the rotation curve through them
+    std::vector<Quat> prepared;             // slerp: instead, its keys as make_slerp prepares them
     std::vector<double> error;              // [frame] the selection's rotation error
     std::vector<double> angle, shell;       // [frame] the result's local angle and shell error
     std::vector<char> floor;                // [frame] over budget with its own rotation exact
@@ -170,6 +182,11 @@ class Reducer {
   // j's rotation curve through its keys: the measured one while they are unchanged
   // (a global spline's whole-track build is the costly part of a later pass).
   Result<std::shared_ptr<const Interpolator>> current_curve(std::size_t j) const;
+  bool keys_unchanged(std::size_t j) const;  // j's keys and their values as last measured
+  // j's rotation through its keys at each run [lo, hi] of `mask`, handed to f(lo, hi, q):
+  // current_curve's (kept in measured_[j] with `keep`), or slerp's evaluated in place.
+  using RunFn = std::function<void(std::size_t lo, std::size_t hi, const std::vector<Quat>& q)>;
+  Status for_each_rebuilt_run(std::size_t j, const std::vector<char>& mask, bool keep, const RunFn& f);
   // j's translation selected again if its keys changed (or never selected); the frames
   // where its rebuilt translation moved marked.
   Status update_translation(std::size_t j, bool first, std::vector<double>& e);
@@ -185,6 +202,7 @@ class Reducer {
   std::vector<std::vector<Quat>> start_;  // [joint][frame]: the value a new key there starts from
   std::size_t n_ = 0, joints_ = 0;
   bool shell_ = false;
+  bool slerp_ = false;  // the method is slerp and the grid's times strictly increase: slerp_window.h
   std::vector<std::vector<std::size_t>> rkeys_, tkeys_;
   std::vector<ReducedJoint> out_;
   std::vector<std::vector<std::size_t>> children_;

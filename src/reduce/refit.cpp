@@ -26,11 +26,11 @@ Result<bool> Reducer::refit_values(std::size_t j, const std::vector<std::size_t>
   Eigen::VectorXd r(frames * rows), rp(frames * rows), err(frames), errp(frames);
   Eigen::MatrixXd jac(frames * rows, params);
   // The frames [a, b] measured again (the others' residuals as `out` and `e` hold them).
+  std::vector<Quat> q;
   auto measure = [&](Eigen::VectorXd& out, Eigen::VectorXd& e, std::size_t a, std::size_t b) -> Result<double> {
-    auto q = rebuild(j, keys, a, b);
-    if (!q) return q.failure();
+    if (Status s = rebuild(j, keys, a, b, q); !s) return s.failure();
     for (std::size_t f = a; f <= b; ++f)
-      e[static_cast<Eigen::Index>(f - lo)] = residual(f, (*q)[f - a], out.data() + (f - lo) * rows);
+      e[static_cast<Eigen::Index>(f - lo)] = residual(f, q[f - a], out.data() + (f - lo) * rows);
     return e.maxCoeff();
   };
   // The frames of [lo, hi] a change of the values at the key frames `changed` moves:

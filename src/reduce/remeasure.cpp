@@ -1,6 +1,8 @@
 // Later passes of a hierarchical run: the frames a joint's curve or inputs moved at, measured again; the rest kept.
 #include "reducer.h"
 
+#include "slerp_window.h"
+
 #include "rotinterp/clip/metrics.h"
 
 #include <algorithm>
@@ -52,15 +54,48 @@ std::vector<char> Reducer::to_measure(std::size_t j) const {
   return mask;
 }
 
-Result<std::shared_ptr<const Interpolator>> Reducer::current_curve(std::size_t j) const {
+bool Reducer::keys_unchanged(std::size_t j) const {
   const Measured& m = measured_[j];
-  bool same = m.curve && m.rkeys == rkeys_[j];
+  bool same = m.done && m.rkeys == rkeys_[j];
   for (std::size_t i = 0; same && i < m.rkeys.size(); ++i)
     same = m.values[i].coeffs() == value_[j][key_frame(j, m.rkeys[i])].coeffs();
-  if (same) return m.curve;
+  return same;
+}
+
+Result<std::shared_ptr<const Interpolator>> Reducer::current_curve(std::size_t j) const {
+  const Measured& m = measured_[j];
+  if (m.curve && keys_unchanged(j)) return m.curve;
   auto c = curve(j, rkeys_[j]);
   if (!c) return c.failure();
   return std::shared_ptr<const Interpolator>(std::move(*c));
+}
+
+Status Reducer::for_each_rebuilt_run(std::size_t j, const std::vector<char>& mask, bool keep, const RunFn& f) {
+  std::shared_ptr<const Interpolator> c;
+  std::vector<Quat> keys, q;  // slerp's prepared keys (unless kept); a run's rotations
+  const std::vector<Quat>* prepared = &keys;
+  if (slerp_ && !looped(j)) {
+    if (measured_[j].prepared.empty()) prepare_slerp_keys(value_[j], rkeys_[j], keys);
+    else if (keys_unchanged(j)) prepared = &measured_[j].prepared;
+    else prepare_slerp_keys_again(value_[j], rkeys_[j], measured_[j].rkeys, measured_[j].values, measured_[j].prepared, keys);
+  } else {
+    auto made = current_curve(j);
+    if (!made) return made.failure();
+    c = std::move(*made);
+  }
+  const Status s = for_each_run(mask, [&](std::size_t lo, std::size_t hi) -> Status {
+    q.resize(hi - lo + 1);
+    if (c) c->evaluate(times().data() + lo, q.size(), q.data());
+    else slerp_frames(times(), rkeys_[j].data(), prepared->data(), prepared->size(), lo, hi, q.data());
+    frames_measured_ += hi - lo + 1;
+    f(lo, hi, q);
+    return Ok{};
+  });
+  if (s && keep) {
+    measured_[j].curve = std::move(c);
+    if (prepared == &keys) measured_[j].prepared = std::move(keys);
+  }
+  return s;
 }
 
 Status Reducer::update_translation(std::size_t j, bool first, std::vector<double>& e) {
@@ -82,14 +117,8 @@ Status Reducer::settle_rotation(std::size_t j, const std::vector<char>& mask) {
     m.angle.assign(n_, 0.0);
     m.shell.assign(n_, 0.0);
   }
-  auto c = current_curve(j);
-  if (!c) return c.failure();
   const std::vector<Quat>& src = dense_.rotation[j];
-  std::vector<Quat> q;
-  const Status s = for_each_run(mask, [&](std::size_t lo, std::size_t hi) -> Status {
-    q.resize(hi - lo + 1);
-    (*c)->evaluate(times().data() + lo, q.size(), q.data());
-    frames_measured_ += hi - lo + 1;
+  const Status s = for_each_rebuilt_run(j, mask, true, [&](std::size_t lo, std::size_t hi, const std::vector<Quat>& q) {
     for (std::size_t f = lo; f <= hi; ++f) {
       m.angle[f] = angular_distance(src[f], q[f - lo]);
       Quat r;
@@ -101,12 +130,10 @@ Status Reducer::settle_rotation(std::size_t j, const std::vector<char>& mask) {
       test_pos_[j][f] = p;
       m.shell[f] = shell_error(ref_rot_[j][f], ref_pos_[j][f], r, p, o_.shell_distance);
     }
-    return Ok{};
   });
   if (!s) return s;
   out_[j].max_rotation_error = *std::max_element(m.angle.begin(), m.angle.end());
   out_[j].max_shell_error = *std::max_element(m.shell.begin(), m.shell.end());
-  m.curve = std::move(*c);
   m.rkeys = rkeys_[j];
   m.values.clear();
   for (std::size_t k : m.rkeys) m.values.push_back(value_[j][key_frame(j, k)]);

@@ -61,7 +61,8 @@ Status insert_worst(std::vector<std::size_t>& keys, std::size_t frames, const Er
 // — with the values it has, else (fitted values) with its two neighbours' values
 // refitted, checked between its third neighbours (a changed value reaches one key
 // further than a removed one for the methods that reach beyond a segment).
-Status remove_keys(std::vector<std::size_t>& keys, const ErrorFn& err, const KeyValues* values, std::vector<double>& e) {
+Status remove_keys(std::vector<std::size_t>& keys, const ErrorFn& err, const KeyValues* values, std::vector<double>& e,
+                   std::size_t support) {
   std::vector<std::size_t> window, free;
   for (std::size_t i = 1; i + 1 < keys.size();) {
     const std::size_t a = i >= kWindow ? i - kWindow : 0, b = std::min(keys.size() - 1, i + kWindow);
@@ -69,9 +70,27 @@ Status remove_keys(std::vector<std::size_t>& keys, const ErrorFn& err, const Key
     window.erase(window.begin() + static_cast<std::ptrdiff_t>(i - a));
     const std::size_t lo = keys[i >= 2 ? i - 2 : 0], hi = keys[std::min(keys.size() - 1, i + 2)];
     e.resize(hi - lo + 1);
-    if (Status s = err(window, lo, hi, e.data()); !s) return s;
-    bool drop = *std::max_element(e.begin(), e.end()) <= 1.0;
-    if (!drop && values && *std::max_element(e.begin(), e.end()) <= kRefitReach) {
+    // Support 1 (slerp, nlerp): between the neighbours first, the only frames whose curve
+    // changes and so where a removal fails; the rest of [lo, hi] only if that part leaves
+    // the key worth dropping or refitting. (Others: one measure, one curve built.)
+    const std::size_t mid_lo = support == 1 ? keys[i - 1] : lo, mid_hi = support == 1 ? keys[i + 1] : hi;
+    // The largest error of the frames [from, to) (none if empty), measured into e.
+    auto worst = [&](std::size_t from, std::size_t to) -> Result<double> {
+      if (from >= to) return 0.0;
+      if (Status s = err(window, from, to - 1, e.data() + (from - lo)); !s) return s.failure();
+      return *std::max_element(e.begin() + static_cast<std::ptrdiff_t>(from - lo), e.begin() + static_cast<std::ptrdiff_t>(to - lo));
+    };
+    auto mid = worst(mid_lo, mid_hi + 1);
+    if (!mid) return mid.failure();
+    double max = *mid;
+    if (max <= (values ? kRefitReach : 1.0)) {
+      auto left = worst(lo, mid_lo), right = worst(mid_hi + 1, hi + 1);
+      if (!left) return left.failure();
+      if (!right) return right.failure();
+      max = std::max({max, *left, *right});
+    }
+    bool drop = max <= 1.0;
+    if (!drop && values && max <= kRefitReach) {
       free = {keys[i - 1], keys[i + 1]};
       auto fitted = values->refit(window, free, keys[i >= 3 ? i - 3 : 0], keys[std::min(keys.size() - 1, i + 3)]);
       if (!fitted) return fitted.failure();
@@ -94,7 +113,7 @@ Status select_keys(std::vector<std::size_t>& keys, std::size_t frames, const Err
   };
   if (Status s = insert(known); !s) return s;
   if (!removal) return Ok{};
-  if (Status s = remove_keys(keys, err, values, e); !s) return s;
+  if (Status s = remove_keys(keys, err, values, e, support); !s) return s;
   return insert(false);
 }
 

@@ -1,5 +1,6 @@
 // One joint's tracks: the translation keys, the rotation keys, and the curve rebuilt through them.
 #include "reducer.h"
+#include "slerp_window.h"
 
 #include "rotinterp/clip/metrics.h"
 #include "rotinterp/core/rotation.h"
@@ -10,6 +11,7 @@
 #include <cmath>
 #include <functional>
 #include <memory>
+#include <utility>
 
 namespace rotinterp::detail {
 
@@ -51,12 +53,17 @@ Result<std::unique_ptr<Interpolator>> Reducer::curve(std::size_t j, const std::v
                    : make_joint_curve(o_.method, decimated_track(times(), value_[j], keys), std::nullopt);
 }
 
-Result<std::vector<Quat>> Reducer::rebuild(std::size_t j, const std::vector<std::size_t>& keys, std::size_t lo, std::size_t hi) const {
+Status Reducer::rebuild(std::size_t j, const std::vector<std::size_t>& keys, std::size_t lo, std::size_t hi,
+                        std::vector<Quat>& q) const {
+  q.resize(hi - lo + 1);
+  if (slerp_ && !looped(j) && keys.size() >= 2) {
+    slerp_window(times(), value_[j], keys, lo, hi, q.data());
+    return Ok{};
+  }
   auto c = curve(j, keys);
   if (!c) return c.failure();
-  std::vector<Quat> q(hi - lo + 1);
   (*c)->evaluate(times().data() + lo, q.size(), q.data());
-  return q;
+  return Ok{};
 }
 
 // The rotation keys of j (its translation chosen, its ancestors rebuilt).
@@ -65,6 +72,10 @@ Status Reducer::select_rotation(std::size_t j, bool removal, std::vector<double>
   const double tol_rot = b.rotation_deg * kPi / 180.0, d = o_.shell_distance;
   const std::vector<Quat>& src = dense_.rotation[j];
   const bool shell = b.shell > 0.0;
+  // The children's share of their budget, for the headroom below (looked up once, not per frame).
+  std::vector<std::pair<std::size_t, double>> headroom;
+  for (std::size_t c : children_[j])
+    if (const double limit = kChildShare * budget_[c].shell; limit > 0.0) headroom.emplace_back(c, limit);
   auto frame_error = [&](std::size_t f, const Quat& q) {
     double v = 0.0;
     if (tol_rot > 0.0) v = angular_distance(src[f], q) / tol_rot;
@@ -75,19 +86,17 @@ Status Reducer::select_rotation(std::size_t j, bool removal, std::vector<double>
       v = std::max(v, shell_error_above(ref_rot_[j][f], ref_pos_[j][f], r, p, d, b.shell) / b.shell);
       // Headroom for the children: their positions (their own translation exact)
       // within a share of their budget.
-      for (std::size_t c : children_[j]) {
-        const double limit = kChildShare * budget_[c].shell;
-        if (!(limit > 0.0)) continue;
+      for (const auto& [c, limit] : headroom) {
         const Vec3 pc = p + r * dense_.translation[c][f];
         v = std::max(v, (ref_pos_[c][f] - pc).norm() / limit);
       }
     }
     return v;
   };
+  std::vector<Quat> rebuilt;  // reused by every measure of this track
   ErrorFn err = [&](const std::vector<std::size_t>& keys, std::size_t lo, std::size_t hi, double* out) -> Status {
-    auto q = rebuild(j, keys, lo, hi);
-    if (!q) return q.failure();
-    for (std::size_t f = lo; f <= hi; ++f) out[f - lo] = frame_error(f, (*q)[f - lo]);
+    if (Status s = rebuild(j, keys, lo, hi, rebuilt); !s) return s;
+    for (std::size_t f = lo; f <= hi; ++f) out[f - lo] = frame_error(f, rebuilt[f - lo]);
     frames_measured_ += hi - lo + 1;
     return Ok{};
   };
@@ -133,16 +142,9 @@ Status Reducer::select_rotation(std::size_t j, bool removal, std::vector<double>
   // again only where the curve or its inputs moved since.
   const bool again = shell_ && measured_[j].done, known = again && !looped(j) && n_ >= 3;
   if (known) {
-    auto c = current_curve(j);
-    if (!c) return c.failure();
     e = measured_[j].error;
-    std::vector<Quat> q;
-    const Status s = for_each_run(to_measure(j), [&](std::size_t lo, std::size_t hi) -> Status {
-      q.resize(hi - lo + 1);
-      (*c)->evaluate(times().data() + lo, q.size(), q.data());
+    const Status s = for_each_rebuilt_run(j, to_measure(j), false, [&](std::size_t lo, std::size_t hi, const std::vector<Quat>& q) {
       for (std::size_t f = lo; f <= hi; ++f) e[f] = frame_error(f, q[f - lo]);
-      frames_measured_ += hi - lo + 1;
-      return Ok{};
     });
     if (!s) return s;
   }
@@ -153,12 +155,11 @@ Status Reducer::select_rotation(std::size_t j, bool removal, std::vector<double>
     if (!looped(j) && n_ >= 3) measured_[j].error = e;
     return settle_rotation(j, again ? to_measure(j) : std::vector<char>(n_, 1));
   }
-  auto q = rebuild(j, rkeys_[j], 0, n_ - 1);
-  if (!q) return q.failure();
+  if (Status s = rebuild(j, rkeys_[j], 0, n_ - 1, rebuilt); !s) return s;
   ReducedJoint& out = out_[j];
   out.budget = b;
   out.max_rotation_error = out.max_shell_error = 0.0;
-  for (std::size_t f = 0; f < n_; ++f) out.max_rotation_error = std::max(out.max_rotation_error, angular_distance(src[f], (*q)[f]));
+  for (std::size_t f = 0; f < n_; ++f) out.max_rotation_error = std::max(out.max_rotation_error, angular_distance(src[f], rebuilt[f]));
   return Ok{};
 }
 

@@ -2,44 +2,12 @@
 #include "slerp_window.h"
 
 #include "rotinterp/core/geodesic.h"
+#include "rotinterp/core/slerp_kernel.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace rotinterp::detail {
-
-namespace {
-
-// great_arc_slerp(a, b, ·) with what depends on a and b alone computed once per
-// segment (its asin or acos, a norm): the same operations in the same order, so
-// every frame gets the same bits as slerp(a, b, t) (core/geodesic.h).
-class Arc {
- public:
-  Arc(const Quat& a, const Quat& b) : a_(a) {
-    // slerp's choice of b's sign, then great_arc_slerp's constants.
-    const double w0 = a.dot(b);
-    const Quat c = w0 > 0.0 ? b : (w0 < 0.0 ? Quat(-b.coeffs()) : align_pair(a, b));
-    const double w = a.dot(c);
-    u_ = c.coeffs() - w * a.coeffs();
-    s_ = u_.norm();
-    if (s_ > 0.0) phi_ = s_ <= std::abs(w) ? (w > 0.0 ? std::asin(s_) : kPi - std::asin(s_)) : std::acos(w);
-  }
-  // t ∈ (0, 1), finite.
-  Quat at(double t) const {
-    if (!(s_ > 0.0)) return a_;
-    const double tp = t * phi_;
-    Quat r;
-    r.coeffs() = std::cos(tp) * a_.coeffs() + (std::sin(tp) / s_) * u_;
-    return r;
-  }
-
- private:
-  Quat a_;
-  Eigen::Vector4d u_;
-  double s_ = 0.0, phi_ = 0.0;
-};
-
-}  // namespace
 
 // make_slerp's keys for decimated_track(times, value, keys): decimated_track and
 // detail::prepare normalize each key twice and align signs three times; only the last
@@ -89,7 +57,8 @@ void prepare_slerp_keys_again(const std::vector<Quat>& value, const std::vector<
 }
 
 // SlerpInterpolator::segment at each frame's segment and u: a key frame's time is its
-// key's, so u = 0 there (the key itself); clamped outside the keys.
+// key's, so u = 0 there (the key itself); clamped outside the keys; between keys the
+// polynomial kernel, whose value is a sample's own whatever its batch (slerp_kernel.h).
 void slerp_frames(const std::vector<double>& t, const std::size_t* keys, const Quat* q, std::size_t n, std::size_t lo,
                   std::size_t hi, Quat* out) {
   std::size_t f = lo;
@@ -103,10 +72,25 @@ void slerp_frames(const std::vector<double>& t, const std::size_t* keys, const Q
       continue;
     }
     const double t0 = t[keys[i]], t1 = t[keys[i + 1]];
-    const Arc arc(q[i], q[i + 1]);
-    for (; f < keys[i + 1] && f <= hi; ++f) {
-      const double u = std::clamp((t[f] - t0) / (t1 - t0), 0.0, 1.0);
-      out[f - lo] = u <= 0.0 ? q[i] : u >= 1.0 ? q[i + 1] : arc.at(u);
+    // The segment's frames in blocks, the kernel's arrays holding its two keys.
+    constexpr std::size_t kBlock = 64;
+    double a[4][kBlock], b[4][kBlock], u[kBlock], r[4][kBlock];
+    std::size_t at[kBlock];
+    for (int c = 0; c < 4; ++c)
+      for (std::size_t j = 0; j < kBlock; ++j) a[c][j] = q[i].coeffs()[(c + 3) % 4], b[c][j] = q[i + 1].coeffs()[(c + 3) % 4];
+    while (f < keys[i + 1] && f <= hi) {
+      std::size_t m = 0;
+      for (; f < keys[i + 1] && f <= hi && m < kBlock; ++f) {
+        const double s = std::clamp((t[f] - t0) / (t1 - t0), 0.0, 1.0);
+        if (s <= 0.0 || s >= 1.0) {
+          out[f - lo] = s <= 0.0 ? q[i] : q[i + 1];
+        } else {
+          u[m] = s;
+          at[m++] = f - lo;
+        }
+      }
+      slerp_arrays({a[0], a[1], a[2], a[3]}, {b[0], b[1], b[2], b[3]}, u, m, {r[0], r[1], r[2], r[3]});
+      for (std::size_t j = 0; j < m; ++j) out[at[j]] = Quat(r[0][j], r[1][j], r[2][j], r[3][j]);
     }
   }
   for (; f <= hi; ++f) out[f - lo] = q[n - 1];  // at and after the last key

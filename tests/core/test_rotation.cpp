@@ -4,6 +4,8 @@
 #include "rotinterp/core/so3_jacobian.h"
 #include "rotinterp/core/swing.h"
 
+#include "support/random_rotations.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -17,18 +19,8 @@ namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
-Vec3 random_unit(std::mt19937_64& rng) {
-  std::normal_distribution<double> n(0.0, 1.0);
-  Vec3 v;
-  do v = Vec3(n(rng), n(rng), n(rng));
-  while (v.norm() < 1e-6);
-  return v.normalized();
-}
-
-Quat random_quat(std::mt19937_64& rng) {
-  std::normal_distribution<double> n(0.0, 1.0);
-  return Quat(n(rng), n(rng), n(rng), n(rng)).normalized();
-}
+using test::random_quat;
+using test::random_unit;
 
 // Same orientation (q ≡ −q) within tol.
 double orientation_gap(const Quat& a, const Quat& b) { return std::min((a.coeffs() - b.coeffs()).norm(), (a.coeffs() + b.coeffs()).norm()); }

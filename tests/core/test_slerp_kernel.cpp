@@ -5,6 +5,8 @@
 #include "rotinterp/core/rotation.h"
 #include "rotinterp/core/slerp_kernel.h"
 
+#include "support/random_rotations.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -22,18 +24,8 @@ struct Pairs {
   std::vector<double> t;
 };
 
-Vec3 random_unit(std::mt19937_64& rng) {
-  std::normal_distribution<double> n(0.0, 1.0);
-  Vec3 v;
-  do v = Vec3(n(rng), n(rng), n(rng));
-  while (v.norm() < 1e-6);
-  return v.normalized();
-}
-
-Quat random_quat(std::mt19937_64& rng) {
-  std::normal_distribution<double> n(0.0, 1.0);
-  return Quat(n(rng), n(rng), n(rng), n(rng)).normalized();
-}
+using test::random_quat;
+using test::random_unit;
 
 // a random, b = a rotated by `angle` (rad, a rotation angle in [0, 2π)) about a
 // random axis, stored in either hemisphere; t in [t_lo, t_hi].

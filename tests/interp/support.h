@@ -3,6 +3,7 @@
 #pragma once
 
 #include "rotinterp/interp/interpolator.h"
+#include "support/random_rotations.h"
 
 #include <gtest/gtest.h>
 
@@ -15,14 +16,6 @@
 
 namespace rotinterp::test {
 
-inline Quat random_quat(std::mt19937_64& rng) {
-  std::normal_distribution<double> n(0.0, 1.0);
-  return Quat(n(rng), n(rng), n(rng), n(rng)).normalized();
-}
-inline Vec3 random_unit(std::mt19937_64& rng) {
-  std::normal_distribution<double> n(0.0, 1.0);
-  return Vec3(n(rng), n(rng), n(rng)).normalized();
-}
 inline Quat rot(const Vec3& axis, double angle) { return exp(RotVec::from_axis_angle(axis, angle)); }
 inline Quat Rz(double angle) { return rot(Vec3::UnitZ(), angle); }
 

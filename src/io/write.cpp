@@ -86,6 +86,12 @@ std::vector<std::string> unique_take_names(const std::vector<Clip>& takes) {
 
 bool is_gltf(const FormatInfo* format) { return format && (format->id == FormatId::glb || format->id == FormatId::gltf); }
 
+std::vector<const Clip*> pointers_to(const std::vector<Clip>& takes) {
+  std::vector<const Clip*> out;
+  for (const Clip& c : takes) out.push_back(&c);
+  return out;
+}
+
 GltfKeys gltf_keys(const WriteOptions& options) {
   return {options.gltf_own_key_times, options.gltf_cubic_rotations, options.gltf_cubic_translations};
 }
@@ -116,9 +122,7 @@ std::optional<Status> write_character(const std::vector<Clip>& takes, const std:
     });
   }
   if (is_gltf(source) && is_gltf(output)) {
-    std::vector<const Clip*> pointers;
-    for (const Clip& c : takes) pointers.push_back(&c);
-    auto written = write_gltf_character(pointers, options.source, path, output->id == FormatId::glb, gltf_keys(options));
+    auto written = write_gltf_character(pointers_to(takes), options.source, path, output->id == FormatId::glb, gltf_keys(options));
     if (!written && written.error_kind() != file_error::cannot_write) return not_kept(written.error());
     if (!written) return Status(written.failure());
     kept(written->text());
@@ -134,9 +138,7 @@ std::optional<Status> write_character(const std::vector<Clip>& takes, const std:
     const Result<ClipFileInfo> source_file = inspect_clip(options.source, read);
     if (!source_file || !source_file->body) return not_kept(source_file ? "an FBX 6.1 file, whose motion rotinterp's own reader reads, but not its meshes"
                                                             : source_file.error());
-    std::vector<const Clip*> pointers;
-    for (const Clip& c : takes) pointers.push_back(&c);
-    auto written = write_gltf(pointers, path, output->id == FormatId::glb, gltf_keys(options), *source_file->body);
+    auto written = write_gltf(pointers_to(takes), path, output->id == FormatId::glb, gltf_keys(options), *source_file->body);
     if (!written && written.error_kind() != file_error::cannot_write) return not_kept(written.error());
     if (!written) return Status(written.failure());
     for (const std::string& note : written->notes)
@@ -239,9 +241,7 @@ Status write_clips(const std::vector<Clip>& takes, const std::filesystem::path& 
   const auto with_meshes = std::find_if(takes.begin(), takes.end(), [](const Clip& c) { return c.source_meshes > 0; });
   if (with_meshes != takes.end()) warn_meshes_lost(*with_meshes, label, options);
   if (!fbx) {  // glTF or GLB
-    std::vector<const Clip*> pointers;
-    for (const Clip& c : named) pointers.push_back(&c);
-    return write_gltf(pointers, path, known->id == FormatId::glb, gltf_keys(options));
+    return write_gltf(pointers_to(named), path, known->id == FormatId::glb, gltf_keys(options));
   }
   Result<std::string> bytes = encode_fbx_clips(named, options.fbx_ascii ? FbxEncoding::ascii : FbxEncoding::binary);
   if (!bytes) return bytes.failure(label + ": ");

@@ -76,8 +76,9 @@ void slerp_frames(const std::vector<double>& t, const std::size_t* keys, const Q
     constexpr std::size_t kBlock = 64;
     double a[4][kBlock], b[4][kBlock], u[kBlock], r[4][kBlock];
     std::size_t at[kBlock];
-    for (int c = 0; c < 4; ++c)
-      for (std::size_t j = 0; j < kBlock; ++j) a[c][j] = q[i].coeffs()[(c + 3) % 4], b[c][j] = q[i + 1].coeffs()[(c + 3) % 4];
+    const double ka[4] = {q[i].w(), q[i].x(), q[i].y(), q[i].z()};
+    const double kb[4] = {q[i + 1].w(), q[i + 1].x(), q[i + 1].y(), q[i + 1].z()};
+    for (int c = 0; c < 4; ++c) std::fill_n(a[c], kBlock, ka[c]), std::fill_n(b[c], kBlock, kb[c]);
     while (f < keys[i + 1] && f <= hi) {
       std::size_t m = 0;
       for (; f < keys[i + 1] && f <= hi && m < kBlock; ++f) {

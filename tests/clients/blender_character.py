@@ -76,12 +76,17 @@ def is_gltf(path):
     return path.lower().endswith((".glb", ".gltf"))
 
 
-def positions_and_triangles(o):
+def mesh_facts(o, cross):
     # Across formats vertices split differently (a glTF vertex per UV seam, an FBX
     # importer's per control point) and polygons are triangulated or not: the distinct
-    # positions (to 1 µm, world space) and the triangles they make compare instead.
+    # positions (to 1 µm, world space) and the triangles they make compare instead, and
+    # the object's name and its vertex groups in name order (an importer's own order).
+    if not cross:
+        return {"name": o.data.name, "vertices": len(o.data.vertices), "faces": len(o.data.polygons),
+                "groups": [g.name for g in o.vertex_groups], "materials": len(o.data.materials)}
     seen = {tuple(round(c * 1e6) for c in o.matrix_world @ v.co) for v in o.data.vertices}
-    return len(seen), sum(len(p.vertices) - 2 for p in o.data.polygons)
+    return {"name": o.name, "vertices": len(seen), "faces": sum(len(p.vertices) - 2 for p in o.data.polygons),
+            "groups": sorted(g.name for g in o.vertex_groups), "materials": len(o.data.materials)}
 
 
 for index, path in enumerate(files):
@@ -101,11 +106,7 @@ for index, path in enumerate(files):
         "takes": sorted({take_of(a.name, is_gltf(path), scene.objects) for a in bpy.data.actions}),
         "actions": len(bpy.data.actions),
         "images": sum(1 for i in bpy.data.images if i.size[0] > 0),  # with pixels: found, or embedded
-        "meshes": [{"name": o.name if cross else o.data.name,
-                    "vertices": positions_and_triangles(o)[0] if cross else len(o.data.vertices),
-                    "faces": positions_and_triangles(o)[1] if cross else len(o.data.polygons),
-                    "groups": sorted(g.name for g in o.vertex_groups) if cross else [g.name for g in o.vertex_groups],
-                    "materials": len(o.data.materials)} for o in meshes],
+        "meshes": [mesh_facts(o, cross) for o in meshes],
         "poses": {},
     }
     if index % 2 == 0:

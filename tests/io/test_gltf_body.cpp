@@ -132,7 +132,7 @@ TEST(GltfBody, FourHeaviestWeightsKeptNormalizedAndTheLossSaid) {
     return s;
   }();
   EXPECT_NE(notes.find("mesh 'Tri': 1 vertex has more than 4 weights; the 4 heaviest kept, normalized"), std::string::npos) << notes;
-  EXPECT_NE(notes.find("mesh 'Tri': 1 vertex's weights do not sum to 1; normalized"), std::string::npos) << notes;
+  EXPECT_NE(notes.find("mesh 'Tri': 1 vertex's skin weights do not sum to 1; normalized"), std::string::npos) << notes;
   EXPECT_NE(notes.find("mesh 'Tri': 1 vertex has no weight; moved with joint 'J2'"), std::string::npos) << notes;
   EXPECT_NE(notes.find("other.tga"), std::string::npos) << notes;
   EXPECT_EQ(w.said.kept, "1 mesh, 1 skin (6 bones), 1 material, 1 texture kept");

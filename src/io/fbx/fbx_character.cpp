@@ -72,9 +72,6 @@ struct Survey {
   std::size_t dropped_clusters = 0, dropped_properties = 0, unnormalized_vertices = 0;
 };
 
-// Weights of a control point summing to within this of 1 are normalized.
-constexpr double kWeightSumTolerance = 1e-3;
-
 // Control points whose clusters' weights (per skin) sum to more than 0 but not to 1.
 std::size_t unnormalized_vertices(const fbx::Objects& objects, const std::set<std::int64_t>& removed) {
   std::map<std::int64_t, std::map<std::int64_t, double>> sums;  // skin → control point → weight
@@ -90,7 +87,7 @@ std::size_t unnormalized_vertices(const fbx::Objects& objects, const std::set<st
   }
   std::size_t n = 0;
   for (const auto& [skin, points] : sums)
-    for (const auto& [point, sum] : points) n += sum > 0.0 && std::abs(sum - 1.0) > kWeightSumTolerance;
+    for (const auto& [point, sum] : points) n += sum > 0.0 && std::abs(sum - 1.0) > kSkinWeightSumTolerance;
   return n;
 }
 
@@ -208,8 +205,7 @@ std::string FbxKept::text() const {
   if (dropped_connections) s += "; repaired: " + count_text(dropped_connections, "connection", "connections") + " to missing objects dropped";
   if (dropped_clusters) s += "; repaired: " + count_text(dropped_clusters, "cluster", "clusters") + " linked to no bone dropped";
   if (unnormalized_vertices)
-    s += "; " + count_text(unnormalized_vertices, "vertex's skin weights do", "vertices' skin weights do") +
-         " not sum to 1 (kept as the source has them; Blender normalizes them)";
+    s += "; " + unnormalized_weights_text(unnormalized_vertices) + " (kept as the source has them; Blender normalizes them)";
   return s;
 }
 

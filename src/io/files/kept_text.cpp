@@ -12,4 +12,8 @@ std::string kept_text(const std::vector<std::string>& parts) {
   return s.empty() ? "the source's nodes kept (no mesh)" : s + " kept";
 }
 
+std::string unnormalized_weights_text(std::size_t vertices) {
+  return count_text(vertices, "vertex's skin weights do", "vertices' skin weights do") + " not sum to 1";
+}
+
 }  // namespace rotinterp

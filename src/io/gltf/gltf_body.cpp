@@ -15,8 +15,6 @@ namespace {
 using json = nlohmann::json;
 constexpr int kUnsignedShort = 5123, kUnsignedInt = 5125;
 constexpr std::size_t kWeightsPerVertex = 4;
-// Weights summing to within this of 1 need no normalizing worth a note.
-constexpr double kWeightSumTolerance = 1e-3;
 
 Eigen::Matrix4d matrix(const RowMajor4& m) {
   Eigen::Matrix4d e;
@@ -56,6 +54,7 @@ class BodyWriter {
     const WorldPose rest = rest_pose(sk);
     for (std::size_t j = 0; j < sk.joints.size(); ++j) {
       joint_of_[sk.joints[j].name] = j;
+      names_.push_back(sk.joints[j].name);
       Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
       m.topLeftCorner<3, 3>() = rest.rotation[j].toRotationMatrix();
       m.topRightCorner<3, 1>() = rest.position[j] * metres;
@@ -189,9 +188,9 @@ class BodyWriter {
         }
         // A rigid part, and a vertex no bone weighs: moved by the joint above the
         // mesh (else the skin's first), as the mesh node would move it.
-        const std::string& anchor = !mesh.parent_joint.empty() ? mesh.parent_joint
-                                    : joints.empty()           ? std::string()
-                                                               : body_joint_name(joints.front());
+        const std::string anchor = !mesh.parent_joint.empty() ? mesh.parent_joint
+                                   : joints.empty()           ? std::string()
+                                                              : names_[joints.front()];
         std::vector<std::uint16_t> joint4(kWeightsPerVertex * n, 0);
         std::vector<float> weight4(kWeightsPerVertex * n, 0.0f);
         for (std::size_t v = 0; v < n; ++v) {
@@ -207,7 +206,7 @@ class BodyWriter {
           for (std::size_t i = 0; i < w.size(); ++i) (i < kWeightsPerVertex ? kept : sum) += w[i].second;
           sum += kept;
           if (w.size() > kWeightsPerVertex) ++over_four;
-          else if (std::abs(sum - 1.0) > kWeightSumTolerance) ++unnormalized;
+          else if (std::abs(sum - 1.0) > kSkinWeightSumTolerance) ++unnormalized;
           for (std::size_t i = 0; i < std::min(w.size(), kWeightsPerVertex); ++i) {
             joint4[kWeightsPerVertex * v + i] = w[i].first;
             weight4[kWeightsPerVertex * v + i] = static_cast<float>(w[i].second / kept);
@@ -222,7 +221,7 @@ class BodyWriter {
       primitives.push_back(primitive);
     }
     if (over_four) note(what + ": " + count_text(over_four, "vertex has", "vertices have") + " more than 4 weights; the 4 heaviest kept, normalized");
-    if (unnormalized) note(what + ": " + count_text(unnormalized, "vertex's weights do", "vertices' weights do") + " not sum to 1; normalized");
+    if (unnormalized) note(what + ": " + unnormalized_weights_text(unnormalized) + "; normalized");
     if (unweighted) note(what + ": " + count_text(unweighted, "vertex has", "vertices have") + " no weight; moved with joint '" + mesh.parent_joint + "'");
     meshes_.push_back({{"name", mesh.name}, {"primitives", primitives}});
     ++kept_.meshes;
@@ -243,18 +242,13 @@ class BodyWriter {
     return Ok{};
   }
 
-  std::string body_joint_name(std::size_t joint) const {
-    for (const auto& [name, j] : joint_of_)
-      if (j == joint) return name;
-    return "";
-  }
-
   void note(const std::string& line) { kept_.notes.push_back(line); }
 
   Builder& b_;
   json& doc_;
   double metres_;
   std::map<std::string, std::size_t> joint_of_;
+  std::vector<std::string> names_;  // by joint
   std::vector<Eigen::Matrix4d> joint_world_;
   json meshes_ = json::array(), materials_ = json::array(), images_ = json::array(), textures_ = json::array();
   std::map<int, std::size_t> image_index_;

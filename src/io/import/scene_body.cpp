@@ -10,6 +10,7 @@
 #include <cstring>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 
 namespace rotinterp {
@@ -47,7 +48,7 @@ std::string file_name_of(const std::string& path) {
 class BodyBuilder {
  public:
   BodyBuilder(const aiScene* scene, const Clip& clip, const fs::path& source) : scene_(scene), source_(source) {
-    for (const Joint& j : clip.skeleton.joints) joints_.emplace(j.name, true);
+    for (const Joint& j : clip.skeleton.joints) joints_.insert(j.name);
   }
 
   CharacterBody build() {
@@ -168,7 +169,7 @@ class BodyBuilder {
 
   const aiScene* scene_;
   fs::path source_;
-  std::map<std::string, bool> joints_;
+  std::set<std::string> joints_;
   std::map<std::string, int> images_;
   CharacterBody body_;
 };

@@ -15,4 +15,10 @@ std::string count_text(std::size_t n, const char* one, const char* many);
 // The counted parts joined, then " kept"; a source with none of them says so.
 std::string kept_text(const std::vector<std::string>& parts);
 
+// A vertex's skin weights summing to within this of 1 count as normalized: one
+// measure for the FBX tree edit, which keeps them, and the glTF body, which normalizes.
+inline constexpr double kSkinWeightSumTolerance = 1e-3;
+// "60 vertices' skin weights do not sum to 1".
+std::string unnormalized_weights_text(std::size_t vertices);
+
 }  // namespace rotinterp

@@ -48,6 +48,20 @@ Eigen::Matrix4d mesh_world() {
   return m;
 }
 
+// The mesh's world at bind time as bone j sees it: where the bind pose differs from
+// the rest pose, turned a little against the mesh node's world at rest.
+Eigen::Matrix4d bind_world(int j) {
+  Eigen::Matrix4d turn = Eigen::Matrix4d::Identity();
+  turn.topLeftCorner<3, 3>() = Eigen::AngleAxisd(0.05 * j, Vec3::UnitY()).toRotationMatrix();
+  return turn * mesh_world();
+}
+
+// In metres: D·m·D⁻¹ for a transform m in centimetres.
+Eigen::Matrix4d metres(Eigen::Matrix4d m) {
+  m.topRightCorner<3, 1>() *= 0.01;
+  return m;
+}
+
 // One triangle: vertex 0 weighs six bones, vertex 1 two that sum to 0.5, vertex 2 none.
 CharacterBody body() {
   CharacterBody b;
@@ -65,7 +79,7 @@ CharacterBody body() {
   for (int j = 0; j < 6; ++j) {
     BodyBone bone;
     bone.joint = "J" + std::to_string(j);
-    bone.mesh_to_world = row_major(mesh_world());
+    bone.mesh_to_world = row_major(bind_world(j));
     bone.vertices = {0};
     bone.weights = {w0[j]};
     if (j == 0 || j == 5) bone.vertices.push_back(1), bone.weights.push_back(0.25f);
@@ -136,23 +150,36 @@ TEST(GltfBody, FourHeaviestWeightsKeptNormalizedAndTheLossSaid) {
   EXPECT_NE(notes.find("mesh 'Tri': 1 vertex has no weight; moved with joint 'J2'"), std::string::npos) << notes;
   EXPECT_NE(notes.find("other.tga"), std::string::npos) << notes;
   EXPECT_EQ(w.said.kept, "1 mesh, 1 skin (6 bones), 1 material, 1 texture kept");
-  // Normals made unit length (the spec asks it), a zero one pointing up z.
+  // Normals turned as the mesh node turns them and made unit length (the spec asks
+  // it); a zero one points up z.
   const auto normals = accessor<float>(w, attributes["NORMAL"]);
-  EXPECT_EQ(normals, (std::vector<float>{0, 0, 1, 0, 0, 1, 0, 0, 1}));
+  const Vec3 up = mesh_world().topLeftCorner<3, 3>() * Vec3::UnitZ();
+  ASSERT_EQ(normals.size(), 9u);
+  for (std::size_t v = 0; v < 2; ++v)
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(normals[3 * v + static_cast<std::size_t>(c)], up[c], 1e-7) << v;
+  EXPECT_EQ(std::vector<float>(normals.begin() + 6, normals.end()), (std::vector<float>{0, 0, 1}));
   // glTF's v runs down the image.
   EXPECT_EQ(accessor<float>(w, attributes["TEXCOORD_0"]), (std::vector<float>{0, 1, 1, 1, 0, 0}));
 }
 
-// J·IBM = D·M·D⁻¹ at rest: the vertex, in metres, lands where the source's bind pose puts it.
-TEST(GltfBody, InverseBindMatricesPutTheSourcesBindPoseOnOurJoints) {
+// Vertices are written where the mesh node puts them (D·W·v: true size, without
+// skinning), and J·IBM = D·M·W⁻¹·D⁻¹, so that each joint at rest puts a written vertex
+// where the source's bind pose puts it through that bone: J·IBM·(D·W·v) = D·M·v.
+TEST(GltfBody, VerticesAtTrueSizeAndInverseBindMatricesPutTheSourcesBindPoseOnOurJoints) {
   const test::TempDir dir;
   const Clip clip = chain();
-  const Written w = write(clip, body(), dir);
+  const CharacterBody b = body();
+  const Written w = write(clip, b, dir);
   const json& skin = w.doc["skins"][1];
   const auto ibm = accessor<float>(w, skin["inverseBindMatrices"]);
+  const auto written = accessor<float>(w, w.doc["meshes"][0]["primitives"][0]["attributes"]["POSITION"]);
+  const std::vector<float>& source = b.meshes[0].parts[0].positions;
+  for (std::size_t v = 0; v < 3; ++v) {
+    const Vec3 local(source[3 * v], source[3 * v + 1], source[3 * v + 2]);
+    const Vec3 expected = (metres(mesh_world()) * (local * 0.01).homogeneous()).head<3>();
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(written[3 * v + static_cast<std::size_t>(c)], expected[c], 1e-7) << v;
+  }
   const WorldPose rest = rest_pose(clip.skeleton);
-  Eigen::Matrix4d expected = mesh_world();
-  expected.topRightCorner<3, 1>() *= 0.01;
   for (std::size_t s = 0; s < skin["joints"].size(); ++s) {
     const std::size_t j = skin["joints"][s].get<std::size_t>();
     Eigen::Matrix4d world = Eigen::Matrix4d::Identity(), inverse;
@@ -160,11 +187,31 @@ TEST(GltfBody, InverseBindMatricesPutTheSourcesBindPoseOnOurJoints) {
     world.topRightCorner<3, 1>() = rest.position[j] * 0.01;
     for (int c = 0; c < 4; ++c)
       for (int r = 0; r < 4; ++r) inverse(r, c) = ibm[16 * s + static_cast<std::size_t>(4 * c + r)];
+    const Eigen::Matrix4d expected = metres(bind_world(static_cast<int>(j))) * metres(mesh_world()).inverse();
     EXPECT_LT((world * inverse - expected).cwiseAbs().maxCoeff(), 1e-6) << clip.skeleton.joints[j].name;
+    for (std::size_t v = 0; v < 3; ++v) {
+      const Vec3 at(written[3 * v], written[3 * v + 1], written[3 * v + 2]);
+      const Vec3 local(source[3 * v], source[3 * v + 1], source[3 * v + 2]);
+      const Vec3 bound = (metres(bind_world(static_cast<int>(j))) * (local * 0.01).homogeneous()).head<3>();
+      EXPECT_LT(((world * inverse * at.homogeneous()).head<3>() - bound).norm(), 1e-6) << j << " " << v;
+    }
   }
-  // Positions in metres, with the bounds the spec asks of POSITION.
-  const json& position = w.doc["accessors"][w.doc["meshes"][0]["primitives"][0]["attributes"]["POSITION"].get<std::size_t>()];
-  EXPECT_EQ(position["max"], json({0.1f, 0.1f, 0.0f}));
+}
+
+// A mirroring node transform turns the triangles' winding over, so that they face
+// the way they faced in the source.
+TEST(GltfBody, AMirroredMeshKeepsItsFacesTurnedOut) {
+  const test::TempDir dir;
+  CharacterBody b = body();
+  Eigen::Matrix4d mirror = mesh_world();
+  mirror.col(0) *= -1.0;
+  b.meshes[0].world = row_major(mirror);
+  const Written w = write(chain(), b, dir);
+  const json& primitive = w.doc["meshes"][0]["primitives"][0];
+  EXPECT_EQ(accessor<std::uint32_t>(w, primitive["indices"]), (std::vector<std::uint32_t>{0, 2, 1}));
+  const Written plain = write(chain(), body(), dir);
+  EXPECT_EQ(accessor<std::uint32_t>(plain, plain.doc["meshes"][0]["primitives"][0]["indices"]),
+            (std::vector<std::uint32_t>{0, 1, 2}));
 }
 
 TEST(GltfBody, ImagesAreEmbeddedWithTheirMimeTypeAndMaterialsKeepTheirColour) {
@@ -198,7 +245,20 @@ TEST(GltfBody, ARigidMeshFollowsTheJointAboveItAndOneWithNoneStaysWhereItIs) {
   ASSERT_TRUE(rigid.contains("skin"));
   EXPECT_EQ(w.doc["skins"][rigid["skin"].get<std::size_t>()]["joints"], json({2}));
   EXPECT_FALSE(still.contains("skin"));
-  EXPECT_NEAR(still["matrix"][12].get<double>(), 0.02, 1e-12);  // 2 cm along x, in metres
+  EXPECT_FALSE(still.contains("matrix"));  // its vertices are where its node put them: vertex 0 at the node's origin
+  const auto moved = accessor<float>(w, w.doc["meshes"][1]["primitives"][0]["attributes"]["POSITION"]);
+  EXPECT_NEAR(moved[0], 0.02, 1e-7);
+  EXPECT_NEAR(moved[1], -0.04, 1e-7);
+  EXPECT_NEAR(moved[2], 0.07, 1e-7);
+  // The rigid mesh's one joint binds it where the node puts it: J·IBM = identity.
+  const auto ibm = accessor<float>(w, w.doc["skins"][rigid["skin"].get<std::size_t>()]["inverseBindMatrices"]);
+  const WorldPose rest = rest_pose(chain().skeleton);
+  Eigen::Matrix4d joint = Eigen::Matrix4d::Identity(), inverse;
+  joint.topLeftCorner<3, 3>() = rest.rotation[2].toRotationMatrix();
+  joint.topRightCorner<3, 1>() = rest.position[2] * 0.01;
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) inverse(r, c) = ibm[static_cast<std::size_t>(4 * c + r)];
+  EXPECT_LT((joint * inverse - Eigen::Matrix4d::Identity()).cwiseAbs().maxCoeff(), 1e-6);
   EXPECT_EQ(w.said.kept, "2 meshes, 1 skin (1 bone), 1 material, 1 texture kept");
   EXPECT_EQ(w.said.notes.size(), 1u);  // the texture's; a rigid mesh's vertices are no repair
 }

@@ -34,13 +34,6 @@ void put_matrix(std::string& bin, const Eigen::Matrix4d& m) {
     for (int r = 0; r < 4; ++r) put_float(bin, m(r, c));  // column-major
 }
 
-json matrix_json(const Eigen::Matrix4d& m) {
-  json out = json::array();
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r) out.push_back(m(r, c));
-  return out;
-}
-
 bool all_finite(const std::vector<float>& v) {
   return std::all_of(v.begin(), v.end(), [](float x) { return std::isfinite(x); });
 }
@@ -132,6 +125,13 @@ class BodyWriter {
 
   Status add_mesh(const BodyMesh& mesh, const CharacterBody& body) {
     const std::string what = "mesh '" + mesh.name + "'";
+    // Vertices are written where the mesh node puts them (world, metres: true size in
+    // any reader, skinned or not), so the inverse bind matrices carry no node transform.
+    const Eigen::Matrix4d world = in_metres(matrix(mesh.world), metres_);
+    const Eigen::Matrix4d world_inverse = world.inverse();
+    const Eigen::Matrix3d normal_matrix = world.topLeftCorner<3, 3>().inverse().transpose();
+    const bool mirrored = world.topLeftCorner<3, 3>().determinant() < 0.0;  // the winding turns over
+    if (!world_inverse.allFinite()) return make_error(what + " has a node transform that cannot be inverted");
     // The skin: every joint a part binds, in order, with its inverse bind matrix.
     std::vector<std::size_t> joints;
     std::vector<Eigen::Matrix4d> ibms;
@@ -142,7 +142,7 @@ class BodyWriter {
       if (const auto s = slot_of.find(j->second); s != slot_of.end()) return s->second;
       if (joints.size() >= 0xFFFF) return std::nullopt;
       joints.push_back(j->second);
-      ibms.push_back(joint_world_[j->second].inverse() * in_metres(matrix(mesh_to_world), metres_));
+      ibms.push_back(joint_world_[j->second].inverse() * in_metres(matrix(mesh_to_world), metres_) * world_inverse);
       return slot_of[j->second] = static_cast<std::uint16_t>(joints.size() - 1);
     };
     const bool skinned = !mesh.parent_joint.empty() ||
@@ -157,15 +157,20 @@ class BodyWriter {
           part.triangles.size() % 3 != 0 ||
           std::any_of(part.triangles.begin(), part.triangles.end(), [&](std::uint32_t i) { return i >= n; }))
         return make_error(what + " is not a mesh (counts, indices or numbers out of range)");
-      std::vector<float> positions = part.positions;
-      for (float& x : positions) x = static_cast<float>(x * metres_);
+      std::vector<float> positions(3 * n);
+      for (std::size_t v = 0; v < n; ++v) {
+        const Vec3 local = Eigen::Map<const Eigen::Vector3f>(&part.positions[3 * v]).cast<double>() * metres_;
+        Eigen::Map<Eigen::Vector3f> out(&positions[3 * v]);
+        out = (world * local.homogeneous()).head<3>().cast<float>();
+      }
       json attributes = {{"POSITION", floats(positions, 3, "VEC3", true)}};
       if (!part.normals.empty()) {
-        std::vector<float> normals = part.normals;
+        std::vector<float> normals(3 * n);
         for (std::size_t v = 0; v < n; ++v) {
-          Eigen::Map<Eigen::Vector3f> x(&normals[3 * v]);
-          const float len = x.norm();
-          x = len > 0.0f ? Eigen::Vector3f(x / len) : Eigen::Vector3f(0.0f, 0.0f, 1.0f);  // the spec asks unit normals
+          const Vec3 x = normal_matrix * Eigen::Map<const Eigen::Vector3f>(&part.normals[3 * v]).cast<double>();
+          const double len = x.norm();  // the spec asks unit normals
+          Eigen::Map<Eigen::Vector3f> out(&normals[3 * v]);
+          out = (len > 0.0 && std::isfinite(len) ? Vec3(x / len) : Vec3::UnitZ()).cast<float>();
         }
         attributes["NORMAL"] = floats(normals, 3, "VEC3");
       }
@@ -215,7 +220,10 @@ class BodyWriter {
         attributes["JOINTS_0"] = integers(joint4, 4, "VEC4", kUnsignedShort);
         attributes["WEIGHTS_0"] = floats(weight4, 4, "VEC4");
       }
-      json primitive = {{"attributes", attributes}, {"indices", integers(part.triangles, 1, "SCALAR", kUnsignedInt)}};
+      std::vector<std::uint32_t> triangles = part.triangles;
+      if (mirrored)
+        for (std::size_t k = 0; k < triangles.size(); k += 3) std::swap(triangles[k + 1], triangles[k + 2]);
+      json primitive = {{"attributes", attributes}, {"indices", integers(triangles, 1, "SCALAR", kUnsignedInt)}};
       if (part.material >= 0 && static_cast<std::size_t>(part.material) < body.materials.size())
         primitive["material"] = part.material;
       primitives.push_back(primitive);
@@ -234,8 +242,6 @@ class BodyWriter {
       node["skin"] = doc_["skins"].size() - 1;
       ++kept_.skins;
       kept_.bones = std::max(kept_.bones, joints.size());
-    } else {
-      node["matrix"] = matrix_json(in_metres(matrix(mesh.world), metres_));
     }
     doc_["nodes"].push_back(node);
     doc_["scenes"][0]["nodes"].push_back(doc_["nodes"].size() - 1);

@@ -3,19 +3,21 @@
 // mesh (one primitive per material) and its skin over the clip's joints, the
 // materials with their base colour and embedded image. Private to src/io/gltf.
 //
-// Units: positions and matrices are the source's numbers times the clip's metres
-// per unit. Inverse bind matrices: the bind pose is the source's — a bone's
-// mesh-to-world at bind time, M (its node's world at rest × assimp's offset) — and
-// the joints are ours, J (the clip's rest pose, in metres, with no scale: a reader
-// bakes scale into offsets). glTF poses a vertex by J(t)·IBM; the source by
-// G(t)·offset, G its node's world. With D the metre scale, IBM = J⁻¹·D·M·D⁻¹ gives
-// J(t)·IBM·(D·v) = D·G(t)·offset·v whenever J(t)⁻¹·D·G(t) is the joint's static
-// scale, which is what the clip keeps of it.
+// Units: the source's numbers times the clip's metres per unit (D). Vertices are
+// written where their mesh node's world transform at rest, W, puts them (true size in
+// any reader; normals by W's inverse transpose; a mirroring W turns the winding over).
+// Inverse bind matrices: the bind pose is the source's — a bone's mesh-to-world at bind
+// time, M (its node's world at rest × assimp's offset) — and the joints are ours, J
+// (the clip's rest pose, in metres, with no scale: a reader bakes scale into offsets).
+// glTF poses a written vertex D·W·v by J(t)·IBM; the source poses v by G(t)·offset, G
+// its bone node's world. IBM = J⁻¹·D·M·W⁻¹·D⁻¹ gives J(t)·IBM·D·W·v = D·G(t)·offset·v
+// whenever J(t)⁻¹·D·G(t) is the joint's static scale, which is what the clip keeps of
+// it; where the bind pose is the rest pose, IBM is J⁻¹, rigid, as glTF exporters write it.
 //
 // Skins: four weights per vertex, the heaviest, normalized (a vertex with more, or
 // whose weights do not sum to 1, is counted in a note); a rigid mesh (no bones)
 // under a joint is skinned to that joint with weight 1; one with no joint above it
-// is a static node where its world transform puts it.
+// is a static node, its vertices already where its world transform puts them.
 #pragma once
 
 #include "gltf_document.h"
